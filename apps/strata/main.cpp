@@ -1,0 +1,20 @@
+// strata: render pipelines headless, view them in a window, list plugins, describe the machine.
+#include <CLI/CLI.hpp>
+
+#include <strata/version.hpp>
+
+#include "commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"Strata composes planetary height and surface maps of any projection into one view of a planet.",
+               "strata"};
+  app.set_version_flag("--version", strata::kVersionString);
+  app.require_subcommand(1);
+  int exitCode = 0;
+  strata::cli::addRenderCommand(app, exitCode);
+  strata::cli::addViewCommand(app, exitCode);
+  strata::cli::addPluginsCommand(app, exitCode);
+  strata::cli::addInfoCommand(app, exitCode);
+  CLI11_PARSE(app, argc, argv);
+  return exitCode;
+}

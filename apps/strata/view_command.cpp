@@ -1,0 +1,54 @@
+#include <cstdio>
+#include <memory>
+
+#include <strata/engine.hpp>
+#include <strata/window/glfw_window.hpp>
+
+#include "command_options.hpp"
+#include "commands.hpp"
+#include "orbit_controls.hpp"
+
+namespace strata::cli {
+namespace {
+
+struct ViewOptions : PipelineOptions {
+  int frames = 0;          // 0: until the window closes
+  std::string screenshot;  // written after the last frame
+};
+
+void view(const ViewOptions& options) {
+  GlfwWindow window(options.size.width, options.size.height, "Strata - " + options.pipeline, options.glDebug);
+  enableGlDebugOutput(options.glDebug);
+  Engine engine;
+  engine.load(options.pipeline, options.overrides);
+  OrbitControls controls(engine.pipeline().body, engine.camera());
+  int width = 0, height = 0;
+  window.setPointerInput({[&](double dx, double dy, int button) { controls.drag(dx, dy, button, height); },
+                          [&](double steps) { controls.scroll(steps); }});
+  const FrameOutput* frame = nullptr;
+  for (int count = 0; !window.shouldClose() && (options.frames == 0 || count < options.frames); ++count) {
+    window.pollEvents();
+    window.framebufferSize(width, height);
+    if (width < 1 || height < 1) continue;  // minimised
+    frame = &engine.render(width, height);
+    glBlitNamedFramebuffer(frame->frame().id(), 0, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+    window.swapBuffers();
+  }
+  if (frame && !options.screenshot.empty()) frame->write(options.screenshot);
+}
+
+}  // namespace
+
+void addViewCommand(CLI::App& app, int& exitCode) {
+  auto options = std::make_shared<ViewOptions>();
+  CLI::App* command = app.add_subcommand("view", "show a pipeline in a window: drag to orbit, right-drag to turn "
+                                                 "and tilt, scroll to zoom");
+  addPipelineOptions(*command, *options);
+  command->add_option("--frames", options->frames, "close after this many frames (default: when the window closes)")
+      ->check(CLI::NonNegativeNumber);
+  command->add_option("--screenshot", options->screenshot, "write the last frame to this PNG file");
+  command->callback([options, &exitCode] { exitCode = reportingErrors([&] { view(*options); }); });
+}
+
+}  // namespace strata::cli

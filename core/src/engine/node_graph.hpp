@@ -1,0 +1,40 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <strata/node.hpp>
+#include <strata/pipeline.hpp>
+#include <strata/plugin_registry.hpp>
+
+#include "engine/worker_pool.hpp"
+
+namespace strata {
+
+// The live nodes of one pipeline, in dependency order, and the frame phases over them (DESIGN.md, "The
+// picture"): prepare on the workers, render on the GL thread.
+class NodeGraph {
+ public:
+  // Makes every node, checks the layer kinds on its inputs, reads their data on the workers (a node after
+  // its inputs) and creates their GPU resources on this (the GL) thread. Throws strata::Error.
+  NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, WorkerPool& workers, GpuContext& gpu);
+
+  void prepare(const FrameState& frame, WorkerPool& workers);
+  void render(const FrameState& frame);
+  FrameOutput& output() const { return *output_; }
+
+ private:
+  struct Entry {
+    const NodeDescription* description;
+    std::unique_ptr<Node> node;
+    int depth;  // longest path from a node without inputs; nodes of one depth open in parallel
+  };
+  void make(const Pipeline& pipeline, const PluginRegistry& registry);
+  void open(WorkerPool& workers);
+  void createResources(GpuContext& gpu);
+
+  const Pipeline* pipeline_;
+  std::vector<Entry> entries_;
+  FrameOutput* output_ = nullptr;
+};
+
+}  // namespace strata

@@ -1,0 +1,83 @@
+#include <glm/gtc/constants.hpp>
+
+#include <strata/gl/shader_program.hpp>
+#include <strata/raster_layer.hpp>
+
+namespace strata {
+namespace {
+
+// The next mip level: each texel the mean of the (up to) 2x2 texels it covers. Texels carry coverage
+// (premultiplied), so the mean of values and of coverage stays consistent where nodata is mixed in.
+RasterImage halved(const RasterImage& image) {
+  RasterImage out{std::max(1, image.width / 2), std::max(1, image.height / 2), image.channels, {}, image.extent};
+  out.texels.assign(std::size_t(out.width) * out.height * image.channels, 0.0f);
+  const int spanX = image.width > 1 ? 2 : 1, spanY = image.height > 1 ? 2 : 1;
+  const float share = 1.0f / float(spanX * spanY);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int dy = 0; dy < spanY; ++dy)
+        for (int dx = 0; dx < spanX; ++dx)
+          for (int c = 0; c < image.channels; ++c)
+            out.texels[(std::size_t(y) * out.width + x) * image.channels + c] +=
+                share * image.texels[(std::size_t(y * spanY + dy) * image.width + x * spanX + dx) * image.channels + c];
+  return out;
+}
+
+}  // namespace
+
+RasterLayer::RasterLayer(std::string nodeId, LayerKind kind) : prefix_("layer_" + glslIdentifier(nodeId)), kind_(kind) {}
+
+void RasterLayer::setValueTransform(double scale, double offset) {
+  scale_ = scale;
+  offset_ = offset;
+}
+
+void RasterLayer::upload(const RasterImage& image) {
+  const bool colour = image.channels == 4;
+  texture_ = Texture(colour ? GL_RGBA16F : GL_RG32F, image.width, image.height, mipLevels(image.width, image.height));
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  // The mip chain is averaged here rather than by glGenerateTextureMipmap: Mesa's llvmpipe was seen to
+  // leave non-finite texels in the float levels it generated, which tore holes in displaced geometry.
+  int level = 0;
+  for (RasterImage mip = image;; mip = halved(mip), ++level) {
+    glTextureSubImage2D(texture_.id(), level, 0, 0, mip.width, mip.height, colour ? GL_RGBA : GL_RG, GL_FLOAT,
+                        mip.texels.data());
+    if (mip.width == 1 && mip.height == 1) break;
+  }
+  // A raster that goes all the way round wraps across the antimeridian when filtered.
+  glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, image.extent.global() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+  // Equirectangular texels stretch toward the poles; anisotropic filtering keeps them sharp there.
+  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
+    glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  extent_ = image.extent;
+}
+
+std::string RasterLayer::samplingFunction() const { return prefix_; }
+
+std::string RasterLayer::glsl() const {
+  const std::string& p = prefix_;
+  const bool colour = kind_ == LayerKind::Color || kind_ == LayerKind::Chroma || kind_ == LayerKind::Normal;
+  std::string value = colour ? "vec4(t.rgb / t.a, t.a)"
+                             : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
+  return "#include \"strata/projection/equirectangular.glsl\"\n"
+         "uniform sampler2D " + p + "_texture;\n"
+         "uniform vec4 " + p + "_extent;\n"
+         "uniform vec2 " + p + "_scaleOffset;\n"
+         "vec4 " + p + "(SurfacePoint p) {\n"
+         "  vec3 uv = equirectangularCoordinates(p.lonlat, " + p + "_extent);\n"
+         "  if (uv.z == 0.0) return vec4(0.0);\n"
+         "  vec4 t = sampleFootprint(" + p + "_texture, uv.xy, equirectangularGradient(p.lonlatDx, " + p + "_extent),\n"
+         "                           equirectangularGradient(p.lonlatDy, " + p + "_extent));\n"
+         "  if (" + std::string(colour ? "t.a" : "t.g") + " <= 0.0) return vec4(0.0);\n"
+         "  return " + value + ";\n"
+         "}\n";
+}
+
+void RasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
+  const double degree = glm::pi<double>() / 180.0;
+  units.bind(program, prefix_ + "_texture", texture_.id());
+  program.set(prefix_ + "_extent", glm::vec4(glm::dvec4(extent_.west, extent_.south, extent_.east, extent_.north) * degree));
+  program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
+}
+
+}  // namespace strata

@@ -1,0 +1,140 @@
+// Reads a pipeline file. The format, version 1:
+//
+//   strata: 1                                  # required: the format version; only 1 exists
+//   body: {name: Earth, radius: 6371000}       # optional (scene_parsing.hpp)
+//   camera: {lon: 10, lat: 20, altitude: 2e7}  # optional (scene_parsing.hpp)
+//   nodes:                                     # required: node id -> node (node_parsing.hpp)
+//     relief:  {type: source.gdal, path: egm96_15.gtx, kind: height, scale: 300}
+//     terrain: {type: geometry.icosahedral, height: relief}
+//     frame:   {type: output.image, geometry: terrain, surface: [relief]}
+//
+// Steps, each of which may throw strata::Error with the file, line and column and a fix: parse the YAML;
+// apply the --set overrides to the tree (overrides.hpp); check the top-level keys; read the version,
+// body and camera; read each node on its own; check how the nodes connect and order them
+// (graph_checks.hpp). In every map a key may appear only once, and an unknown key gets a did-you-mean.
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include <strata/pipeline.hpp>
+#include <strata/plugin_registry.hpp>
+
+#include "pipeline/graph_checks.hpp"
+#include "pipeline/overrides.hpp"
+#include "pipeline/scene_parsing.hpp"
+#include "pipeline/value_reading.hpp"
+#include "pipeline/yaml_maps.hpp"
+
+namespace strata {
+namespace {
+
+using loader::SourceMap;
+
+constexpr std::int64_t kFormatVersion = 1;
+const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "nodes"};
+
+YAML::Node parseYaml(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& exception) {
+    // yaml-cpp counts from 0; an exception without a mark has -1, which becomes "no line".
+    throw Error(SourceLocation{file, exception.mark.line + 1, exception.mark.column + 1},
+                "invalid YAML: " + exception.msg,
+                "correct the YAML near this line and column (check indentation, ':' after keys and closing brackets)");
+  }
+}
+
+void requireRootMap(const YAML::Node& root, const SourceMap& source) {
+  if (root.IsMap()) return;
+  const std::string problem =
+      root.IsNull() ? "the pipeline is empty" : "a pipeline must be a map of keys, got " + loader::describe(root);
+  throw source.error(root, {}, problem, "start it with `strata: 1` and a `nodes:` map; see pipelines/demo.yaml");
+}
+
+int parseVersion(const YAML::Node& root, const SourceMap& source) {
+  const YAML::Node value = root["strata"];
+  if (!value)
+    throw source.error(root, {}, "the pipeline has no 'strata' format version", "add `strata: 1` as its first line");
+  const std::int64_t version = loader::readInteger(value, {source, "'strata' (the format version)", {}});
+  if (version != kFormatVersion)
+    throw source.error(value, {},
+                       "unsupported format version " + std::to_string(version) + "; this Strata reads version 1",
+                       "write `strata: 1` and the rest of the file in format 1");
+  return static_cast<int>(version);
+}
+
+std::vector<NodeDescription> parseNodes(const YAML::Node& root, const loader::NodeContext& context) {
+  const YAML::Node nodes = root["nodes"];
+  if (!nodes)
+    throw context.source.error(root, {}, "the pipeline has no 'nodes'",
+                               "add a `nodes:` map from node ids to nodes, e.g. `frame: {type: output.image, ...}`");
+  if (!nodes.IsMap())
+    throw context.source.error(nodes, {},
+                               "'nodes' must be a map from node ids to nodes, got " + loader::describe(nodes),
+                               "write each node under `nodes:` as `id: {type: ..., ...}`");
+  loader::requireUniqueKeys(nodes, context.source, "node id");
+  std::vector<loader::ParsedNode> parsed;
+  for (const auto& entry : nodes) parsed.push_back(loader::parseNode(entry.first, entry.second, context));
+  return loader::connectNodes(std::move(parsed), nodes, context.source);
+}
+
+std::filesystem::path baseDirectory(const std::filesystem::path& file) {
+  return file.empty() ? std::filesystem::current_path() : std::filesystem::absolute(file).parent_path();
+}
+
+// After the overrides, the document is only read: through a const node, since yaml-cpp's non-const
+// operator[] adds the keys it looks up.
+Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std::filesystem::path& file,
+                      const PluginRegistry& registry) {
+  loader::requireUniqueKeys(root, source, "key");
+  loader::requireKnownKeys(root, kTopLevelKeys, source, "the pipeline");
+  Pipeline pipeline;
+  pipeline.file = file;
+  pipeline.version = parseVersion(root, source);
+  if (const YAML::Node body = root["body"]) pipeline.body = loader::parseBody(body, source);
+  if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
+  pipeline.nodes = parseNodes(root, {source, registry, baseDirectory(file)});
+  return pipeline;
+}
+
+std::string readFile(const std::filesystem::path& file) {
+  const SourceLocation where{file.string()};
+  std::error_code error;
+  if (!std::filesystem::exists(file, error))
+    throw Error(where, "pipeline file not found", "check the path; pipelines/ holds ready-made pipelines");
+  if (std::filesystem::is_directory(file, error))
+    throw Error(where, "this is a directory, not a pipeline file", "give the path of a pipeline .yaml file");
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream)
+    throw Error(where, std::string("cannot read the pipeline file: ") + std::strerror(errno),
+                "check the file's permissions");
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
+                       const std::vector<std::string>& overrides, const PluginRegistry& registry) {
+  SourceMap source(fileName.string());
+  YAML::Node root = parseYaml(text, fileName.string());
+  requireRootMap(root, source);
+  loader::applyOverrides(root, overrides, source);
+  return readDocument(root, source, fileName, registry);
+}
+
+Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                      const PluginRegistry& registry) {
+  return parsePipeline(readFile(file), file, overrides, registry);
+}
+
+const NodeDescription* Pipeline::find(const std::string& id) const {
+  for (const auto& node : nodes)
+    if (node.id == id) return &node;
+  return nullptr;
+}
+
+}  // namespace strata

@@ -1,0 +1,79 @@
+#include "pipeline/scene_parsing.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "pipeline/interval.hpp"
+#include "pipeline/value_reading.hpp"
+#include "pipeline/yaml_maps.hpp"
+
+namespace strata::loader {
+namespace {
+
+struct CameraField {
+  const char* name;
+  double Camera::*member;
+  Interval allowed;
+  const char* units;
+};
+
+const std::array<CameraField, 6> kCameraFields{{
+    {"lon", &Camera::lon, Interval::any(), "deg"},
+    {"lat", &Camera::lat, Interval::closed(-90.0, 90.0), "deg"},
+    {"altitude", &Camera::altitude, Interval::above(0.0), "m"},
+    {"heading", &Camera::heading, Interval::any(), "deg"},
+    {"tilt", &Camera::tilt, Interval::closed(0.0, 90.0), "deg"},
+    {"fov", &Camera::fov, Interval::open(0.0, 180.0), "deg"},
+}};
+
+std::vector<std::string> cameraKeys() {
+  std::vector<std::string> keys;
+  for (const auto& field : kCameraFields) keys.emplace_back(field.name);
+  return keys;
+}
+
+// Longitudes name the same meridian modulo 360; one range keeps later arithmetic simple.
+double wrapLongitude(double lon) {
+  const double wrapped = std::fmod(lon + 180.0, 360.0);
+  return (wrapped < 0.0 ? wrapped + 360.0 : wrapped) - 180.0;
+}
+
+void requireMap(const YAML::Node& map, const SourceMap& source, const std::string& section,
+                const std::string& example) {
+  if (!map.IsMap())
+    throw source.error(map, {}, "'" + section + "' must be a map, got " + describe(map), "write it as " + example);
+  requireUniqueKeys(map, source, "key");
+}
+
+}  // namespace
+
+Body parseBody(const YAML::Node& map, const SourceMap& source) {
+  requireMap(map, source, "body", "body: {name: Earth, radius: 6371000}");
+  requireKnownKeys(map, {"name", "radius"}, source, "body");
+  Body body;
+  if (const YAML::Node name = map["name"]) body.name = readText(name, {source, "body 'name'", {}});
+  if (const YAML::Node radius = map["radius"]) {
+    const ValueContext context{source, "body 'radius'", {}};
+    body.radius = readReal(radius, context);
+    requireWithin(body.radius, Interval::above(0.0), "m", radius, context);
+  }
+  return body;
+}
+
+Camera parseCamera(const YAML::Node& map, const SourceMap& source) {
+  requireMap(map, source, "camera", "camera: {lon: 10, lat: 20, altitude: 2.0e7}");
+  requireKnownKeys(map, cameraKeys(), source, "camera");
+  Camera camera;
+  for (const auto& field : kCameraFields) {
+    const YAML::Node value = map[field.name];
+    if (!value) continue;
+    const ValueContext context{source, std::string("camera '") + field.name + "'", {}};
+    const double number = readReal(value, context);
+    requireWithin(number, field.allowed, field.units, value, context);
+    camera.*field.member = number;
+  }
+  camera.lon = wrapLongitude(camera.lon);
+  return camera;
+}
+
+}  // namespace strata::loader

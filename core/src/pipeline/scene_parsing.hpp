@@ -1,0 +1,22 @@
+#pragma once
+#include <yaml-cpp/yaml.h>
+
+#include <strata/body.hpp>
+#include <strata/camera.hpp>
+
+#include "pipeline/source_map.hpp"
+
+// The `body:` and `camera:` sections of a pipeline. Both are optional maps, and so is every key in them:
+// what is absent keeps the defaults of body.hpp and camera.hpp.
+namespace strata::loader {
+
+// body: {name: Earth, radius: 6371000}. name is text; radius is a number of metres > 0.
+Body parseBody(const YAML::Node& map, const SourceMap& source);
+
+// camera: {lon, lat, altitude, heading, tilt, fov}, all numbers:
+//   lon: degrees, any value, wrapped into [-180, 180)     lat: degrees in [-90, 90]
+//   altitude: metres above the body's radius, > 0        heading: degrees, any value, kept as given
+//   tilt: degrees in [0, 90] (0 looks straight down)      fov: vertical, degrees in (0, 180)
+Camera parseCamera(const YAML::Node& map, const SourceMap& source);
+
+}  // namespace strata::loader

@@ -1,0 +1,55 @@
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/constants.hpp>
+
+#include <strata/camera.hpp>
+
+namespace strata {
+
+glm::dvec3 unitNormal(double lonRad, double latRad) {
+  return {std::cos(latRad) * std::cos(lonRad), std::cos(latRad) * std::sin(lonRad), std::sin(latRad)};
+}
+
+namespace {
+
+// Infinite far plane with reversed depth: window depth = near / distance, 1 at the near plane and 0 at
+// infinity. Floating-point depth then keeps about the same relative precision at every distance, which a
+// view from orbit down to a metre needs (used with glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)).
+glm::mat4 reversedInfiniteProjection(double verticalFov, double aspect, double near) {
+  const double f = 1.0 / std::tan(verticalFov / 2.0);
+  glm::dmat4 p(0.0);
+  p[0][0] = f / aspect;
+  p[1][1] = f;
+  p[2][3] = -1.0;
+  p[3][2] = near;
+  return glm::mat4(p);
+}
+
+}  // namespace
+
+View makeView(const Body& body, const Camera& camera, int width, int height) {
+  const double lon = glm::radians(camera.lon), lat = glm::radians(camera.lat);
+  const double heading = glm::radians(camera.heading), tilt = glm::radians(camera.tilt);
+  const glm::dvec3 up = unitNormal(lon, lat);
+  const glm::dvec3 east(-std::sin(lon), std::cos(lon), 0.0);
+  const glm::dvec3 north = glm::cross(up, east);
+  const glm::dvec3 ahead = north * std::cos(heading) + east * std::sin(heading);
+  const glm::dvec3 forward = -up * std::cos(tilt) + ahead * std::sin(tilt);
+  const glm::dvec3 cameraUp = up * std::sin(tilt) + ahead * std::cos(tilt);
+  const glm::dvec3 right = glm::cross(forward, cameraUp);
+
+  View view;
+  view.width = width;
+  view.height = height;
+  view.eye = up * (body.radius + camera.altitude);
+  view.planetToEye = glm::transpose(glm::dmat3(right, cameraUp, -forward));
+  // A thousandth of the altitude keeps the nearest terrain in front of the near plane even for relief
+  // exaggerated far above the eye's own height; 1 cm is the closest anyone needs.
+  view.near = std::max(0.01, camera.altitude * 1e-3);
+  view.verticalFov = glm::radians(camera.fov);
+  view.projection = reversedInfiniteProjection(view.verticalFov, double(width) / double(height), view.near);
+  return view;
+}
+
+}  // namespace strata

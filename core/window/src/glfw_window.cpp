@@ -1,0 +1,75 @@
+#include <GLFW/glfw3.h>
+
+#include <stdexcept>
+
+#include <strata/window/glfw_window.hpp>
+
+namespace strata {
+namespace {
+
+std::string lastGlfwError() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "unknown GLFW error";
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool debug) {
+  if (!glfwInit())
+    throw std::runtime_error("cannot open a window: " + lastGlfwError() +
+                             "\n  fix: run under a desktop session or Xvfb, or use `strata render` (headless)");
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, debug ? GLFW_TRUE : GLFW_FALSE);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    std::string reason = lastGlfwError();
+    glfwTerminate();
+    throw std::runtime_error("cannot create an OpenGL 4.5 core window: " + reason);
+  }
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetCursorPosCallback(window_, onCursor);
+  glfwSetScrollCallback(window_, onScroll);
+  makeCurrent();
+  glfwSwapInterval(1);
+}
+
+GlfwWindow::~GlfwWindow() {
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
+
+std::string GlfwWindow::description() const { return "GLFW window"; }
+
+bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
+
+void GlfwWindow::pollEvents() { glfwPollEvents(); }
+
+void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
+
+void GlfwWindow::framebufferSize(int& width, int& height) const { glfwGetFramebufferSize(window_, &width, &height); }
+
+void GlfwWindow::setPointerInput(PointerInput input) { input_ = std::move(input); }
+
+void GlfwWindow::onCursor(GLFWwindow* window, double x, double y) {
+  auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+  int button = -1;
+  for (int b : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE})
+    if (glfwGetMouseButton(window, b) == GLFW_PRESS) button = b;
+  if (button >= 0 && self->tracking_ && self->input_.drag) self->input_.drag(x - self->lastX_, y - self->lastY_, button);
+  self->tracking_ = true;
+  self->lastX_ = x;
+  self->lastY_ = y;
+}
+
+void GlfwWindow::onScroll(GLFWwindow* window, double, double dy) {
+  auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+  if (self->input_.scroll) self->input_.scroll(dy);
+}
+
+}  // namespace strata

@@ -1,0 +1,112 @@
+// output.image: composes the surface layers per pixel over a geometry's deferred texturing buffer, lights
+// the result and delivers 8-bit sRGB frames (PNG files through `strata render`, or a window).
+#include <cmath>
+#include <memory>
+
+#include <glm/gtc/constants.hpp>
+
+#include <strata/geometry.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/layer.hpp>
+#include <strata/output.hpp>
+#include <strata/plugin.hpp>
+
+namespace strata::image {
+namespace {
+
+class ImageOutput : public Node, public FrameOutput {
+ public:
+  explicit ImageOutput(const NodeSetup& setup) : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters) {
+    for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
+  }
+
+  void createResources(GpuContext& gpu) override {
+    std::string layersGlsl, accumulate;
+    for (const Layer* layer : surface_) {
+      layersGlsl += layer->glsl();
+      const bool colour = layer->kind() == LayerKind::Color;
+      // Seed 000 section 4.1.2: value x weight into rgb, the weight into alpha.
+      accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
+                    (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
+    }
+    program_ = ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
+                              {GL_FRAGMENT_SHADER, "output/composite.frag",
+                               gpu.shaders->expand("output/composite.frag",
+                                                   {{"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                    {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+  }
+
+  void render(const FrameState& frame) override {
+    if (frame_.width() != frame.view.width || frame_.height() != frame.view.height)
+      frame_ = Framebuffer(frame.view.width, frame.view.height, {GL_RGBA8});
+    frame_.bind();
+    program_.use();
+    program_.set("lightDirection", lightDirection(frame.view));
+    program_.set("ambient", float(parameters_.real("ambient")));
+    program_.set("shade", parameters_.string("shading") == "lambert" ? 1 : 0);
+    program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
+    program_.set("background", glm::vec3(0.0f));
+    TextureUnits units;
+    units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
+    units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
+    for (const Layer* layer : surface_) layer->bind(program_, units);
+    drawFullscreenTriangle();
+  }
+
+  FrameOutput* output() override { return this; }
+  const Framebuffer& frame() const override { return frame_; }
+  void write(const std::filesystem::path& file) const override {
+    writePng(file, frame_.width(), frame_.height(), readPixels(frame_));
+  }
+
+ private:
+  // The light, given in the view (azimuth clockwise from the top of the image, elevation above the image
+  // plane toward the viewer), turned into planet-fixed axes. 315/45 is the cartographic convention for
+  // shaded relief: light from the upper left, so hills do not read as valleys.
+  glm::vec3 lightDirection(const View& view) const {
+    const double azimuth = glm::radians(parameters_.real("light_azimuth"));
+    const double elevation = glm::radians(parameters_.real("light_elevation"));
+    const glm::dvec3 inView(std::sin(azimuth) * std::cos(elevation), std::cos(azimuth) * std::cos(elevation),
+                            std::sin(elevation));
+    return glm::vec3(glm::transpose(view.planetToEye) * inView);
+  }
+
+  SurfaceGeometry* geometry_;
+  ParameterSet parameters_;
+  std::vector<const Layer*> surface_;
+  ShaderProgram program_;
+  Framebuffer frame_;
+};
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "output.image";
+  type.category = NodeCategory::Output;
+  type.summary = "Composes surface layers over a geometry, lights them and delivers 8-bit sRGB frames (PNG)";
+  type.inputs = {
+      {.name = "geometry", .type = PortType::Geometry, .doc = "the surface to colour (a geometry generator)"},
+      {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color, LayerKind::Luminance},
+       .list = true, .optional = true,
+       .doc = "layers draped on it, blended by coverage where they overlap; none: grey"},
+  };
+  type.parameters = {
+      {.name = "shading", .type = ParameterType::Choice, .defaultValue = std::string("lambert"),
+       .doc = "lambert: lit by one distant light; none: the layers' colours as they are", .choices = {"lambert", "none"}},
+      {.name = "light_azimuth", .type = ParameterType::Real, .defaultValue = 315.0, .minimum = 0.0, .maximum = 360.0,
+       .units = "deg", .doc = "where the light comes from, clockwise from the top of the image"},
+      {.name = "light_elevation", .type = ParameterType::Real, .defaultValue = 45.0, .minimum = 0.0, .maximum = 90.0,
+       .units = "deg", .doc = "the light's angle above the image plane"},
+      {.name = "ambient", .type = ParameterType::Real, .defaultValue = 0.25, .minimum = 0.0, .maximum = 1.0,
+       .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable"},
+  };
+  type.create = [](const NodeSetup& setup) { return std::make_unique<ImageOutput>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::image
+
+STRATA_PLUGIN("output-image", "0.1.0", strata::image::registerTypes)

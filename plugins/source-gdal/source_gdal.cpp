@@ -1,0 +1,86 @@
+// source.gdal: a layer from any raster GDAL opens, read whole (paging comes with the page cache).
+#include <gdal_priv.h>
+
+#include <memory>
+
+#include <strata/plugin.hpp>
+#include <strata/raster_layer.hpp>
+
+#include "georeferencing.hpp"
+#include "raster_reading.hpp"
+
+namespace strata::gdal {
+namespace {
+
+class GdalSource : public Node {
+ public:
+  explicit GdalSource(const NodeSetup& setup)
+      : setup_(setup), kind_(kindOf(setup)), layer_(setup.id, kind_) {
+    layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
+  }
+
+  void open() override {
+    const SourceLocation where = setup_.parameters.where("path");
+    const std::string path = setup_.parameters.path("path").string();
+    GDALAllRegister();
+    CPLErrorReset();
+    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    if (!dataset)
+      throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
+                  "check the path, and that `gdalinfo " + path + "` reads it");
+    const std::vector<double>& extent = setup_.parameters.reals("extent");
+    image_ = readRaster(*dataset, kind_, where);
+    image_.extent = extent.empty() ? extentOf(*dataset, where)
+                                   : extentFromParameter(extent, setup_.parameters.where("extent"));
+  }
+
+  void createResources(GpuContext&) override {
+    layer_.upload(image_);
+    image_ = {};  // the texture holds it now
+  }
+
+  Layer* layer() override { return &layer_; }
+
+ private:
+  static LayerKind kindOf(const NodeSetup& setup) {
+    LayerKind kind = LayerKind::Color;
+    parseLayerKind(setup.parameters.string("kind"), kind);  // the declaration's choices are all valid kinds
+    return kind;
+  }
+
+  NodeSetup setup_;
+  LayerKind kind_;
+  RasterLayer layer_;
+  RasterImage image_;
+};
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "source.gdal";
+  type.category = NodeCategory::Source;
+  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in longitude/latitude";
+  type.output = PortType::Layer;
+  type.parameters = {
+      {.name = "path", .type = ParameterType::Path, .doc = "the raster file; relative to the pipeline file"},
+      {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
+       .doc = "what the values are: color (8/16-bit sRGB) or one-channel height, scalar, luminance, mask",
+       .choices = {"color", "height", "scalar", "luminance", "mask"}},
+      {.name = "scale", .type = ParameterType::Real, .defaultValue = 1.0,
+       .doc = "one-channel kinds: multiplies raw values (vertical exaggeration, or counts to metres)"},
+      {.name = "offset", .type = ParameterType::Real, .defaultValue = 0.0,
+       .doc = "one-channel kinds: added after scale (metres for heights)"},
+      {.name = "extent", .type = ParameterType::RealList, .defaultValue = std::vector<double>{}, .minimum = -360.0,
+       .maximum = 360.0, .units = "deg",
+       .doc = "[west, south, east, north]; empty: from the raster's georeferencing (a bare 2:1 raster is global)",
+       .count = 4},
+  };
+  type.create = [](const NodeSetup& setup) { return std::make_unique<GdalSource>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::gdal
+
+STRATA_PLUGIN("source-gdal", "0.1.0", strata::gdal::registerTypes)

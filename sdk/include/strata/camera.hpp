@@ -1,0 +1,39 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include <strata/body.hpp>
+
+namespace strata {
+
+// Where a view looks from, as a user says it: above a point of the surface, turned and tilted.
+struct Camera {
+  double lon = 0.0;          // deg, east positive: the point below the eye
+  double lat = 0.0;          // deg, north positive
+  double altitude = 2.0e7;   // m above the body's radius
+  double heading = 0.0;      // deg clockwise from north: the direction the view faces
+  double tilt = 0.0;         // deg: 0 looks straight down, 90 at the horizon
+  double fov = 45.0;         // deg, vertical field of view
+};
+
+// A camera resolved for one frame. Planet-scale quantities stay in double; what the GPU gets is
+// relative to the eye (DESIGN.md, Precision).
+struct View {
+  int width = 0;
+  int height = 0;
+  glm::dvec3 eye{0.0};             // planet-fixed position of the eye, m
+  glm::dmat3 planetToEye{1.0};     // rotation from planet-fixed axes to eye axes (x right, y up, -z forward)
+  glm::mat4 projection{1.0f};      // infinite far plane, reversed depth (1 at the near plane, 0 at infinity)
+  double near = 1.0;               // m
+  double verticalFov = 0.0;        // rad
+
+  // Eye-space position of a planet-fixed point, computed in double.
+  glm::dvec3 toEye(const glm::dvec3& planetFixed) const { return planetToEye * (planetFixed - eye); }
+};
+
+// Resolves a camera over a body for a viewport of width x height pixels.
+View makeView(const Body& body, const Camera& camera, int width, int height);
+
+// Planet-fixed unit normal at geographic longitude and latitude (radians).
+glm::dvec3 unitNormal(double lonRad, double latRad);
+
+}  // namespace strata

@@ -1,0 +1,54 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <strata/camera.hpp>
+#include <strata/output.hpp>
+#include <strata/pipeline.hpp>
+#include <strata/plugin_registry.hpp>
+
+namespace strata {
+
+struct EngineOptions {
+  std::vector<std::filesystem::path> pluginDirectories;  // empty: defaultPluginDirectories()
+  unsigned workerThreads = 0;                            // 0: one per hardware thread
+};
+
+// Per-frame timings and counts.
+struct FrameStatistics {
+  std::uint64_t frame = 0;
+  double prepareMs = 0.0;  // CPU phase, all nodes, on the workers
+  double renderMs = 0.0;   // GL phase, all nodes, CPU time to submit (GPU time is not waited for)
+};
+
+// Loads pipelines and renders their frames into framebuffers, on the caller's current OpenGL 4.5 context.
+// All calls come from the thread that owns that context.
+class Engine {
+ public:
+  explicit Engine(EngineOptions options = {});
+  ~Engine();
+  Engine(const Engine&) = delete;
+  Engine& operator=(const Engine&) = delete;
+
+  PluginRegistry& plugins();
+
+  // Validates the pipeline, makes its nodes, reads their data (worker threads) and creates their GPU
+  // resources. Throws strata::Error; on failure the previously loaded pipeline stays.
+  void load(const std::filesystem::path& pipeline, const std::vector<std::string>& overrides = {});
+  bool loaded() const;
+  const Pipeline& pipeline() const;
+
+  Camera& camera();  // starts as the pipeline's camera; change it between frames
+  // Renders one frame of width x height pixels and returns the pipeline's output.
+  const FrameOutput& render(int width, int height);
+  const FrameStatistics& statistics() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace strata

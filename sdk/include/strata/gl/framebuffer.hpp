@@ -1,0 +1,39 @@
+#pragma once
+#include <vector>
+
+#include <strata/gl.hpp>
+#include <strata/gl/texture.hpp>
+
+namespace strata {
+
+// An off-screen render target: colour attachments of the given formats and an optional depth attachment.
+class Framebuffer {
+ public:
+  Framebuffer() = default;
+  Framebuffer(int width, int height, const std::vector<GLenum>& colorFormats, GLenum depthFormat = 0);
+  ~Framebuffer();
+  Framebuffer(Framebuffer&& other) noexcept;
+  Framebuffer& operator=(Framebuffer&& other) noexcept;
+  Framebuffer(const Framebuffer&) = delete;
+  Framebuffer& operator=(const Framebuffer&) = delete;
+
+  GLuint id() const { return id_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const Texture& color(int index) const { return colors_.at(index); }
+  const Texture& depth() const { return depth_; }
+  // Binds for drawing and sets the viewport to the whole target.
+  void bind() const;
+
+ private:
+  GLuint id_ = 0;
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<Texture> colors_;
+  Texture depth_;
+};
+
+// Draws one triangle that covers the viewport; the vertex shader "strata/fullscreen.vert" places it.
+void drawFullscreenTriangle();
+
+}  // namespace strata

@@ -1,0 +1,30 @@
+#pragma once
+#include <string>
+
+#include <strata/port.hpp>
+
+namespace strata {
+
+class ShaderProgram;
+class TextureUnits;
+
+// A layer is a GLSL sampling function over a projection, plus the GPU resources behind it (DESIGN.md).
+// Consumers paste glsl() into their programs after "strata/surface_point.glsl" and call
+//   vec4 <samplingFunction()>(SurfacePoint p)
+// which returns the value in .rgb (.r for one-channel kinds: heights in metres, already scaled) and the
+// coverage weight in .a: 0 outside the data's extent or at nodata, 1 inside, between at edges.
+class Layer {
+ public:
+  virtual ~Layer() = default;
+
+  virtual LayerKind kind() const = 0;
+  virtual std::string samplingFunction() const = 0;
+  virtual std::string glsl() const = 0;
+  // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
+  virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;
+};
+
+// Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.
+std::string glslIdentifier(const std::string& nodeId);
+
+}  // namespace strata

@@ -1,0 +1,12 @@
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace strata {
+
+// Name and version of each library Strata was built with and runs on (GDAL, PROJ, OpenColorIO, yaml-cpp),
+// for `strata info` and bug reports.
+std::vector<std::pair<std::string, std::string>> libraryVersions();
+
+}  // namespace strata

@@ -1,0 +1,61 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <strata/body.hpp>
+#include <strata/error.hpp>
+#include <strata/frame.hpp>
+#include <strata/parameter.hpp>
+
+namespace strata {
+
+class Layer;
+class SurfaceGeometry;
+class FrameOutput;
+class Node;
+class ShaderLibrary;
+
+// What a node type's factory receives: its id, validated parameters and resolved inputs. The inputs were
+// made before this node (the graph is built in dependency order).
+struct NodeSetup {
+  std::string id;
+  SourceLocation where;  // the node's key in the pipeline file
+  ParameterSet parameters;
+  std::map<std::string, std::vector<Node*>> inputs;  // by port name; absent optional ports are missing
+  const Body* body = nullptr;
+  std::filesystem::path pipelineDirectory;  // relative paths in parameters resolve against this
+
+  Node* input(const std::string& port) const;  // the single node on a port, or nullptr
+  const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected
+};
+
+// What the GL-thread hooks receive.
+struct GpuContext {
+  ShaderLibrary* shaders = nullptr;
+};
+
+// One node of a pipeline. The scheduler calls, in this order:
+//   open()             once, on a worker thread: read and check data (no GL)
+//   createResources()  once, on the GL thread, in dependency order: textures, buffers, programs
+//   prepare()          every frame, on a worker thread: CPU work for the frame (no GL)
+//   render()           every frame, on the GL thread, in dependency order
+// Errors a user can cause are thrown as strata::Error naming the node.
+class Node {
+ public:
+  virtual ~Node() = default;
+
+  virtual void open() {}
+  virtual void createResources(GpuContext&) {}
+  virtual void prepare(const FrameState&) {}
+  virtual void render(const FrameState&) {}
+
+  // What the node offers downstream; exactly one is non-null, matching its declared output port type.
+  virtual Layer* layer() { return nullptr; }
+  virtual SurfaceGeometry* geometry() { return nullptr; }
+  virtual FrameOutput* output() { return nullptr; }
+};
+
+}  // namespace strata

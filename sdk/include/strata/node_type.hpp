@@ -1,0 +1,37 @@
+#pragma once
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <strata/parameter.hpp>
+#include <strata/port.hpp>
+
+namespace strata {
+
+class Node;
+struct NodeSetup;
+
+enum class NodeCategory { Source, Compositor, Geometry, Output };
+
+const char* toString(NodeCategory category);
+
+using NodeFactory = std::function<std::unique_ptr<Node>(const NodeSetup&)>;
+
+// Everything the core knows about a node type before it makes one: its ports, its parameters and its
+// documentation. A plugin registers one of these per type it provides.
+struct NodeTypeDeclaration {
+  std::string type;  // "source.gdal": category prefix, a dot, a name
+  NodeCategory category = NodeCategory::Source;
+  std::string summary;  // one line for `strata plugins`
+  std::vector<PortDeclaration> inputs;
+  std::optional<PortType> output;  // what the node offers downstream; none for outputs
+  std::vector<ParameterDeclaration> parameters;
+  NodeFactory create;
+
+  const PortDeclaration* findInput(const std::string& name) const;
+  const ParameterDeclaration* findParameter(const std::string& name) const;
+};
+
+}  // namespace strata

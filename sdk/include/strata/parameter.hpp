@@ -1,0 +1,61 @@
+#pragma once
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <strata/error.hpp>
+
+namespace strata {
+
+enum class ParameterType { Boolean, Integer, Real, String, Path, Choice, RealList };
+
+const char* toString(ParameterType type);
+
+using ParameterValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
+
+// One parameter of a node type, declared once: validation, error messages, `strata plugins --describe`
+// and (later) the viewer's controls all derive from this declaration.
+struct ParameterDeclaration {
+  std::string name;
+  ParameterType type = ParameterType::Real;
+  std::optional<ParameterValue> defaultValue;  // none: the parameter is required
+  std::optional<double> minimum;               // Integer, Real, RealList: inclusive bounds
+  std::optional<double> maximum;
+  std::string units;                           // "m", "deg", "" when dimensionless
+  std::string doc;                             // one line
+  std::vector<std::string> choices;            // Choice: the allowed values
+  std::size_t count = 0;                       // RealList: the exact number of values (0: any)
+};
+
+// A node's validated parameters: every declared parameter has a value of its declared type.
+class ParameterSet {
+ public:
+  void set(const std::string& name, ParameterValue value, SourceLocation where);
+
+  bool has(const std::string& name) const;
+  bool boolean(const std::string& name) const;
+  std::int64_t integer(const std::string& name) const;
+  double real(const std::string& name) const;
+  const std::string& string(const std::string& name) const;  // String, Path and Choice
+  std::filesystem::path path(const std::string& name) const;
+  const std::vector<double>& reals(const std::string& name) const;
+  const ParameterValue& value(const std::string& name) const;
+  // Where the value came from (the YAML scalar, a --set override, or the node for defaults).
+  const SourceLocation& where(const std::string& name) const;
+
+ private:
+  struct Entry {
+    ParameterValue value;
+    SourceLocation where;
+  };
+  const Entry& entry(const std::string& name) const;
+  std::map<std::string, Entry> entries_;
+};
+
+std::string formatValue(const ParameterValue& value);
+
+}  // namespace strata

@@ -1,0 +1,47 @@
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <strata/body.hpp>
+#include <strata/camera.hpp>
+#include <strata/error.hpp>
+#include <strata/parameter.hpp>
+
+namespace strata {
+
+class PluginRegistry;
+
+// One node as the pipeline file describes it, after validation against its type's declaration.
+struct NodeDescription {
+  std::string id;
+  std::string type;
+  SourceLocation where;  // the node's key
+  ParameterSet parameters;  // every declared parameter, defaults filled in
+  std::map<std::string, std::vector<std::string>> inputs;  // port name -> ids of upstream nodes
+};
+
+// A validated pipeline: a body, a camera and an acyclic graph of nodes whose types are registered.
+struct Pipeline {
+  std::filesystem::path file;
+  int version = 1;
+  Body body;
+  Camera camera;
+  std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
+
+  const NodeDescription* find(const std::string& id) const;
+};
+
+// Reads, validates and orders a pipeline file. `overrides` are "PATH=VALUE" strings as given to --set
+// (camera.altitude=5000, nodes.relief.scale=50); VALUE is read as YAML. Throws strata::Error naming the
+// file, line and column and what would fix it.
+Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                      const PluginRegistry& registry);
+
+// The same for pipeline text; `fileName` is used in messages and relative paths resolve against its
+// directory.
+Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
+                       const std::vector<std::string>& overrides, const PluginRegistry& registry);
+
+}  // namespace strata

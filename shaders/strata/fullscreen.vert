@@ -1,0 +1,6 @@
+#version 450 core
+// One triangle that covers the viewport: vertices at (-1,-1), (3,-1), (-1,3).
+void main() {
+  vec2 corner = vec2(float((gl_VertexID & 1) << 2), float((gl_VertexID & 2) << 1)) - 1.0;
+  gl_Position = vec4(corner, 0.0, 1.0);
+}

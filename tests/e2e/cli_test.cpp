@@ -1,0 +1,294 @@
+// End-to-end tests of the strata command. Each runs the built binary as a user would, from the source tree
+// (where pipelines/ is), and checks its exit code, what it prints and the images it writes. Frames are
+// small so that the suite stays quick on llvmpipe.
+#include <gdal_priv.h>
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "temporary_directory.hpp"
+#include "test_rasters.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// What one run of the command did.
+struct CommandResult {
+  int exitCode = -1;  // a crash shows as 128 + the signal (the shell's way), -1 if the shell itself failed
+  std::string out;
+  std::string err;
+};
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Single quotes for /bin/sh; a quote inside is closed, escaped and reopened.
+std::string shellQuoted(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+using strata::test::Image;
+using strata::test::readImage;
+
+// A pixel without its alpha, which is always opaque in a rendered frame.
+std::array<int, 3> rgb(const Image& image, int x, int y) {
+  const std::array<int, 4> rgba = image.at(x, y);
+  return {rgba[0], rgba[1], rgba[2]};
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// The first line of `text` that starts with `prefix`, or "" when none does: listings print one item a line.
+std::string lineStartingWith(const std::string& text, const std::string& prefix) {
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.starts_with(prefix)) return line;
+  return {};
+}
+
+bool hasLineStartingWith(const std::string& text, const std::string& prefix) {
+  return !lineStartingWith(text, prefix).empty();
+}
+
+// The number of bands GDAL finds in `file` (0 when it cannot open it): a PNG frame is RGB or RGBA.
+int bandCount(const fs::path& file) {
+  GDALAllRegister();
+  GDALDatasetH dataset = GDALOpen(file.c_str(), GA_ReadOnly);
+  if (!dataset) return 0;
+  const int bands = GDALGetRasterCount(dataset);
+  GDALClose(dataset);
+  return bands;
+}
+
+// Each test gets a scratch directory, removed with its files afterwards, and runs strata with only the
+// built-in plugins beside the binary unless it names a plugin directory: plugins found through a
+// STRATA_PLUGIN_PATH of the person running the tests must not change the results.
+class StrataCommandTest : public ::testing::Test {
+ protected:
+  CommandResult run(const std::vector<std::string>& arguments, const std::string& pluginPath = {}) const {
+    const fs::path out = scratch_.path() / "stdout.txt", err = scratch_.path() / "stderr.txt";
+    const std::string environment =
+        pluginPath.empty() ? "-u STRATA_PLUGIN_PATH" : "STRATA_PLUGIN_PATH=" + shellQuoted(pluginPath);
+    std::string command =
+        "cd " + shellQuoted(STRATA_SOURCE_DIR) + " && env " + environment + " " + shellQuoted(STRATA_EXECUTABLE);
+    for (const std::string& argument : arguments) command += " " + shellQuoted(argument);
+    command += " >" + shellQuoted(out.string()) + " 2>" + shellQuoted(err.string());
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(out), readText(err)};
+  }
+
+  // Renders `pipeline` to a tiny frame in the scratch directory, for tests that expect it to be refused.
+  CommandResult renderTiny(const fs::path& pipeline, const std::string& pluginPath = {}) const {
+    return run({"render", pipeline.string(), "--size", "32x18", "-o", file("x.png").string()}, pluginPath);
+  }
+
+  fs::path file(const std::string& name) const { return scratch_.path() / name; }
+  fs::path write(const std::string& name, const std::string& text) const { return scratch_.write(name, text); }
+
+  strata::test::TemporaryDirectory scratch_;
+};
+
+// --- render: the demo pipeline ------------------------------------------------------------------------
+
+// Channel differences larger than rounding: lighting scales r, g and b alike, so a grey surface stays
+// within a level or two of grey, and 24 levels of 255 can only come from the imagery's colours.
+constexpr int kHueMargin = 24;
+
+TEST_F(StrataCommandTest, RenderDrawsTheDemoEarthAgainstBlackSpace) {
+  const fs::path png = file("demo.png");
+  const CommandResult result = run({"render", "pipelines/demo.yaml", "--size", "320x180", "-o", png.string()});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "wrote")) << result.out;
+  const int bands = bandCount(png);
+  EXPECT_TRUE(bands == 3 || bands == 4) << bands << " bands";
+  const Image image = readImage(png);
+  ASSERT_EQ(image.width, 320);
+  ASSERT_EQ(image.height, 180);
+  // At 20,000 km with a 45 degree field of view the globe spans about 60% of the frame's height, so the
+  // corners look past it into space, which is exactly black; the centre looks at the lit day side.
+  for (auto [x, y] : {std::array{0, 0}, {319, 0}, {0, 179}, {319, 179}})
+    EXPECT_EQ(rgb(image, x, y), (std::array{0, 0, 0})) << "corner " << x << "," << y;
+  const std::array<int, 3> centre = rgb(image, 160, 90);
+  EXPECT_GT(centre[0] + centre[1] + centre[2], 150) << "the centre of the globe is (nearly) black";
+}
+
+TEST_F(StrataCommandTest, RenderDrapesImageryWithBothOceanAndLandColours) {
+  const fs::path png = file("demo.png");
+  ASSERT_EQ(run({"render", "pipelines/demo.yaml", "--size", "320x180", "-o", png.string()}).exitCode, 0);
+  const Image image = readImage(png);
+  // A flat surface would shade to greys; the Blue Marble seen over Africa shows blue ocean and tan land,
+  // each on about 40% of the globe on llvmpipe.
+  int globe = 0, bluish = 0, reddish = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const auto [r, g, b] = rgb(image, x, y);
+      if (r + g + b == 0) continue;  // space
+      ++globe;
+      bluish += b > r + kHueMargin;
+      reddish += r > b + kHueMargin;
+    }
+  ASSERT_GT(globe, 320 * 180 / 10) << "the globe covers less than a tenth of the frame";
+  EXPECT_GT(bluish, globe / 5) << "under 20% of the globe is ocean-coloured";
+  EXPECT_GT(reddish, globe / 5) << "under 20% of the globe is land-coloured";
+}
+
+TEST_F(StrataCommandTest, RenderToAnUnwritablePathFailsWithAMessage) {
+  const CommandResult result =
+      run({"render", "pipelines/demo.yaml", "--size", "32x18", "-o", "/proc/strata-test.png"});
+  EXPECT_EQ(result.exitCode, 1) << result.err;  // 1, not a signal or an abort
+  EXPECT_TRUE(contains(result.err, "/proc/strata-test.png: error: cannot write")) << result.err;
+  EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
+}
+
+// --- render: pipelines with mistakes ------------------------------------------------------------------
+
+// What every rejected pipeline must show: exit code 1 and, on stderr, the file with the line and column of
+// the mistake, "error:", the words that say what is wrong, and a line that says how to fix it.
+void expectRejected(const CommandResult& result, const fs::path& pipeline, int line, int column,
+                    const std::vector<std::string>& words) {
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  const std::string location = pipeline.string() + ":" + std::to_string(line) + ":" + std::to_string(column);
+  EXPECT_TRUE(contains(result.err, location)) << "expected " << location << " in:\n" << result.err;
+  EXPECT_TRUE(contains(result.err, "error:")) << result.err;
+  EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
+  for (const std::string& word : words)
+    EXPECT_TRUE(contains(result.err, word)) << "no '" << word << "' in:\n" << result.err;
+}
+
+// A pipeline whose first node is `first`; the rest is a plain globe with one imagery layer. Line 4 is the
+// first line of `first`.
+std::string pipelineWith(const std::string& first) {
+  return "strata: 1\n"
+         "camera: {lon: 10, lat: 20, altitude: 2.0e7}\n"
+         "nodes:\n" +
+         first +
+         "  globe:\n"
+         "    type: geometry.icosahedral\n"
+         "  frame:\n"
+         "    type: output.image\n"
+         "    geometry: globe\n"
+         "    surface: [imagery]\n";
+}
+
+TEST_F(StrataCommandTest, UnknownNodeTypeSuggestsTheNearestType) {
+  const fs::path pipeline = write("typo.yaml", pipelineWith("  imagery:\n"
+                                                            "    type: source.gdl\n"  // line 5, value at column 11
+                                                            "    path: /usr/share/xplanet/images/earth.jpg\n"));
+  const CommandResult result = renderTiny(pipeline);
+  expectRejected(result, pipeline, 5, 11, {"source.gdl", "source.gdal"});
+}
+
+TEST_F(StrataCommandTest, MissingDataFileIsNamedAtItsPath) {
+  const fs::path pipeline = write("missing.yaml", pipelineWith("  imagery:\n"
+                                                               "    type: source.gdal\n"
+                                                               "    path: does-not-exist.tif\n"));  // line 6
+  const CommandResult result = renderTiny(pipeline);
+  expectRejected(result, pipeline, 6, 11, {"does-not-exist.tif", "not found"});
+}
+
+TEST_F(StrataCommandTest, WrongParameterTypeIsNamedAtItsValue) {
+  const fs::path pipeline = write("scale.yaml", pipelineWith("  imagery:\n"
+                                                             "    type: source.gdal\n"
+                                                             "    path: /usr/share/xplanet/images/earth.jpg\n"
+                                                             "    scale: lots\n"));  // line 7
+  const CommandResult result = renderTiny(pipeline);
+  expectRejected(result, pipeline, 7, 12, {"scale", "lots"});
+}
+
+TEST_F(StrataCommandTest, ColourLayerAsHeightNamesBothKinds) {
+  const fs::path pipeline = write("kinds.yaml", "strata: 1\n"
+                                                "nodes:\n"
+                                                "  imagery:\n"
+                                                "    type: source.gdal\n"
+                                                "    path: /usr/share/xplanet/images/earth.jpg\n"
+                                                "    kind: color\n"
+                                                "  globe:\n"  // line 7
+                                                "    type: geometry.icosahedral\n"
+                                                "    height: imagery\n"
+                                                "  frame:\n"
+                                                "    type: output.image\n"
+                                                "    geometry: globe\n");
+  // Layer kinds are known only once the nodes are made, so the message is at the node, not at its input.
+  const CommandResult result = renderTiny(pipeline);
+  expectRejected(result, pipeline, 7, 3, {"height", "color", "imagery"});
+}
+
+TEST_F(StrataCommandTest, CycleOfInputsIsShownAsAPath) {
+  const fs::path pipeline = write("cycle.yaml", "strata: 1\n"
+                                                "nodes:\n"
+                                                "  first:\n"
+                                                "    type: composite.passthrough\n"
+                                                "    layer: second\n"  // line 5
+                                                "  second:\n"
+                                                "    type: composite.passthrough\n"
+                                                "    layer: first\n"  // line 8
+                                                "  globe:\n"
+                                                "    type: geometry.icosahedral\n"
+                                                "  frame:\n"
+                                                "    type: output.image\n"
+                                                "    geometry: globe\n"
+                                                "    surface: [first]\n");
+  const CommandResult result = renderTiny(pipeline, STRATA_E2E_PLUGIN_DIR);
+  expectRejected(result, pipeline, 5, 12, {"cycle", "first -> second -> first"});
+}
+
+TEST_F(StrataCommandTest, OverrideOutOfRangeNamesTheSetOption) {
+  const CommandResult result = run({"render", "pipelines/demo.yaml", "--set", "camera.altitude=-5", "--size", "32x18",
+                                    "-o", file("x.png").string()});
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(result.err.starts_with("--set")) << result.err;
+  EXPECT_TRUE(contains(result.err, "camera.altitude=-5")) << result.err;
+  EXPECT_TRUE(contains(result.err, "altitude")) << result.err;
+  EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
+  EXPECT_FALSE(fs::exists(file("x.png")));
+}
+
+// --- plugins and info -----------------------------------------------------------------------------------
+
+TEST_F(StrataCommandTest, PluginsListsTheBuiltInTypes) {
+  const CommandResult result = run({"plugins"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const char* type : {"source.gdal ", "geometry.icosahedral ", "output.image "})
+    EXPECT_TRUE(hasLineStartingWith(result.out, type)) << "no " << type << "in:\n" << result.out;
+}
+
+TEST_F(StrataCommandTest, PluginsDescribesTheParametersOfAType) {
+  const CommandResult result = run({"plugins", "--describe", "source.gdal"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(result.out.starts_with("source.gdal (source)")) << result.out;
+  for (const char* parameter : {"  path ", "  kind ", "  scale "})
+    EXPECT_TRUE(hasLineStartingWith(result.out, parameter)) << "no line '" << parameter << "' in:\n" << result.out;
+}
+
+TEST_F(StrataCommandTest, PluginsRefusesToDescribeAnUnknownType) {
+  const CommandResult result = run({"plugins", "--describe", "nosuch"});
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "'nosuch'")) << result.err;
+  EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
+}
+
+TEST_F(StrataCommandTest, InfoNamesTheLibrariesAndTheRenderer) {
+  const CommandResult result = run({"info"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  for (const char* library : {"GDAL ", "PROJ ", "OpenColorIO ", "yaml-cpp "})
+    EXPECT_TRUE(hasLineStartingWith(result.out, library)) << "no " << library << "line in:\n" << result.out;
+  // "renderer" and then the GL_RENDERER string, which a working context never leaves empty.
+  const std::string renderer = lineStartingWith(result.out, "renderer ");
+  EXPECT_NE(renderer.find_first_not_of(' ', std::string("renderer ").size()), std::string::npos) << result.out;
+}
+
+}  // namespace

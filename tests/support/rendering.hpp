@@ -1,0 +1,21 @@
+#pragma once
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <strata/engine.hpp>
+#include <strata/gl/context.hpp>
+
+#include "test_rasters.hpp"
+
+namespace strata::test {
+
+// One headless context for the whole test program (contexts are costly to make on llvmpipe), with the
+// engine loading the plugins of this build.
+GlContext& headlessContext();
+std::unique_ptr<Engine> makeEngine();
+
+// Loads `pipelineFile`, renders one frame and reads it back (top row first).
+Image renderFrame(Engine& engine, const std::filesystem::path& pipelineFile, int width, int height);
+
+}  // namespace strata::test

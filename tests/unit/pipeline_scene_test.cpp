@@ -1,0 +1,134 @@
+// The body: and camera: sections.
+#include "pipeline_test_fixtures.hpp"
+
+namespace strata::testing {
+namespace {
+
+class SceneTest : public PipelineTest {
+ protected:
+  // `section` is line 2 of the pipeline; the nodes follow it.
+  std::string withSection(const std::string& section) const {
+    return "strata: 1\n" + section + "\nnodes:\n" + kFrameNodes;
+  }
+};
+
+TEST_F(SceneTest, CameraKeysAreAllOptional) {
+  const Camera camera = parse(withSection("camera: {altitude: 5000, tilt: 60}")).camera;
+  EXPECT_DOUBLE_EQ(camera.altitude, 5000.0);
+  EXPECT_DOUBLE_EQ(camera.tilt, 60.0);
+  EXPECT_DOUBLE_EQ(camera.lon, Camera{}.lon);
+  EXPECT_DOUBLE_EQ(camera.fov, Camera{}.fov);
+}
+
+TEST_F(SceneTest, LongitudeWrapsIntoMinus180To180) {
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: 190}")).camera.lon, -170.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: 180}")).camera.lon, -180.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: -180}")).camera.lon, -180.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: -190}")).camera.lon, 170.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: 725.5}")).camera.lon, 5.5);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {lon: 179.5}")).camera.lon, 179.5);
+}
+
+TEST_F(SceneTest, BoundsThemselvesAreAllowedWhereInclusive) {
+  const Camera camera = parse(withSection("camera: {lat: -90, tilt: 90, heading: 400}")).camera;
+  EXPECT_DOUBLE_EQ(camera.lat, -90.0);
+  EXPECT_DOUBLE_EQ(camera.tilt, 90.0);
+  EXPECT_DOUBLE_EQ(camera.heading, 400.0);  // kept as given
+}
+
+TEST_F(SceneTest, CameraValueThatIsNotANumber) {
+  const Error error = parseError(withSection("camera: {lon: 10, altitude: high}"));
+  EXPECT_EQ(error.problem(), "camera 'altitude' expects a number, got 'high'");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_EQ(error.where().column, 29);
+  EXPECT_FALSE(error.fix().empty());
+}
+
+TEST_F(SceneTest, QuotedNumberIsText) {
+  const Error error = parseError(withSection("camera: {fov: \"30\"}"));
+  EXPECT_EQ(error.problem(), "camera 'fov' expects a number, got quoted text \"30\"");
+  EXPECT_NE(error.fix().find("without quotes"), std::string::npos);
+}
+
+TEST_F(SceneTest, InfinityIsNotANumberHere) {
+  const Error error = parseError(withSection("camera: {altitude: .inf}"));
+  EXPECT_EQ(error.problem(), "camera 'altitude' expects a number, got '.inf'");
+}
+
+TEST_F(SceneTest, LatitudeOutOfRange) {
+  const Error error = parseError(withSection("camera: {lat: 95}"));
+  EXPECT_EQ(error.problem(), "camera 'lat' must be in [-90, 90] deg, got 95 deg");
+  EXPECT_EQ(error.fix(), "choose a value in [-90, 90] deg");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_EQ(error.where().column, 15);
+}
+
+TEST_F(SceneTest, AltitudeMustBeAboveZero) {
+  const Error error = parseError(withSection("camera: {altitude: 0}"));
+  EXPECT_EQ(error.problem(), "camera 'altitude' must be > 0 m, got 0 m");
+}
+
+TEST_F(SceneTest, TiltOutOfRange) {
+  const Error error = parseError(withSection("camera: {tilt: -5}"));
+  EXPECT_EQ(error.problem(), "camera 'tilt' must be in [0, 90] deg, got -5 deg");
+}
+
+TEST_F(SceneTest, FieldOfViewExcludesItsBounds) {
+  EXPECT_EQ(parseError(withSection("camera: {fov: 180}")).problem(),
+            "camera 'fov' must be in (0, 180) deg, got 180 deg");
+  EXPECT_EQ(parseError(withSection("camera: {fov: 0}")).problem(), "camera 'fov' must be in (0, 180) deg, got 0 deg");
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {fov: 179.9}")).camera.fov, 179.9);
+}
+
+TEST_F(SceneTest, UnknownCameraKeySuggestsTheNearest) {
+  const Error error = parseError(withSection("camera: {altitude: 5000, tlit: 30}"));
+  EXPECT_EQ(error.problem(), "unknown key 'tlit' in camera; did you mean 'tilt'?");
+  EXPECT_EQ(error.fix(), "the keys of camera are 'lon', 'lat', 'altitude', 'heading', 'tilt', 'fov'");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_EQ(error.where().column, 26);
+}
+
+TEST_F(SceneTest, CameraThatIsNotAMap) {
+  const Error error = parseError(withSection("camera: 20000"));
+  EXPECT_EQ(error.problem(), "'camera' must be a map, got '20000'");
+  EXPECT_NE(error.fix().find("camera: {"), std::string::npos);
+  EXPECT_EQ(error.where().column, 9);
+}
+
+TEST_F(SceneTest, RepeatedCameraKey) {
+  const Error error = parseError(withSection("camera: {fov: 30, fov: 60}"));
+  EXPECT_NE(error.problem().find("key 'fov' appears twice"), std::string::npos) << error.what();
+  EXPECT_EQ(error.where().column, 19);
+}
+
+TEST_F(SceneTest, BodyNameAndRadius) {
+  const Body body = parse(withSection("body: {name: Moon, radius: 1737400}")).body;
+  EXPECT_EQ(body.name, "Moon");
+  EXPECT_DOUBLE_EQ(body.radius, 1737400.0);
+}
+
+TEST_F(SceneTest, BodyRadiusMustBePositive) {
+  const Error error = parseError(withSection("body: {name: Moon, radius: -1}"));
+  EXPECT_EQ(error.problem(), "body 'radius' must be > 0 m, got -1 m");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_EQ(error.where().column, 28);
+}
+
+TEST_F(SceneTest, BodyRadiusThatIsNotANumber) {
+  const Error error = parseError(withSection("body: {radius: [1, 2]}"));
+  EXPECT_EQ(error.problem(), "body 'radius' expects a number, got a list");
+}
+
+TEST_F(SceneTest, UnknownBodyKeySuggestsTheNearest) {
+  const Error error = parseError(withSection("body: {nmae: Mars}"));
+  EXPECT_EQ(error.problem(), "unknown key 'nmae' in body; did you mean 'name'?");
+  EXPECT_EQ(error.where().column, 8);
+}
+
+TEST_F(SceneTest, BodyNameMustBeText) {
+  const Error error = parseError(withSection("body: {name: {planet: Mars}}"));
+  EXPECT_EQ(error.problem(), "body 'name' expects text, got a map");
+}
+
+}  // namespace
+}  // namespace strata::testing
