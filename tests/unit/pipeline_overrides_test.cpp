@@ -111,6 +111,13 @@ TEST_F(OverridesTest, MissingIntermediateKeyDeeperDown) {
   EXPECT_EQ(error.fix(), "add it to the file, or set it whole: --set 'nodes.relief={scale: 2}'");
 }
 
+TEST_F(OverridesTest, MisspelledIntermediateKeyGetsADidYouMean) {
+  EXPECT_EQ(overrideError("camara.altitude=5").problem(),
+            "cannot apply --set 'camara.altitude=5': the pipeline has no 'camara'; did you mean 'camera'?");
+  EXPECT_EQ(overrideError("nodes.imagry.scale=2").problem(),
+            "cannot apply --set 'nodes.imagry.scale=2': the pipeline has no 'nodes.imagry'; did you mean 'imagery'?");
+}
+
 TEST_F(OverridesTest, PathThroughAValueThatIsNotAMap) {
   const Error error = overrideError("nodes.frame.surface.first=imagery");
   EXPECT_EQ(error.problem(),

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "pipeline/suggestions.hpp"
+
 namespace strata::loader {
 namespace {
 
@@ -59,6 +61,13 @@ std::string rewrittenAt(const Override& entry, std::size_t missing) {
   return joinedPath(entry, missing) + "=" + value;
 }
 
+std::vector<std::string> keysOf(const YAML::Node& map) {
+  std::vector<std::string> keys;
+  for (const auto& entry : map)
+    if (entry.first.IsScalar()) keys.push_back(entry.first.Scalar());
+  return keys;
+}
+
 // The map that holds the last key of the override's path.
 YAML::Node parentMap(const YAML::Node& root, const Override& entry) {
   YAML::Node map = root;
@@ -66,7 +75,8 @@ YAML::Node parentMap(const YAML::Node& root, const Override& entry) {
     // Looked up through a const node: yaml-cpp's non-const operator[] would add the key if missing.
     const YAML::Node child = std::as_const(map)[entry.path[i]];
     if (!child)
-      throw overrideError(entry, "the pipeline has no '" + joinedPath(entry, i) + "'",
+      throw overrideError(entry,
+                          "the pipeline has no '" + joinedPath(entry, i) + "'" + didYouMean(entry.path[i], keysOf(map)),
                           "add it to the file, or set it whole: --set '" + rewrittenAt(entry, i) + "'");
     if (!child.IsMap())
       throw overrideError(entry, "'" + joinedPath(entry, i) + "' is not a map, so it has no keys to set",

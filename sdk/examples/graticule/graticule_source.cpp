@@ -1,6 +1,7 @@
 // source.graticule: meridians and parallels as a colour layer, drawn on the CPU into a global
 // equirectangular raster. An example of a plugin built out of tree against an installed Strata SDK: it
 // uses only the public headers under <strata/...> and links only Strata::core.
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,9 +17,9 @@ namespace {
 
 // What to draw, read once from the node's validated parameters.
 struct GraticuleStyle {
-  double spacing = 0.0;  // degrees between neighbouring lines
-  int width = 0;         // texels across a line
-  float colour[3] = {};  // linear RGB
+  double spacing = 0.0;            // degrees between neighbouring lines
+  int width = 0;                   // texels across a line
+  std::array<float, 3> colour{};   // linear RGB
   int texelsPerDegree = 0;
 };
 
@@ -38,7 +39,7 @@ GraticuleStyle styleOf(const strata::ParameterSet& parameters) {
 }
 
 // The texel boundaries (columns from the antimeridian) where meridians lie: every whole multiple of the
-// spacing. The meridian at +180 is the one at -180, so it is left to the wrap-around in lineMask.
+// spacing. The loop stops short of +180, the meridian at -180 again, which lineMask draws across the seam.
 std::vector<long> meridianColumns(const GraticuleStyle& style) {
   std::vector<long> columns;
   for (double k = std::ceil(-180.0 / style.spacing); k * style.spacing < 180.0; ++k)
