@@ -22,7 +22,7 @@ std::string parseSize(const std::string& text, FrameSize& size) {
 }  // namespace
 
 void addPipelineOptions(CLI::App& command, PipelineOptions& options) {
-  command.add_option("pipeline", options.pipeline, "the pipeline file (YAML)")->required()->check(CLI::ExistingFile);
+  command.add_option("pipeline", options.pipeline, "the pipeline file (YAML)")->required();  // the loader reports a missing file
   command.add_option("--set", options.overrides,
                      "override a value of the pipeline: PATH=VALUE, e.g. camera.altitude=5000 or nodes.relief.scale=50")
       ->allow_extra_args(false)

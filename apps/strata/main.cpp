@@ -15,6 +15,12 @@ int main(int argc, char** argv) {
   strata::cli::addViewCommand(app, exitCode);
   strata::cli::addPluginsCommand(app, exitCode);
   strata::cli::addInfoCommand(app, exitCode);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    // --help and --version arrive here with exit code 0. A mistake on the command line exits 1 like every
+    // other error of strata, not with CLI11's own codes (105, 106, ...), which scripts would not expect.
+    return app.exit(error) == 0 ? 0 : 1;
+  }
   return exitCode;
 }

@@ -22,7 +22,6 @@ class GdalSource : public Node {
   void open() override {
     const SourceLocation where = setup_.parameters.where("path");
     const std::string path = setup_.parameters.path("path").string();
-    GDALAllRegister();
     CPLErrorReset();
     std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     if (!dataset)
@@ -78,7 +77,10 @@ NodeTypeDeclaration declaration() {
   return type;
 }
 
-void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+void registerTypes(PluginRegistrar& registrar) {
+  GDALAllRegister();  // once, here: it is not safe to call while sources open on several workers
+  registrar.add(declaration());
+}
 
 }  // namespace
 }  // namespace strata::gdal

@@ -7,15 +7,34 @@ struct SurfacePoint {
   vec2 lonlatDy;  // the same along y
 };
 
+#ifdef STRATA_VERTEX_STAGE
+// Bilinear filtering done by hand on one mip level, with texel fetches. Mesa's llvmpipe gave one vertex
+// different filtered values in different invocations of a vertex shader (textureLod and textureGrad
+// alike), which cracked the displaced mesh; fetches are exact everywhere. `repeatX`: wrap across the
+// antimeridian rather than clamp.
+vec4 bilinearTexels(sampler2D image, vec2 uv, int level, bool repeatX) {
+  ivec2 size = textureSize(image, level);
+  vec2 position = uv * vec2(size) - 0.5;
+  ivec2 low = ivec2(floor(position));
+  vec2 f = position - vec2(low);
+  ivec2 high = low + 1;
+  ivec2 x = repeatX ? (ivec2(low.x, high.x) % size.x + size.x) % size.x : clamp(ivec2(low.x, high.x), 0, size.x - 1);
+  ivec2 y = clamp(ivec2(low.y, high.y), 0, size.y - 1);
+  return mix(mix(texelFetch(image, ivec2(x[0], y[0]), level), texelFetch(image, ivec2(x[1], y[0]), level), f.x),
+             mix(texelFetch(image, ivec2(x[0], y[1]), level), texelFetch(image, ivec2(x[1], y[1]), level), f.x), f.y);
+}
+#endif
+
 // Samples `image` at `uv` over a footprint given as texture-coordinate steps along x and y. Fragment
-// stages filter anisotropically (textureGrad). Vertex stages (heights for geometry) pick the level of
-// the longer step and filter trilinearly: Mesa's llvmpipe returned non-finite values from textureGrad in
-// vertex shaders, which tore holes in the displaced surface.
-vec4 sampleFootprint(sampler2D image, vec2 uv, vec2 stepX, vec2 stepY) {
+// stages filter anisotropically (textureGrad); vertex stages (heights for geometry) filter trilinearly by
+// hand at the level of the longer step.
+vec4 sampleFootprint(sampler2D image, vec2 uv, vec2 stepX, vec2 stepY, bool repeatX) {
 #ifdef STRATA_VERTEX_STAGE
   vec2 size = vec2(textureSize(image, 0));
-  float longest = max(length(stepX * size), length(stepY * size));
-  return textureLod(image, uv, max(log2(longest), 0.0));
+  float lod = clamp(log2(max(length(stepX * size), length(stepY * size))), 0.0, float(textureQueryLevels(image) - 1));
+  int level = int(floor(lod));
+  return mix(bilinearTexels(image, uv, level, repeatX),
+             bilinearTexels(image, uv, min(level + 1, textureQueryLevels(image) - 1), repeatX), fract(lod));
 #else
   return textureGrad(image, uv, stepX, stepY);
 #endif

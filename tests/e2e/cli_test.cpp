@@ -128,7 +128,8 @@ TEST_F(StrataCommandTest, RenderDrawsTheDemoEarthAgainstBlackSpace) {
 
 TEST_F(StrataCommandTest, RenderDrapesImageryWithBothOceanAndLandColours) {
   const fs::path png = file("demo.png");
-  ASSERT_EQ(run({"render", "pipelines/demo.yaml", "--size", "320x180", "-o", png.string()}).exitCode, 0);
+  const CommandResult result = run({"render", "pipelines/demo.yaml", "--size", "320x180", "-o", png.string()});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
   const Image image = readImage(png);
   // A flat surface would shade to greys; the Blue Marble seen over Africa shows blue ocean and tan land,
   // each on about 40% of the globe on llvmpipe.
@@ -255,6 +256,22 @@ TEST_F(StrataCommandTest, OverrideOutOfRangeNamesTheSetOption) {
   EXPECT_TRUE(contains(result.err, "altitude")) << result.err;
   EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
   EXPECT_FALSE(fs::exists(file("x.png")));
+}
+
+TEST_F(StrataCommandTest, CommandLineMistakesExitWithOne) {
+  const CommandResult missing = run({"render", "does-not-exist.yaml"});
+  EXPECT_EQ(missing.exitCode, 1) << missing.err;
+  EXPECT_TRUE(contains(missing.err, "does-not-exist.yaml")) << missing.err;
+  const CommandResult size = run({"render", "pipelines/demo.yaml", "--size", "12"});
+  EXPECT_EQ(size.exitCode, 1) << size.err;
+  EXPECT_TRUE(contains(size.err, "--size")) << size.err;
+}
+
+TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
+  const CommandResult result = run({"--help"});
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  for (const char* command : {"render", "view", "plugins", "info"})
+    EXPECT_TRUE(contains(result.out, command)) << "no " << command << " in:\n" << result.out;
 }
 
 // --- plugins and info -----------------------------------------------------------------------------------

@@ -22,8 +22,20 @@ std::vector<unsigned char> readPixels(const Framebuffer& framebuffer) {
   return topDown;
 }
 
+namespace {
+
+// GDAL's last error without its trailing newline.
+std::string lastGdalError() {
+  std::string message = CPLGetLastErrorMsg();
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  return message;
+}
+
+}  // namespace
+
 void writePng(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {
-  GDALAllRegister();
+  static const bool registered = (GDALAllRegister(), true);  // once, even with several threads writing
+  (void)registered;
   GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
   GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
   SourceLocation where{file.string()};
@@ -31,14 +43,16 @@ void writePng(const std::filesystem::path& file, int width, int height, const st
   std::unique_ptr<GDALDataset> image(memory->Create("", width, height, 4, GDT_Byte, nullptr));
   CPLErr status = image->RasterIO(GF_Write, 0, 0, width, height, const_cast<unsigned char*>(rgba.data()), width,
                                   height, GDT_Byte, 4, nullptr, 4, 4 * width, 1);
-  if (status != CE_None) throw Error(where, "could not stage the image for writing: " + std::string(CPLGetLastErrorMsg()));
+  if (status != CE_None) throw Error(where, "could not stage the image for writing: " + lastGdalError());
   std::error_code ignored;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ignored);
   CPLErrorReset();
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side-car beside the PNG
+  CPLPushErrorHandler(CPLQuietErrorHandler);                 // the failure is reported once, below
   std::unique_ptr<GDALDataset> written(png->CreateCopy(file.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+  CPLPopErrorHandler();
   if (!written)
-    throw Error(where, "cannot write the image: " + std::string(CPLGetLastErrorMsg()),
+    throw Error(where, "cannot write the image: " + lastGdalError(),
                 "choose an output path in a directory you can write to");
   written.reset();
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);

@@ -1,3 +1,5 @@
+#include <string_view>
+
 #include <glm/gtc/constants.hpp>
 
 #include <strata/gl/shader_program.hpp>
@@ -21,6 +23,14 @@ RasterImage halved(const RasterImage& image) {
             out.texels[(std::size_t(y) * out.width + x) * image.channels + c] +=
                 share * image.texels[(std::size_t(y * spanY + dy) * image.width + x * spanX + dx) * image.channels + c];
   return out;
+}
+
+// Whether the current context filters anisotropically without artefacts. Mesa's llvmpipe (22.3) returned
+// near-white texels for scattered 2x2 pixel quads with it on; isotropic filtering there is only blurrier.
+bool anisotropicFilteringWorks() {
+  const bool offered = epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic");
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return offered && !(renderer && std::string_view(renderer).starts_with("llvmpipe"));
 }
 
 }  // namespace
@@ -47,8 +57,7 @@ void RasterLayer::upload(const RasterImage& image) {
   // A raster that goes all the way round wraps across the antimeridian when filtered.
   glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, image.extent.global() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
   // Equirectangular texels stretch toward the poles; anisotropic filtering keeps them sharp there.
-  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))
-    glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
+  if (anisotropicFilteringWorks()) glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
   extent_ = image.extent;
 }
 
@@ -63,11 +72,12 @@ std::string RasterLayer::glsl() const {
          "uniform sampler2D " + p + "_texture;\n"
          "uniform vec4 " + p + "_extent;\n"
          "uniform vec2 " + p + "_scaleOffset;\n"
+         "uniform bool " + p + "_repeatX;\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec3 uv = equirectangularCoordinates(p.lonlat, " + p + "_extent);\n"
          "  if (uv.z == 0.0) return vec4(0.0);\n"
          "  vec4 t = sampleFootprint(" + p + "_texture, uv.xy, equirectangularGradient(p.lonlatDx, " + p + "_extent),\n"
-         "                           equirectangularGradient(p.lonlatDy, " + p + "_extent));\n"
+         "                           equirectangularGradient(p.lonlatDy, " + p + "_extent), " + p + "_repeatX);\n"
          "  if (" + std::string(colour ? "t.a" : "t.g") + " <= 0.0) return vec4(0.0);\n"
          "  return " + value + ";\n"
          "}\n";
@@ -78,6 +88,7 @@ void RasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   units.bind(program, prefix_ + "_texture", texture_.id());
   program.set(prefix_ + "_extent", glm::vec4(glm::dvec4(extent_.west, extent_.south, extent_.east, extent_.north) * degree));
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
+  program.set(prefix_ + "_repeatX", extent_.global() ? 1 : 0);
 }
 
 }  // namespace strata
