@@ -217,15 +217,15 @@ TEST_F(StrataCommandTest, ColourLayerAsHeightNamesBothKinds) {
                                                 "    type: source.gdal\n"
                                                 "    path: /usr/share/xplanet/images/earth.jpg\n"
                                                 "    kind: color\n"
-                                                "  globe:\n"  // line 7
+                                                "  globe:\n"
                                                 "    type: geometry.icosahedral\n"
-                                                "    height: imagery\n"
+                                                "    height: imagery\n"  // line 9
                                                 "  frame:\n"
                                                 "    type: output.image\n"
                                                 "    geometry: globe\n");
-  // Layer kinds are known only once the nodes are made, so the message is at the node, not at its input.
+  // Layer kinds are known only once the nodes are made; the message points at the input that names it.
   const CommandResult result = renderTiny(pipeline);
-  expectRejected(result, pipeline, 7, 3, {"height", "color", "imagery"});
+  expectRejected(result, pipeline, 9, 13, {"height", "color", "imagery"});
 }
 
 TEST_F(StrataCommandTest, CycleOfInputsIsShownAsAPath) {

@@ -29,11 +29,12 @@ void checkInputKinds(const NodeDescription& node, const NodeTypeDeclaration& typ
     for (std::size_t i = 0; i < upstream.size(); ++i) {
       const Layer* layer = upstream[i]->layer();
       const std::string& upstreamId = node.inputs.at(portName)[i];
+      const SourceLocation& where = node.inputLocations.at(portName)[i];
       if (!layer)
-        throw Error(node.where, "input '" + portName + "' refers to '" + upstreamId + "', which offers no layer",
+        throw Error(where, "input '" + portName + "' refers to '" + upstreamId + "', which offers no layer",
                     "connect a source or compositor node to '" + portName + "'");
       if (!accepts(*port, layer->kind()))
-        throw Error(node.where,
+        throw Error(where,
                     "input '" + portName + "' takes a " + kindList(port->kinds) + " layer, but '" + upstreamId +
                         "' is a " + toString(layer->kind()) + " layer",
                     "connect a " + kindList(port->kinds) + " layer, or change '" + upstreamId + "' (its `kind`)");

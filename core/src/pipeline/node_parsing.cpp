@@ -104,11 +104,15 @@ std::vector<YAML::Node> referenceValues(const PortDeclaration& port, const YAML:
 
 void readInput(const PortDeclaration& port, const YAML::Node& value, ParsedNode& node, const SourceMap& source) {
   std::vector<std::string> ids;
+  std::vector<SourceLocation> locations;
   for (const auto& item : referenceValues(port, value, node, source)) {
     ids.push_back(item.Scalar());
+    locations.push_back(source.at(item, node.description.id));
     node.references.push_back({port.name, item.Scalar(), item});
   }
-  if (!ids.empty()) node.description.inputs[port.name] = std::move(ids);  // an empty list connects nothing
+  if (ids.empty()) return;  // an empty list connects nothing
+  node.description.inputs[port.name] = std::move(ids);
+  node.description.inputLocations[port.name] = std::move(locations);
 }
 
 void readEntries(ParsedNode& node, const NodeContext& context) {

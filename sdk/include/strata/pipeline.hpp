@@ -20,6 +20,7 @@ struct NodeDescription {
   SourceLocation where;  // the node's key
   ParameterSet parameters;  // every declared parameter, defaults filled in
   std::map<std::string, std::vector<std::string>> inputs;  // port name -> ids of upstream nodes
+  std::map<std::string, std::vector<SourceLocation>> inputLocations;  // where each of those ids is written
 };
 
 // A validated pipeline: a body, a camera and an acyclic graph of nodes whose types are registered.
