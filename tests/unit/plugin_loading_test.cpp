@@ -1,0 +1,91 @@
+// Plugin modules: the built-in ones load and register their types; modules built for another plugin ABI
+// version, or without the entry point, are refused with a message that names the file and the fix.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <strata/node.hpp>
+#include <strata/plugin_registry.hpp>
+
+namespace strata {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string errorMessage(const std::function<void()>& action) {
+  try {
+    action();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "(no error)";
+}
+
+NodeTypeDeclaration typeNamed(const std::string& name, const std::string& summary) {
+  NodeTypeDeclaration type;
+  type.type = name;
+  type.summary = summary;
+  type.output = PortType::Layer;
+  type.create = [](const NodeSetup&) { return std::unique_ptr<Node>(); };
+  return type;
+}
+
+TEST(PluginLoading, BuiltInModulesRegisterTheirTypes) {
+  PluginRegistry registry;
+  registry.loadDirectories({STRATA_TEST_PLUGIN_DIR});
+  for (const char* type : {"source.gdal", "geometry.icosahedral", "output.image"})
+    EXPECT_NE(registry.find(type), nullptr) << type;
+  ASSERT_EQ(registry.modules().size(), 3u);
+  EXPECT_EQ(registry.modules()[0].name, "geometry-icosahedral");  // files load in name order
+}
+
+TEST(PluginLoading, AnotherAbiVersionIsRefusedNamingBothVersions) {
+  PluginRegistry registry;
+  const std::string message = errorMessage([&] { registry.loadModule(STRATA_WRONG_ABI_PLUGIN); });
+  EXPECT_NE(message.find(STRATA_WRONG_ABI_PLUGIN), std::string::npos) << message;
+  EXPECT_NE(message.find("ABI version " + std::to_string(kPluginAbiVersion + 1)), std::string::npos) << message;
+  EXPECT_NE(message.find("ABI version " + std::to_string(kPluginAbiVersion)), std::string::npos) << message;
+  EXPECT_NE(message.find("rebuild the plugin"), std::string::npos) << message;
+  EXPECT_TRUE(registry.modules().empty());
+}
+
+TEST(PluginLoading, ModuleWithoutEntryPointIsRefused) {
+  PluginRegistry registry;
+  const std::string message = errorMessage([&] { registry.loadModule(STRATA_NO_ENTRY_PLUGIN); });
+  EXPECT_NE(message.find("not a Strata plugin"), std::string::npos) << message;
+  EXPECT_NE(message.find("STRATA_PLUGIN("), std::string::npos) << message;
+}
+
+TEST(PluginLoading, FileThatIsNoSharedObjectIsRefused) {
+  const fs::path file = fs::temp_directory_path() / "strata-not-a-library.so";
+  std::ofstream(file) << "plain text";
+  PluginRegistry registry;
+  const std::string message = errorMessage([&] { registry.loadModule(file); });
+  fs::remove(file);
+  EXPECT_NE(message.find("cannot load plugin"), std::string::npos) << message;
+  EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+}
+
+TEST(PluginLoading, MissingDirectoriesAreSkipped) {
+  PluginRegistry registry;
+  registry.loadDirectories({"/nonexistent/strata/plugins", STRATA_TEST_PLUGIN_DIR});
+  EXPECT_NE(registry.find("source.gdal"), nullptr);
+}
+
+TEST(PluginRegistry, TheFirstRegistrationOfATypeWins) {
+  PluginRegistry registry;
+  registry.add(typeNamed("source.same", "first"));
+  registry.add(typeNamed("source.same", "second"));
+  ASSERT_NE(registry.find("source.same"), nullptr);
+  EXPECT_EQ(registry.find("source.same")->summary, "first");
+}
+
+TEST(PluginRegistry, MalformedTypeNameIsRefused) {
+  PluginRegistry registry;
+  const std::string message = errorMessage([&] { registry.add(typeNamed("nodot", "")); });
+  EXPECT_NE(message.find("category.name"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace strata
