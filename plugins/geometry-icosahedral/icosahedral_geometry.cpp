@@ -56,7 +56,6 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
   void render(const FrameState& frame) override;
 
-  Layer* layer() override { return nullptr; }
   SurfaceGeometry* geometry() override { return this; }
   const Framebuffer& gbuffer() const override { return gbuffer_; }
 

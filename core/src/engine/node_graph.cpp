@@ -45,8 +45,7 @@ void checkInputKinds(const NodeDescription& node, const NodeTypeDeclaration& typ
 }  // namespace
 
 NodeGraph::NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, WorkerPool& workers,
-                     GpuContext& gpu)
-    : pipeline_(&pipeline) {
+                     GpuContext& gpu) {
   make(pipeline, registry);
   open(workers);
   createResources(gpu);

@@ -32,7 +32,6 @@ class NodeGraph {
   void open(WorkerPool& workers);
   void createResources(GpuContext& gpu);
 
-  const Pipeline* pipeline_;
   std::vector<Entry> entries_;
   FrameOutput* output_ = nullptr;
 };
