@@ -35,6 +35,7 @@ class ImageOutput : public Node, public FrameOutput {
                                gpu.shaders->expand("output/composite.frag",
                                                    {{"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
                                                     {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+    triangle_ = std::make_unique<FullscreenTriangle>();
   }
 
   void render(const FrameState& frame) override {
@@ -51,7 +52,7 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
-    drawFullscreenTriangle();
+    triangle_->draw();
   }
 
   FrameOutput* output() override { return this; }
@@ -76,6 +77,7 @@ class ImageOutput : public Node, public FrameOutput {
   ParameterSet parameters_;
   std::vector<const Layer*> surface_;
   ShaderProgram program_;
+  std::unique_ptr<FullscreenTriangle> triangle_;  // made with the GL resources, not at construction
   Framebuffer frame_;
 };
 

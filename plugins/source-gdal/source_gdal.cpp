@@ -15,22 +15,22 @@ namespace {
 class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
-      : setup_(setup), kind_(kindOf(setup)), layer_(setup.id, kind_) {
+      : parameters_(setup.parameters), kind_(kindOf(setup)), layer_(setup.id, kind_) {
     layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
   }
 
   void open() override {
-    const SourceLocation where = setup_.parameters.where("path");
-    const std::string path = setup_.parameters.path("path").string();
+    const SourceLocation where = parameters_.where("path");
+    const std::string path = parameters_.path("path").string();
     CPLErrorReset();
     std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     if (!dataset)
       throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
                   "check the path, and that `gdalinfo " + path + "` reads it");
-    const std::vector<double>& extent = setup_.parameters.reals("extent");
+    const std::vector<double>& extent = parameters_.reals("extent");
     image_ = readRaster(*dataset, kind_, where);
     image_.extent = extent.empty() ? extentOf(*dataset, where)
-                                   : extentFromParameter(extent, setup_.parameters.where("extent"));
+                                   : extentFromParameter(extent, parameters_.where("extent"));
   }
 
   void createResources(GpuContext&) override {
@@ -47,7 +47,7 @@ class GdalSource : public Node {
     return kind;
   }
 
-  NodeSetup setup_;
+  ParameterSet parameters_;
   LayerKind kind_;
   RasterLayer layer_;
   RasterImage image_;

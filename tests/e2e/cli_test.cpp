@@ -64,6 +64,12 @@ bool hasLineStartingWith(const std::string& text, const std::string& prefix) {
   return !lineStartingWith(text, prefix).empty();
 }
 
+// Each of `prefixes` begins some line of `text` (listings of types, parameters and libraries).
+void expectLinesStartingWith(const std::string& text, std::initializer_list<const char*> prefixes) {
+  for (const char* prefix : prefixes)
+    EXPECT_TRUE(hasLineStartingWith(text, prefix)) << "no line starting '" << prefix << "' in:\n" << text;
+}
+
 // The number of bands GDAL finds in `file` (0 when it cannot open it): a PNG frame is RGB or RGBA.
 int bandCount(const fs::path& file) {
   GDALAllRegister();
@@ -279,16 +285,14 @@ TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
 TEST_F(StrataCommandTest, PluginsListsTheBuiltInTypes) {
   const CommandResult result = run({"plugins"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  for (const char* type : {"source.gdal ", "geometry.icosahedral ", "output.image "})
-    EXPECT_TRUE(hasLineStartingWith(result.out, type)) << "no " << type << "in:\n" << result.out;
+  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.icosahedral ", "output.image "});
 }
 
 TEST_F(StrataCommandTest, PluginsDescribesTheParametersOfAType) {
   const CommandResult result = run({"plugins", "--describe", "source.gdal"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(result.out.starts_with("source.gdal (source)")) << result.out;
-  for (const char* parameter : {"  path ", "  kind ", "  scale "})
-    EXPECT_TRUE(hasLineStartingWith(result.out, parameter)) << "no line '" << parameter << "' in:\n" << result.out;
+  expectLinesStartingWith(result.out, {"  path ", "  kind ", "  scale "});
 }
 
 TEST_F(StrataCommandTest, PluginsRefusesToDescribeAnUnknownType) {
@@ -301,8 +305,7 @@ TEST_F(StrataCommandTest, PluginsRefusesToDescribeAnUnknownType) {
 TEST_F(StrataCommandTest, InfoNamesTheLibrariesAndTheRenderer) {
   const CommandResult result = run({"info"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  for (const char* library : {"GDAL ", "PROJ ", "OpenColorIO ", "yaml-cpp "})
-    EXPECT_TRUE(hasLineStartingWith(result.out, library)) << "no " << library << "line in:\n" << result.out;
+  expectLinesStartingWith(result.out, {"GDAL ", "PROJ ", "OpenColorIO ", "yaml-cpp "});
   // "renderer" and then the GL_RENDERER string, which a working context never leaves empty.
   const std::string renderer = lineStartingWith(result.out, "renderer ");
   EXPECT_NE(renderer.find_first_not_of(' ', std::string("renderer ").size()), std::string::npos) << result.out;

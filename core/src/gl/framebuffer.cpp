@@ -49,15 +49,14 @@ void Framebuffer::bind() const {
   glViewport(0, 0, width_, height_);
 }
 
-void drawFullscreenTriangle() {
-  // Core profile needs a bound vertex array even when the vertex shader makes its own positions. Vertex
-  // arrays belong to one context, so it is made here rather than kept.
-  GLuint emptyVertexArray = 0;
-  glCreateVertexArrays(1, &emptyVertexArray);
-  glBindVertexArray(emptyVertexArray);
+FullscreenTriangle::FullscreenTriangle() { glCreateVertexArrays(1, &vertexArray_); }
+
+FullscreenTriangle::~FullscreenTriangle() { glDeleteVertexArrays(1, &vertexArray_); }
+
+void FullscreenTriangle::draw() const {
+  glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glDeleteVertexArrays(1, &emptyVertexArray);
 }
 
 }  // namespace strata

@@ -50,12 +50,12 @@ void writePng(const std::filesystem::path& file, int width, int height, const st
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side-car beside the PNG
   CPLPushErrorHandler(CPLQuietErrorHandler);                 // the failure is reported once, below
   std::unique_ptr<GDALDataset> written(png->CreateCopy(file.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+  written.reset();  // closing flushes the file
   CPLPopErrorHandler();
-  if (!written)
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
+  if (CPLGetLastErrorType() >= CE_Failure || !std::filesystem::exists(file))
     throw Error(where, "cannot write the image: " + lastGdalError(),
                 "choose an output path in a directory you can write to");
-  written.reset();
-  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
 }
 
 }  // namespace strata

@@ -106,11 +106,11 @@ void ShaderProgram::set(const std::string& u, const glm::mat4& v) const {
   glProgramUniformMatrix4fv(program_, location(u), 1, GL_FALSE, glm::value_ptr(v));
 }
 
+TextureUnits::TextureUnits() { glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &available_); }
+
 void TextureUnits::bind(ShaderProgram& program, const std::string& sampler, GLuint texture) {
-  GLint units = 0;
-  glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &units);
-  if (next_ >= units)
-    throw std::runtime_error("more textures than the " + std::to_string(units) +
+  if (next_ >= available_)
+    throw std::runtime_error("more textures than the " + std::to_string(available_) +
                              " texture units this GPU has; the page-cache atlas lifts this limit");
   glBindTextureUnit(static_cast<GLuint>(next_), texture);
   program.set(sampler, next_);

@@ -17,7 +17,8 @@ class PluginRegistry : public PluginRegistrar {
     std::string version;
   };
 
-  // Adds a node type; throws strata::Error if the type is already registered or malformed.
+  // Adds a node type; a type registered already keeps its first declaration (so directories earlier on
+  // the plugin path override later ones). Throws strata::Error if the declaration is malformed.
   void add(NodeTypeDeclaration declaration) override;
   // Loads one plugin module. Throws strata::Error naming the file when it cannot be opened, has no entry
   // point, or was built for another plugin ABI version.

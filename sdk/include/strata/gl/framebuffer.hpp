@@ -33,7 +33,20 @@ class Framebuffer {
   Texture depth_;
 };
 
-// Draws one triangle that covers the viewport; the vertex shader "strata/fullscreen.vert" places it.
-void drawFullscreenTriangle();
+// One triangle that covers the viewport, for screen passes; the vertex shader "strata/fullscreen.vert"
+// places its corners. Make it on the GL thread with the context that draws it (vertex arrays are not
+// shared between contexts).
+class FullscreenTriangle {
+ public:
+  FullscreenTriangle();
+  ~FullscreenTriangle();
+  FullscreenTriangle(const FullscreenTriangle&) = delete;
+  FullscreenTriangle& operator=(const FullscreenTriangle&) = delete;
+
+  void draw() const;
+
+ private:
+  GLuint vertexArray_ = 0;  // empty: core profile needs one bound even when no attribute is read
+};
 
 }  // namespace strata

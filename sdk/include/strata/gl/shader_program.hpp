@@ -45,11 +45,13 @@ class ShaderProgram {
 // Hands out texture units while a program's inputs are bound.
 class TextureUnits {
  public:
+  TextureUnits();  // on the GL thread
   // Binds `texture` to the next free unit and points the sampler uniform at it.
   void bind(ShaderProgram& program, const std::string& sampler, GLuint texture);
   int used() const { return next_; }
 
  private:
+  int available_ = 0;
   int next_ = 0;
 };
 
