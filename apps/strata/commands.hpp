@@ -9,5 +9,6 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 void addViewCommand(CLI::App& app, int& exitCode);
 void addPluginsCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
+void addTileCommand(CLI::App& app, int& exitCode);
 
 }  // namespace strata::cli

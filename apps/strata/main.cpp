@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   strata::cli::addRenderCommand(app, exitCode);
   strata::cli::addViewCommand(app, exitCode);
   strata::cli::addPluginsCommand(app, exitCode);
+  strata::cli::addTileCommand(app, exitCode);
   strata::cli::addInfoCommand(app, exitCode);
   try {
     app.parse(argc, argv);

@@ -13,6 +13,12 @@ namespace {
 void list(const PluginRegistry& registry) {
   for (const NodeTypeDeclaration* type : registry.types())
     std::printf("%-24s %-10s %s\n", type->type.c_str(), toString(type->category), type->summary.c_str());
+  std::printf("\nprojections (recognised from a raster's CRS by its +proj= name):\n");
+  for (const ProjectionDeclaration* projection : registry.projections()) {
+    std::string projNames;
+    for (const std::string& name : projection->projNames) projNames += (projNames.empty() ? "" : ",") + name;
+    std::printf("%-24s %s (+proj=%s)\n", projection->type.c_str(), projection->summary.c_str(), projNames.c_str());
+  }
   std::printf("\nmodules:\n");
   for (const auto& module : registry.modules())
     std::printf("  %s %s  %s\n", module.name.c_str(), module.version.c_str(), module.file.c_str());

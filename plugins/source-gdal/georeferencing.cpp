@@ -2,46 +2,28 @@
 
 #include <ogr_spatialref.h>
 
-#include <array>
 #include <cmath>
+
+#include <strata/crs.hpp>
 
 namespace strata::gdal {
 namespace {
 
 std::string describe(GDALDataset& dataset) { return dataset.GetDescription(); }
 
-GeographicExtent fromGeotransform(GDALDataset& dataset, const std::array<double, 6>& t, const SourceLocation& where) {
-  if (t[2] != 0.0 || t[4] != 0.0)
-    throw Error(where, "'" + describe(dataset) + "' is a rotated grid, which is not supported",
-                "warp it to a north-up grid: gdalwarp -t_srs EPSG:4326 in.tif out.tif");
-  const double width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
-  GeographicExtent extent{t[0], t[3] + t[5] * height, t[0] + t[1] * width, t[3]};
-  if (t[5] > 0) std::swap(extent.south, extent.north);
-  // Grids registered at cell centres (EGM96's) reach half a cell past the poles; that is kept, so that
-  // each cell centre samples at its own latitude.
-  return extent;
+bool isGeographic(const Projection& projection) {
+  return ProjParameters::parse(projection.projString()).name() == "longlat";
 }
 
-}  // namespace
-
-GeographicExtent extentOf(GDALDataset& dataset, const SourceLocation& where) {
-  std::array<double, 6> transform{};
-  const bool georeferenced = dataset.GetGeoTransform(transform.data()) == CE_None;
-  const OGRSpatialReference* crs = dataset.GetSpatialRef();
-  if (georeferenced && crs && !crs->IsGeographic())
-    throw Error(where,
-                "'" + describe(dataset) + "' is in the projected CRS '" + std::string(crs->GetName()) +
-                    "'; source.gdal reads longitude/latitude rasters until the projections issue lands",
-                "reproject it: gdalwarp -t_srs '+proj=longlat +R=<radius>' in.tif out.tif, or give `extent`");
-  if (georeferenced) return fromGeotransform(dataset, transform, where);
-  if (dataset.GetRasterXSize() == 2 * dataset.GetRasterYSize()) return GeographicExtent{};
-  throw Error(where,
-              "'" + describe(dataset) + "' has no georeferencing and is not 2:1, so its extent is unknown",
-              "give `extent: [west, south, east, north]` in degrees");
+std::unique_ptr<Projection> projectionOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+                                         const GeoreferenceOptions& options) {
+  if (!options.crs.empty()) return projectionOfCrs(plugins, options.crs, options.crsWhere);
+  if (const OGRSpatialReference* crs = dataset.GetSpatialRef()) return projectionOfCrs(plugins, *crs, options.fileWhere);
+  return projectionOfCrs(plugins, "+proj=longlat +R=" + std::to_string(body.radius), options.fileWhere);
 }
 
-GeographicExtent extentFromParameter(const std::vector<double>& v, const SourceLocation& where) {
-  GeographicExtent extent{v[0], v[1], v[2], v[3]};
+GeographicExtent checkedExtent(const std::vector<double>& v, const SourceLocation& where) {
+  const GeographicExtent extent{v[0], v[1], v[2], v[3]};
   if (!(extent.west < extent.east && extent.east - extent.west <= 360.0))
     throw Error(where, "extent west must be less than east, at most 360 degrees apart",
                 "write [west, south, east, north]; across the antimeridian let east exceed 180");
@@ -49,6 +31,48 @@ GeographicExtent extentFromParameter(const std::vector<double>& v, const SourceL
     throw Error(where, "extent south must be less than north, both within [-90, 90]",
                 "write [west, south, east, north] in degrees");
   return extent;
+}
+
+std::array<double, 6> geotransformOf(GDALDataset& dataset, const Projection& projection,
+                                     const GeoreferenceOptions& options) {
+  const bool geographic = isGeographic(projection);
+  if (!options.extent.empty()) {
+    if (!geographic)
+      throw Error(options.extentWhere, "`extent` is in degrees and places longitude/latitude rasters only",
+                  "drop `extent` and georeference the file in its CRS: gdal_translate -a_ullr ulx uly lrx lry");
+    const GeographicExtent extent = checkedExtent(options.extent, options.extentWhere);
+    return geographicGeotransform(extent, dataset.GetRasterXSize(), dataset.GetRasterYSize());
+  }
+  std::array<double, 6> t{};
+  if (dataset.GetGeoTransform(t.data()) == CE_None) {
+    if (t[2] != 0.0 || t[4] != 0.0)
+      throw Error(options.fileWhere, "'" + describe(dataset) + "' is a rotated grid, which is not supported",
+                  "warp it to a north-up grid: gdalwarp in.tif out.tif (or strata tile)");
+    return t;
+  }
+  if (geographic && dataset.GetRasterXSize() == 2 * dataset.GetRasterYSize())
+    return geographicGeotransform({}, dataset.GetRasterXSize(), dataset.GetRasterYSize());
+  throw Error(options.fileWhere,
+              "'" + describe(dataset) + "' has no geotransform" +
+                  (geographic ? " and is not 2:1, so its extent is unknown" : ", so its map area is unknown"),
+              geographic ? "give `extent: [west, south, east, north]` in degrees"
+                         : "georeference it: gdal_translate -a_ullr ulx uly lrx lry in.tif out.tif");
+}
+
+}  // namespace
+
+RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+                                  const GeoreferenceOptions& options) {
+  std::unique_ptr<Projection> projection = projectionOf(dataset, plugins, body, options);
+  const std::array<double, 6> geotransform = geotransformOf(dataset, *projection, options);
+  return makeGeoreference(std::move(projection), geotransform, dataset.GetRasterXSize());
+}
+
+std::array<double, 6> resampledGeotransform(std::array<double, 6> t, int fromWidth, int fromHeight, int width,
+                                            int height) {
+  t[1] *= double(fromWidth) / width;
+  t[5] *= double(fromHeight) / height;
+  return t;
 }
 
 }  // namespace strata::gdal

@@ -1,20 +1,35 @@
 #pragma once
-#include <optional>
+#include <string>
+#include <vector>
 
 #include <gdal_priv.h>
 
+#include <strata/body.hpp>
 #include <strata/error.hpp>
+#include <strata/plugin_registry.hpp>
 #include <strata/raster_layer.hpp>
 
 namespace strata::gdal {
 
-// The geographic extent of `dataset` from its georeferencing: its geotransform in a geographic
-// (longitude, latitude) CRS on any body. Throws strata::Error at `where` for a projected CRS (not yet
-// supported), rotated grids, or a raster without georeferencing that is not 2:1 (then `extent` must be
-// given). A 2:1 raster without georeferencing is taken as global equirectangular.
-GeographicExtent extentOf(GDALDataset& dataset, const SourceLocation& where);
+// What the pipeline says about where a raster lies, beside what the file says.
+struct GeoreferenceOptions {
+  std::string crs;             // replaces the file's CRS when not empty (WKT, PROJ string, EPSG:code)
+  SourceLocation crsWhere;
+  std::vector<double> extent;  // [west, south, east, north] in degrees for a lon/lat raster, or empty
+  SourceLocation extentWhere;
+  SourceLocation fileWhere;    // the `path` parameter, for problems of the file itself
+};
 
-// Checks an extent the pipeline gives: [west, south, east, north] in degrees.
-GeographicExtent extentFromParameter(const std::vector<double>& values, const SourceLocation& where);
+// The projection and geotransform of `dataset`, a raster of `dataset`'s size: its CRS recognised as one of
+// the registered projections (the options' CRS when given) and its north-up geotransform (or the
+// options' extent). A raster with neither CRS nor geotransform is longitude/latitude, global when 2:1.
+// Throws strata::Error naming the parameter or the file, with a fix, for what cannot be placed.
+RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+                                  const GeoreferenceOptions& options);
+
+// The geotransform for the same map area read at `width` x `height` texels (rasters are read at most
+// kLongestSide texels across).
+std::array<double, 6> resampledGeotransform(std::array<double, 6> geotransform, int fromWidth, int fromHeight,
+                                            int width, int height);
 
 }  // namespace strata::gdal

@@ -62,7 +62,7 @@ RasterImage readColour(GDALDataset& dataset, ReadSize size, const SourceLocation
   std::array<std::vector<float>, 3> rgb;
   for (int c = 0; c < 3; ++c) rgb[c] = readBand(*dataset.GetRasterBand(bands >= 3 ? c + 1 : 1), size, where);
   std::vector<float> coverage = readCoverage(first, size, where);
-  RasterImage image{size.width, size.height, 4, {}, {}};
+  RasterImage image{size.width, size.height, 4, {}};
   image.texels.resize(coverage.size() * 4);
   for (std::size_t i = 0; i < coverage.size(); ++i) {
     for (int c = 0; c < 3; ++c) image.texels[i * 4 + c] = srgbToLinear(rgb[c][i] / full) * coverage[i];
@@ -75,7 +75,7 @@ RasterImage readValues(GDALDataset& dataset, ReadSize size, const SourceLocation
   GDALRasterBand& band = *dataset.GetRasterBand(1);
   std::vector<float> values = readBand(band, size, where);
   std::vector<float> coverage = readCoverage(band, size, where);
-  RasterImage image{size.width, size.height, 2, {}, {}};
+  RasterImage image{size.width, size.height, 2, {}};
   image.texels.resize(values.size() * 2);
   for (std::size_t i = 0; i < values.size(); ++i) {
     const float c = std::isfinite(values[i]) ? coverage[i] : 0.0f;
@@ -85,12 +85,33 @@ RasterImage readValues(GDALDataset& dataset, ReadSize size, const SourceLocation
   return image;
 }
 
+// A nodata value that no sample of the band's type can hold masks nothing: the file says "these texels
+// are missing" in a way that cannot be honoured, almost always a mistake made when it was written.
+void checkNodata(GDALRasterBand& band, const SourceLocation& where) {
+  int declared = 0;
+  const double nodata = band.GetNoDataValue(&declared);
+  const GDALDataType type = band.GetRasterDataType();
+  if (!declared || std::isnan(nodata)) return;
+  int clamped = 0, rounded = 0;  // GDAL reports whether storing the value would clamp or round it
+  GDALAdjustValueToDataType(type, nodata, &clamped, &rounded);
+  if (!clamped && !rounded) return;
+  std::array<char, 64> value{};
+  std::snprintf(value.data(), value.size(), "%.9g", nodata);
+  const std::string file = band.GetDataset() ? band.GetDataset()->GetDescription() : "";
+  throw Error(where,
+              "'" + file + "' band " + std::to_string(band.GetBand()) + " declares nodata " + value.data() + ", which no " +
+                  GDALGetDataTypeName(type) + " sample can hold, so it would mask nothing",
+              "set the value the file really uses: gdal_edit.py -a_nodata VALUE " + file +
+                  ", or remove it: gdal_edit.py -unsetnodata " + file);
+}
+
 }  // namespace
 
 RasterImage readRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where) {
   if (dataset.GetRasterCount() < 1 || dataset.GetRasterXSize() < 1 || dataset.GetRasterYSize() < 1)
     throw Error(where, "'" + std::string(dataset.GetDescription()) + "' has no raster data",
                 "point `path` at a raster (gdalinfo FILE lists its bands)");
+  for (int band = 1; band <= dataset.GetRasterCount(); ++band) checkNodata(*dataset.GetRasterBand(band), where);
   ReadSize size = readSize(dataset);
   const bool colour = kind == LayerKind::Color;
   return colour ? readColour(dataset, size, where) : readValues(dataset, size, where);

@@ -1,9 +1,11 @@
-// source.gdal: a layer from any raster GDAL opens, read whole (paging comes with the page cache).
+// source.gdal: a layer from any raster GDAL opens, in any registered projection, read whole (paging
+// comes with the page cache).
 #include <gdal_priv.h>
 
 #include <memory>
 
 #include <strata/plugin.hpp>
+#include <strata/plugin_registry.hpp>
 #include <strata/raster_layer.hpp>
 
 #include "georeferencing.hpp"
@@ -15,7 +17,8 @@ namespace {
 class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
-      : parameters_(setup.parameters), kind_(kindOf(setup)), layer_(setup.id, kind_) {
+      : parameters_(setup.parameters), plugins_(*setup.plugins), body_(*setup.body), kind_(kindOf(setup)),
+        layer_(setup.id, kind_) {
     layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
   }
 
@@ -27,14 +30,16 @@ class GdalSource : public Node {
     if (!dataset)
       throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
                   "check the path, and that `gdalinfo " + path + "` reads it");
-    const std::vector<double>& extent = parameters_.reals("extent");
+    georeference_ = georeferenceOf(*dataset, plugins_, body_,
+                                   {parameters_.string("projection"), parameters_.where("projection"),
+                                    parameters_.reals("extent"), parameters_.where("extent"), where});
     image_ = readRaster(*dataset, kind_, where);
-    image_.extent = extent.empty() ? extentOf(*dataset, where)
-                                   : extentFromParameter(extent, parameters_.where("extent"));
+    georeference_.geotransform = resampledGeotransform(georeference_.geotransform, dataset->GetRasterXSize(),
+                                                       dataset->GetRasterYSize(), image_.width, image_.height);
   }
 
   void createResources(GpuContext&) override {
-    layer_.upload(image_);
+    layer_.upload(image_, georeference_);
     image_ = {};  // the texture holds it now
   }
 
@@ -48,16 +53,19 @@ class GdalSource : public Node {
   }
 
   ParameterSet parameters_;
+  const PluginRegistry& plugins_;
+  const Body& body_;
   LayerKind kind_;
   RasterLayer layer_;
   RasterImage image_;
+  RasterGeoreference georeference_;
 };
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "source.gdal";
   type.category = NodeCategory::Source;
-  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in longitude/latitude";
+  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection";
   type.output = PortType::Layer;
   type.parameters = {
       {.name = "path", .type = ParameterType::Path, .doc = "the raster file; relative to the pipeline file"},
@@ -70,8 +78,12 @@ NodeTypeDeclaration declaration() {
        .doc = "one-channel kinds: added after scale (metres for heights)"},
       {.name = "extent", .type = ParameterType::RealList, .defaultValue = std::vector<double>{}, .minimum = -360.0,
        .maximum = 360.0, .units = "deg",
-       .doc = "[west, south, east, north]; empty: from the raster's georeferencing (a bare 2:1 raster is global)",
+       .doc = "[west, south, east, north] of a longitude/latitude raster; empty: from its geotransform (a bare 2:1 "
+              "raster is global)",
        .count = 4},
+      {.name = "projection", .type = ParameterType::String, .defaultValue = std::string(),
+       .doc = "the raster's CRS when the file's is missing or wrong: WKT, a PROJ string or EPSG:code; empty: the "
+              "file's CRS (none: longitude/latitude)"},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<GdalSource>(setup); };
   return type;

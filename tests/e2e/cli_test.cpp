@@ -3,54 +3,31 @@
 // small so that the suite stays quick on llvmpipe.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "temporary_directory.hpp"
+#include "strata_command.hpp"
 #include "test_rasters.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// What one run of the command did.
-struct CommandResult {
-  int exitCode = -1;  // a crash shows as 128 + the signal (the shell's way), -1 if the shell itself failed
-  std::string out;
-  std::string err;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Single quotes for /bin/sh; a quote inside is closed, escaped and reopened.
-std::string shellQuoted(const std::string& text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
+using strata::test::CommandResult;
+using strata::test::contains;
 using strata::test::Image;
 using strata::test::readImage;
+using strata::test::StrataCommandTest;
 
 // A pixel without its alpha, which is always opaque in a rendered frame.
 std::array<int, 3> rgb(const Image& image, int x, int y) {
   const std::array<int, 4> rgba = image.at(x, y);
   return {rgba[0], rgba[1], rgba[2]};
 }
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
 // The first line of `text` that starts with `prefix`, or "" when none does: listings print one item a line.
 std::string lineStartingWith(const std::string& text, const std::string& prefix) {
@@ -79,34 +56,6 @@ int bandCount(const fs::path& file) {
   GDALClose(dataset);
   return bands;
 }
-
-// Each test gets a scratch directory, removed with its files afterwards, and runs strata with only the
-// built-in plugins beside the binary unless it names a plugin directory: plugins found through a
-// STRATA_PLUGIN_PATH of the person running the tests must not change the results.
-class StrataCommandTest : public ::testing::Test {
- protected:
-  CommandResult run(const std::vector<std::string>& arguments, const std::string& pluginPath = {}) const {
-    const fs::path out = scratch_.path() / "stdout.txt", err = scratch_.path() / "stderr.txt";
-    const std::string environment =
-        pluginPath.empty() ? "-u STRATA_PLUGIN_PATH" : "STRATA_PLUGIN_PATH=" + shellQuoted(pluginPath);
-    std::string command =
-        "cd " + shellQuoted(STRATA_SOURCE_DIR) + " && env " + environment + " " + shellQuoted(STRATA_EXECUTABLE);
-    for (const std::string& argument : arguments) command += " " + shellQuoted(argument);
-    command += " >" + shellQuoted(out.string()) + " 2>" + shellQuoted(err.string());
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(out), readText(err)};
-  }
-
-  // Renders `pipeline` to a tiny frame in the scratch directory, for tests that expect it to be refused.
-  CommandResult renderTiny(const fs::path& pipeline, const std::string& pluginPath = {}) const {
-    return run({"render", pipeline.string(), "--size", "32x18", "-o", file("x.png").string()}, pluginPath);
-  }
-
-  fs::path file(const std::string& name) const { return scratch_.path() / name; }
-  fs::path write(const std::string& name, const std::string& text) const { return scratch_.write(name, text); }
-
-  strata::test::TemporaryDirectory scratch_;
-};
 
 // --- render: the demo pipeline ------------------------------------------------------------------------
 

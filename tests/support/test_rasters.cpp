@@ -55,6 +55,33 @@ void writeFloatRaster(const std::filesystem::path& file, int width, int height, 
     throw std::runtime_error("cannot write " + file.string());
 }
 
+double rasterFileValue(int column, int row, int band) { return (column * 7 + row * 13 + band * 101) % 251; }
+
+void writeRasterFile(const std::filesystem::path& file, const RasterFileSpec& spec) {
+  GDALAllRegister();
+  std::vector<const char*> options;
+  for (const std::string& option : spec.creationOptions) options.push_back(option.c_str());
+  options.push_back(nullptr);
+  std::unique_ptr<GDALDataset> dataset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      file.c_str(), spec.width, spec.height, spec.bands, spec.type, const_cast<char**>(options.data())));
+  OGRSpatialReference crs;
+  if (!dataset || crs.SetFromUserInput(spec.crs.c_str()) != OGRERR_NONE)
+    throw std::runtime_error("cannot create " + file.string() + " in " + spec.crs);
+  dataset->SetSpatialRef(&crs);
+  std::array<double, 6> geotransform = spec.geotransform;
+  dataset->SetGeoTransform(geotransform.data());
+  std::vector<double> row(static_cast<std::size_t>(spec.width));
+  for (int band = 1; band <= spec.bands; ++band) {
+    GDALRasterBand* raster = dataset->GetRasterBand(band);
+    if (spec.nodata) raster->SetNoDataValue(*spec.nodata);
+    for (int y = 0; y < spec.height; ++y) {
+      for (int x = 0; x < spec.width; ++x) row[static_cast<std::size_t>(x)] = rasterFileValue(x, y, band);
+      if (raster->RasterIO(GF_Write, 0, y, spec.width, 1, row.data(), spec.width, 1, GDT_Float64, 0, 0) != CE_None)
+        throw std::runtime_error("cannot write " + file.string());
+    }
+  }
+}
+
 std::array<int, 4> Image::at(int x, int y) const {
   const unsigned char* p = &rgba[(static_cast<std::size_t>(y) * width + x) * 4];
   return {p[0], p[1], p[2], p[3]};

@@ -3,7 +3,10 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
+
+#include <gdal.h>
 
 namespace strata::test {
 
@@ -21,6 +24,24 @@ void writeCheckerboard(const std::filesystem::path& file);
 // with value(column, row) per texel and an optional nodata value.
 void writeFloatRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
                       const std::function<float(int column, int row)>& value, std::optional<double> nodata = {});
+
+// A GeoTIFF of any CRS, band count and sample type, for tests of reading and tiling.
+struct RasterFileSpec {
+  std::string crs;  // anything OGRSpatialReference::SetFromUserInput reads
+  std::array<double, 6> geotransform;
+  int width = 600;
+  int height = 300;
+  int bands = 1;
+  GDALDataType type = GDT_Float32;
+  std::optional<double> nodata = 255.0;
+  std::vector<std::string> creationOptions = {};  // e.g. "TILED=YES", "COMPRESS=DEFLATE"
+};
+
+// The value the writer stores at (column, row) of band `band`: distinct per texel and band, below 251, so a
+// lossless copy is recognisable and nodata 255 never occurs in the data.
+double rasterFileValue(int column, int row, int band);
+
+void writeRasterFile(const std::filesystem::path& file, const RasterFileSpec& spec);
 
 // Reads an 8-bit PNG or other raster back as rows of RGBA, top row first.
 struct Image {

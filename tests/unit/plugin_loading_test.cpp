@@ -34,10 +34,19 @@ NodeTypeDeclaration typeNamed(const std::string& name, const std::string& summar
 TEST(PluginLoading, BuiltInModulesRegisterTheirTypes) {
   PluginRegistry registry;
   registry.loadDirectories({STRATA_TEST_PLUGIN_DIR});
-  for (const char* type : {"source.gdal", "geometry.icosahedral", "output.image"})
+  for (const char* type : {"source.gdal", "source.procedural", "geometry.icosahedral", "output.image"})
     EXPECT_NE(registry.find(type), nullptr) << type;
-  ASSERT_EQ(registry.modules().size(), 3u);
+  ASSERT_EQ(registry.modules().size(), 4u);
   EXPECT_EQ(registry.modules()[0].name, "geometry-icosahedral");  // files load in name order
+}
+
+TEST(PluginLoading, BuiltInProjectionsAreRegisteredWithTheirProjNames) {
+  PluginRegistry registry;
+  for (const char* type : {"equirectangular", "polar-stereographic", "healpix", "orthographic", "perspective"})
+    EXPECT_NE(registry.findProjection(type), nullptr) << type;
+  ASSERT_NE(registry.projectionForProjName("stere"), nullptr);
+  EXPECT_EQ(registry.projectionForProjName("stere")->type, "polar-stereographic");
+  EXPECT_EQ(registry.projectionForProjName("merc"), nullptr);
 }
 
 TEST(PluginLoading, AnotherAbiVersionIsRefusedNamingBothVersions) {

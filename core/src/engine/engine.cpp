@@ -42,6 +42,8 @@ PluginRegistry& Engine::plugins() { return impl_->registry; }
 
 void Engine::load(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
   auto pipeline = std::make_unique<Pipeline>(loadPipeline(file, overrides, impl_->registry));
+  for (const ProjectionDeclaration* projection : impl_->registry.projections())
+    for (const auto& [name, source] : projection->shaderSources) impl_->shaders.add(name, source);
   GpuContext gpu{&impl_->shaders};
   auto graph = std::make_unique<NodeGraph>(*pipeline, impl_->registry, impl_->workers, gpu);
   impl_->graph = std::move(graph);

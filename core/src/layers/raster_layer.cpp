@@ -1,6 +1,5 @@
+#include <cmath>
 #include <string_view>
-
-#include <glm/gtc/constants.hpp>
 
 #include <strata/gl/shader_program.hpp>
 #include <strata/raster_layer.hpp>
@@ -11,7 +10,7 @@ namespace {
 // The next mip level: each texel the mean of the (up to) 2x2 texels it covers. Texels carry coverage
 // (premultiplied), so the mean of values and of coverage stays consistent where nodata is mixed in.
 RasterImage halved(const RasterImage& image) {
-  RasterImage out{std::max(1, image.width / 2), std::max(1, image.height / 2), image.channels, {}, image.extent};
+  RasterImage out{std::max(1, image.width / 2), std::max(1, image.height / 2), image.channels, {}};
   out.texels.assign(std::size_t(out.width) * out.height * image.channels, 0.0f);
   const int spanX = image.width > 1 ? 2 : 1, spanY = image.height > 1 ? 2 : 1;
   const float share = 1.0f / float(spanX * spanY);
@@ -33,6 +32,14 @@ bool anisotropicFilteringWorks() {
   return offered && !(renderer && std::string_view(renderer).starts_with("llvmpipe"));
 }
 
+// Texture coordinates per GLSL map unit: u = x * s.x + s.y, v = y * s.z + s.w (see Projection::glslMapScale).
+glm::vec4 mapToTexture(const RasterGeoreference& georeference, int width, int height) {
+  const std::array<double, 6>& t = georeference.geotransform;
+  const double scale = georeference.projection->glslMapScale();
+  const double uSpan = t[1] * width, vSpan = t[5] * height;
+  return glm::vec4(glm::dvec4(scale / uSpan, -t[0] / uSpan, scale / vSpan, -t[3] / vSpan));
+}
+
 }  // namespace
 
 RasterLayer::RasterLayer(std::string nodeId, LayerKind kind) : prefix_("layer_" + glslIdentifier(nodeId)), kind_(kind) {}
@@ -42,7 +49,10 @@ void RasterLayer::setValueTransform(double scale, double offset) {
   offset_ = offset;
 }
 
-void RasterLayer::upload(const RasterImage& image) {
+void RasterLayer::upload(const RasterImage& image, RasterGeoreference georeference) {
+  georeference_ = std::move(georeference);
+  width_ = image.width;
+  height_ = image.height;
   const bool colour = image.channels == 4;
   texture_ = Texture(colour ? GL_RGBA16F : GL_RG32F, image.width, image.height, mipLevels(image.width, image.height));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -54,41 +64,60 @@ void RasterLayer::upload(const RasterImage& image) {
                         mip.texels.data());
     if (mip.width == 1 && mip.height == 1) break;
   }
-  // A raster that goes all the way round wraps across the antimeridian when filtered.
-  glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, image.extent.global() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
-  // Equirectangular texels stretch toward the poles; anisotropic filtering keeps them sharp there.
+  // A raster that goes all the way round wraps across its east/west seam when filtered.
+  glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, wrapsAround() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+  // Texels stretch where a projection is stretched (toward the poles of equirectangular maps);
+  // anisotropic filtering keeps them sharp there.
   if (anisotropicFilteringWorks()) glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
-  extent_ = image.extent;
+}
+
+bool RasterLayer::wrapsAround() const {
+  const std::optional<double> period = georeference_.projection->periodX();
+  return period && std::abs(std::abs(georeference_.geotransform[1]) * width_ - *period) <= 1e-9 * *period;
 }
 
 std::string RasterLayer::samplingFunction() const { return prefix_; }
 
 std::string RasterLayer::glsl() const {
   const std::string& p = prefix_;
+  const Projection& projection = *georeference_.projection;
   const bool colour = kind_ == LayerKind::Color || kind_ == LayerKind::Chroma || kind_ == LayerKind::Normal;
   std::string value = colour ? "vec4(t.rgb / t.a, t.a)"
                              : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
-  return "#include \"strata/projection/equirectangular.glsl\"\n"
+  return "#include \"strata/projected_raster.glsl\"\n"
+         "#include \"" + projection.glslInclude() + "\"\n"
          "uniform sampler2D " + p + "_texture;\n"
-         "uniform vec4 " + p + "_extent;\n"
+         "uniform vec4 " + p + "_projectionA;\n"
+         "uniform vec4 " + p + "_projectionB;\n"
+         "uniform vec4 " + p + "_mapToTexture;\n"
          "uniform vec2 " + p + "_scaleOffset;\n"
          "uniform bool " + p + "_repeatX;\n"
+         "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
+         "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
+         "  return vec3(m.xy * " + p + "_mapToTexture.xz + " + p + "_mapToTexture.yw, m.z);\n"
+         "}\n"
+         "vec2 " + p + "_step(vec3 at, vec2 lonlat, vec2 step) {\n"
+         "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
+         "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
+         "}\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec3 uv = equirectangularCoordinates(p.lonlat, " + p + "_extent);\n"
-         "  if (uv.z == 0.0) return vec4(0.0);\n"
-         "  vec4 t = sampleFootprint(" + p + "_texture, uv.xy, equirectangularGradient(p.lonlatDx, " + p + "_extent),\n"
-         "                           equirectangularGradient(p.lonlatDy, " + p + "_extent), " + p + "_repeatX);\n"
+         "  vec3 uv = " + p + "_coordinates(p.lonlat);\n"
+         "  if (!insideTexture(uv, " + p + "_repeatX)) return vec4(0.0);\n"
+         "  vec4 t = sampleFootprint(" + p + "_texture, uv.xy, " + p + "_step(uv, p.lonlat, p.lonlatDx),\n"
+         "                           " + p + "_step(uv, p.lonlat, p.lonlatDy), " + p + "_repeatX);\n"
          "  if (" + std::string(colour ? "t.a" : "t.g") + " <= 0.0) return vec4(0.0);\n"
          "  return " + value + ";\n"
          "}\n";
 }
 
 void RasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
-  const double degree = glm::pi<double>() / 180.0;
+  const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
   units.bind(program, prefix_ + "_texture", texture_.id());
-  program.set(prefix_ + "_extent", glm::vec4(glm::dvec4(extent_.west, extent_.south, extent_.east, extent_.north) * degree));
+  program.set(prefix_ + "_projectionA", glm::vec4(projection[0]));
+  program.set(prefix_ + "_projectionB", glm::vec4(projection[1]));
+  program.set(prefix_ + "_mapToTexture", mapToTexture(georeference_, width_, height_));
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
-  program.set(prefix_ + "_repeatX", extent_.global() ? 1 : 0);
+  program.set(prefix_ + "_repeatX", wrapsAround() ? 1 : 0);
 }
 
 }  // namespace strata

@@ -10,6 +10,7 @@
 
 #include <strata/error.hpp>
 #include <strata/plugin.hpp>
+#include <strata/plugin_registry.hpp>
 #include <strata/raster_layer.hpp>
 
 namespace graticule {
@@ -72,7 +73,7 @@ std::vector<bool> lineMask(long size, const std::vector<long>& boundaries, int w
 // The whole globe at `texelsPerDegree`: the line colour with coverage 1 on lines, coverage 0 (transparent,
 // so the layers below show through) elsewhere. Texels are premultiplied RGBA, row 0 at the north edge.
 strata::RasterImage drawGraticule(const GraticuleStyle& style) {
-  strata::RasterImage image;  // its default extent is the whole globe
+  strata::RasterImage image;
   image.width = 360 * style.texelsPerDegree;
   image.height = 180 * style.texelsPerDegree;
   image.channels = 4;
@@ -95,12 +96,12 @@ strata::RasterImage drawGraticule(const GraticuleStyle& style) {
 class GraticuleSource : public strata::Node {
  public:
   explicit GraticuleSource(const strata::NodeSetup& setup)
-      : style_(styleOf(setup.parameters)), layer_(setup.id, strata::LayerKind::Color) {}
+      : style_(styleOf(setup.parameters)), plugins_(*setup.plugins), layer_(setup.id, strata::LayerKind::Color) {}
 
   void open() override { image_ = drawGraticule(style_); }
 
   void createResources(strata::GpuContext&) override {
-    layer_.upload(image_);
+    layer_.upload(image_, strata::geographicGeoreference(plugins_, {}, image_.width, image_.height));  // the globe
     image_ = {};  // the texture holds it now
   }
 
@@ -108,6 +109,7 @@ class GraticuleSource : public strata::Node {
 
  private:
   GraticuleStyle style_;
+  const strata::PluginRegistry& plugins_;
   strata::RasterLayer layer_;
   strata::RasterImage image_;
 };

@@ -17,6 +17,7 @@ class SurfaceGeometry;
 class FrameOutput;
 class Node;
 class ShaderLibrary;
+class PluginRegistry;
 
 // What a node type's factory receives: its id, validated parameters and resolved inputs. The inputs were
 // made before this node (the graph is built in dependency order).
@@ -27,6 +28,7 @@ struct NodeSetup {
   std::map<std::string, std::vector<Node*>> inputs;  // by port name; absent optional ports are missing
   const Body* body = nullptr;
   std::filesystem::path pipelineDirectory;  // relative paths in parameters resolve against this
+  const PluginRegistry* plugins = nullptr;   // node types and projections (see strata/crs.hpp)
 
   Node* input(const std::string& port) const;  // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected

@@ -1,15 +1,17 @@
 #pragma once
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
+#include <strata/projection.hpp>
 #include <strata/version.hpp>
 
 namespace strata {
 
-// Receives the node types a plugin provides.
+// Receives the node types and projections a plugin provides.
 class PluginRegistrar {
  public:
   virtual ~PluginRegistrar() = default;
   virtual void add(NodeTypeDeclaration declaration) = 0;
+  virtual void addProjection(ProjectionDeclaration declaration) = 0;
 };
 
 }  // namespace strata

@@ -1,19 +1,11 @@
-// Equirectangular (plate carree) projection: x is longitude, y is latitude, linearly.
+// Equirectangular projection, geographic (+proj=longlat) and PROJ's eqc: the single-precision form of
+// core/src/projection/equirectangular.cpp (Snyder 1987, ch. 12, eqs. 12-1 and 12-2).
 #include "strata/constants.glsl"
-#include "strata/surface_point.glsl"
 
-// Texture coordinates of `lonlat` in a raster covering extent = (west, south, east, north) in radians,
-// row 0 at the north edge. Longitude is taken modulo 2 pi from the west edge, so extents that cross the
-// antimeridian or run beyond +-180 degrees need no special case. .z is 1 inside the extent, 0 outside.
-vec3 equirectangularCoordinates(vec2 lonlat, vec4 extent) {
-  float u = mod(lonlat.x - extent.x, TWO_PI) / (extent.z - extent.x);
-  float v = (extent.w - lonlat.y) / (extent.w - extent.y);
-  float inside = (u <= 1.0 && v >= 0.0 && v <= 1.0) ? 1.0 : 0.0;
-  return vec3(u, v, inside);
+// Map coordinates of `lonlat` over the radius (a, or degrees per radian); .z is 1 everywhere.
+// a = (lon_0, wrap centre - lon_0, cos(lat_ts), lat_0); b.xy = false origin over the radius.
+vec3 equirectangular(vec2 lonlat, vec4 a, vec4 b) {
+  float lon = lonlat.x - a.x;
+  lon -= TWO_PI * floor((lon - a.y + PI) / TWO_PI);  // within half a turn of the raster's centre
+  return vec3(vec2(a.z * lon, lonlat.y - a.w) + b.xy, 1.0);
 }
-
-// The change of those texture coordinates along a footprint step in lonlat.
-vec2 equirectangularGradient(vec2 lonlatStep, vec4 extent) {
-  return vec2(lonlatStep.x / (extent.z - extent.x), -lonlatStep.y / (extent.w - extent.y));
-}
-

@@ -1,0 +1,28 @@
+// Placing rasters: a projection plus a geotransform, with periodic projections centred on the raster.
+#include <strata/crs.hpp>
+#include <strata/plugin_registry.hpp>
+#include <strata/raster_layer.hpp>
+
+namespace strata {
+
+RasterGeoreference makeGeoreference(std::unique_ptr<Projection> projection, const std::array<double, 6>& geotransform,
+                                    int width) {
+  if (projection->periodX()) {
+    const glm::dvec2 centre{geotransform[0] + geotransform[1] * width / 2.0, projection->forward({0.0, 0.0})->y};
+    if (auto lonlat = projection->inverse(centre)) projection->setLongitudeCentre(lonlat->x);
+  }
+  return {std::shared_ptr<const Projection>(std::move(projection)), geotransform};
+}
+
+std::array<double, 6> geographicGeotransform(const GeographicExtent& extent, int width, int height) {
+  return {extent.west, (extent.east - extent.west) / width, 0.0, extent.north, 0.0, (extent.south - extent.north) / height};
+}
+
+RasterGeoreference geographicGeoreference(const PluginRegistry& plugins, const GeographicExtent& extent, int width,
+                                          int height) {
+  // The radius does not matter to a map in degrees.
+  auto projection = projectionOfCrs(plugins, "+proj=longlat +R=1", SourceLocation{"(geographic raster)"});
+  return makeGeoreference(std::move(projection), geographicGeotransform(extent, width, height), width);
+}
+
+}  // namespace strata

@@ -1,0 +1,10 @@
+#pragma once
+#include <strata/projection.hpp>
+
+namespace strata {
+
+// Equirectangular: geographic rasters (+proj=longlat, map coordinates in degrees) and PROJ's equidistant
+// cylindrical projection (+proj=eqc, in metres).
+ProjectionDeclaration equirectangularDeclaration();
+
+}  // namespace strata

@@ -1,0 +1,10 @@
+#pragma once
+#include <strata/projection.hpp>
+
+namespace strata {
+
+// HEALPix: the equal-area plane of 12 base patches the HEALPix terrain generator is built on (seed 004),
+// as PROJ's healpix projects it (sphere and ellipsoid).
+ProjectionDeclaration healpixDeclaration();
+
+}  // namespace strata

@@ -1,0 +1,10 @@
+#pragma once
+#include <strata/projection.hpp>
+
+namespace strata {
+
+// Polar stereographic, north or south aspect, with any true-scale latitude: PROJ's stere with
+// lat_0 = +-90, and ups.
+ProjectionDeclaration polarStereographicDeclaration();
+
+}  // namespace strata

@@ -1,0 +1,108 @@
+// Choosing the projection a raster is tiled into (DESIGN.md "Projections": any CRS PROJ knows is re-tiled
+// into one of the built-in projections).
+#include "tiling/tile_target.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <memory>
+#include <optional>
+
+#include <strata/crs.hpp>
+
+namespace strata::tiling {
+namespace {
+
+std::string number(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.17g", value);
+  return text.data();
+}
+
+std::string ellipsoidTerms(const OGRSpatialReference& crs) {
+  const double a = crs.GetSemiMajor(), inverseFlattening = crs.GetInvFlattening();
+  return inverseFlattening == 0.0 ? "+R=" + number(a) : "+a=" + number(a) + " +rf=" + number(inverseFlattening);
+}
+
+// The built-in projections by name, on the raster's ellipsoid. The polar ones are true to scale at the
+// pole, where a cap's data is densest.
+std::optional<std::string> namedTarget(const std::string& name, const OGRSpatialReference& crs) {
+  const std::string figure = " " + ellipsoidTerms(crs);
+  if (name == "equirectangular") return "+proj=longlat" + figure;
+  if (name == "polar-north") return "+proj=stere +lat_0=90 +lat_ts=90" + figure;
+  if (name == "polar-south") return "+proj=stere +lat_0=-90 +lat_ts=-90" + figure;
+  if (name == "healpix") return "+proj=healpix" + figure;
+  return std::nullopt;
+}
+
+bool isRegistered(const PluginRegistry& plugins, const OGRSpatialReference& crs) {
+  try {
+    projectionOfCrs(plugins, crs, {});
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
+using Transformation = std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation*)>;
+
+Transformation transformation(const OGRSpatialReference& from, const OGRSpatialReference& to) {
+  return Transformation(OGRCreateCoordinateTransformation(&from, &to), OGRCoordinateTransformation::DestroyCT);
+}
+
+struct Coverage {
+  double south = 90.0, north = -90.0;
+  bool northPole = false, southPole = false;
+};
+
+// The latitudes a raster covers, from a grid of points over it, and whether a pole lies on it.
+Coverage coverageOf(const OGRSpatialReference& crs, const double t[6], int width, int height) {
+  OGRSpatialReference geographic;
+  geographic.CopyGeogCSFrom(&crs);
+  geographic.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference source(crs);
+  source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  Coverage coverage;
+  auto toGeographic = transformation(source, geographic);
+  if (!toGeographic) return coverage;
+  constexpr int kSamples = 33;  // per side; enough to find the extremes of any smooth projection's edges
+  for (int i = 0; i < kSamples; ++i)
+    for (int j = 0; j < kSamples; ++j) {
+      double x = t[0] + t[1] * width * i / (kSamples - 1), y = t[3] + t[5] * height * j / (kSamples - 1);
+      if (!toGeographic->Transform(1, &x, &y)) continue;
+      coverage.south = std::min(coverage.south, y);
+      coverage.north = std::max(coverage.north, y);
+    }
+  auto toSource = transformation(geographic, source);
+  for (const double poleLatitude : {90.0, -90.0}) {
+    double x = 0.0, y = poleLatitude;
+    if (!toSource || !toSource->Transform(1, &x, &y)) continue;
+    const double column = (x - t[0]) / t[1], row = (y - t[3]) / t[5];
+    const bool inside = column >= 0.0 && column <= width && row >= 0.0 && row <= height;
+    (poleLatitude > 0.0 ? coverage.northPole : coverage.southPole) = inside;
+  }
+  return coverage;
+}
+
+}  // namespace
+
+std::string tileTarget(const PluginRegistry& plugins, const OGRSpatialReference& crs, const double geotransform[6],
+                       int width, int height, const std::string& target, const SourceLocation& where) {
+  if (!target.empty()) {
+    if (auto named = namedTarget(target, crs)) return *named;
+    if (target.find_first_of("+:[") == std::string::npos)
+      throw Error(where, "'" + target + "' is neither a projection name nor a CRS",
+                  "name one of equirectangular, polar-north, polar-south, healpix, or give a PROJ string or EPSG:code");
+    projectionOfCrs(plugins, target, where);  // a CRS given by hand must be one the cache can sample
+    return target;
+  }
+  if (isRegistered(plugins, crs)) return {};
+  // Beyond 60 degrees equirectangular texels are stretched more than 2:1 (seed 000 section 4.1).
+  constexpr double kPolarLatitude = 60.0;
+  const Coverage coverage = coverageOf(crs, geotransform, width, height);
+  if (coverage.northPole || coverage.south >= kPolarLatitude) return *namedTarget("polar-north", crs);
+  if (coverage.southPole || coverage.north <= -kPolarLatitude) return *namedTarget("polar-south", crs);
+  return *namedTarget("equirectangular", crs);
+}
+
+}  // namespace strata::tiling

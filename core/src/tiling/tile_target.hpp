@@ -1,0 +1,17 @@
+#pragma once
+#include <string>
+
+#include <ogr_spatialref.h>
+
+#include <strata/plugin_registry.hpp>
+
+namespace strata::tiling {
+
+// The CRS a raster is tiled into, as a PROJ string on the raster's own ellipsoid: `target` when given
+// (a projection name or a CRS), the raster's own CRS when it is one of the registered projections
+// (empty: no reprojection), else the best-suited built-in one: polar stereographic for a raster that
+// holds a pole or lies beyond 60 degrees of latitude, longitude/latitude for the rest.
+std::string tileTarget(const PluginRegistry& plugins, const OGRSpatialReference& crs, const double geotransform[6],
+                       int width, int height, const std::string& target, const SourceLocation& where);
+
+}  // namespace strata::tiling

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+namespace strata::procedural {
+
+// What makes one procedural planet, with defaults for a Mars-sized body.
+struct PlanetParameters {
+  // Which planet: every seed gives an unrelated height field. 2008, the year of seed 000, for no other reason.
+  std::uint32_t seed = 2008;
+  // m. |height| never exceeds it (the noise stays within +-0.99); a typical height is a fifth of it, so
+  // 12 km gives Mars-like relief: heights of 2.5 km root mean square, basins and peaks to about 8.5 km.
+  double amplitude = 12000.0;
+  // m: the lattice spacing of the first octave, the size of the largest features. 3000 km gives a Mars-sized
+  // body continents and seas a few thousand kilometres across.
+  double wavelength = 3.0e6;
+  // Octaves summed, each half the wavelength of the one before: 12 reach 3000 km / 2^11 = 1.5 km.
+  int octaves = 12;
+  // m between contour lines: about 10 across the usual heights, each a hard edge that shows how a
+  // projection sampled it.
+  double contourInterval = 1000.0;
+};
+
+// The demonstration planet of seed 000 chapter 4 (digest 000, section 5): false data, a fractal sum of 3D
+// simplex noise over the unit sphere, "observed" through several projections and resolutions. Heights and
+// colours are computed in double here; shaders/procedural/planet.glsl does the same in float.
+class PlanetModel {
+ public:
+  PlanetModel(const PlanetParameters& parameters, double radius);
+
+  // Height in metres above the sphere at every octave.
+  double height(const glm::dvec3& unitNormal) const;
+  // Height as a sample `footprint` metres across sees it: octaves too fine for it are left out, so that it
+  // does not alias (footprint 0: every octave).
+  double height(const glm::dvec3& unitNormal, double footprint) const;
+  // Linear RGB of a height: sea, lowland, highland, rock and snow, with dark contour lines.
+  glm::dvec3 colour(double height) const;
+  // Whether a height lies on a contour line.
+  bool onContour(double height) const;
+  // Metres of height from `height` to the nearest step of colour (an edge of a contour line; the coast is
+  // one): a sample whose height is less certain than this may show either colour.
+  double distanceToColourStep(double height) const;
+
+  const PlanetParameters& parameters() const { return parameters_; }
+  double radius() const { return radius_; }
+
+ private:
+  double distanceToContour(double height) const;
+
+  PlanetParameters parameters_;
+  double radius_;
+};
+
+// How much of octave `octave` a sample `footprint` metres across takes in (0 to 1). An octave counts fully
+// while its lattice spacing is at least 4 footprints and fades out by 2 (the Nyquist limit: the noise
+// has little energy above one cycle per lattice unit); the first octave always counts.
+double octaveWeight(int octave, double wavelength, double footprint);
+
+}  // namespace strata::procedural

@@ -1,0 +1,35 @@
+#include "procedural_layer.hpp"
+
+#include <strata/gl/shader_program.hpp>
+
+namespace strata::procedural {
+
+ProceduralLayer::ProceduralLayer(const std::string& nodeId, LayerKind kind, const PlanetParameters& planet,
+                                 double radius, double scale)
+    : prefix_("procedural_" + glslIdentifier(nodeId)), kind_(kind), planet_(planet), radius_(radius), scale_(scale) {}
+
+std::string ProceduralLayer::glsl() const {
+  const std::string& p = prefix_;
+  const std::string value = kind_ == LayerKind::Height ? "vec4(h * " + p + "_scale, 0.0, 0.0, 1.0)"
+                                                       : "vec4(planetColour(h, " + p + "_planet), 1.0)";
+  return "#include \"procedural/planet.glsl\"\n"
+         "uniform ProceduralPlanet " + p + "_planet;\n"
+         "uniform float " + p + "_scale;\n"
+         "vec4 " + p + "(SurfacePoint p) {\n"
+         "  float h = planetHeight(p.normal, planetFootprint(p, " + p + "_planet.radius), " + p + "_planet);\n"
+         "  return " + value + ";\n"
+         "}\n";
+}
+
+void ProceduralLayer::bind(ShaderProgram& program, TextureUnits&) const {
+  const std::string planet = prefix_ + "_planet.";
+  program.set(planet + "seed", int(planet_.seed));
+  program.set(planet + "amplitude", float(planet_.amplitude));
+  program.set(planet + "wavelength", float(planet_.wavelength));
+  program.set(planet + "octaves", planet_.octaves);
+  program.set(planet + "contourInterval", float(planet_.contourInterval));
+  program.set(planet + "radius", float(radius_));
+  program.set(prefix_ + "_scale", float(scale_));
+}
+
+}  // namespace strata::procedural

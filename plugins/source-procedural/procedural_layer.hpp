@@ -1,0 +1,32 @@
+#pragma once
+#include <string>
+
+#include <strata/layer.hpp>
+
+#include "planet_model.hpp"
+
+namespace strata::procedural {
+
+// The procedural planet as a layer, computed per sample on the GPU (shaders/procedural/planet.glsl) at the
+// sample's unit normal: no texture, so it is sharp at any distance, and the sample's footprint decides how
+// many octaves it sums, so it never aliases. Heights (kind height) come multiplied by `scale`; colours
+// (kind color) are those of the true heights, with their contour lines.
+class ProceduralLayer : public Layer {
+ public:
+  ProceduralLayer(const std::string& nodeId, LayerKind kind, const PlanetParameters& planet, double radius,
+                  double scale);
+
+  LayerKind kind() const override { return kind_; }
+  std::string samplingFunction() const override { return prefix_; }
+  std::string glsl() const override;
+  void bind(ShaderProgram& program, TextureUnits& units) const override;
+
+ private:
+  std::string prefix_;  // GLSL identifier prefix unique to the node
+  LayerKind kind_;
+  PlanetParameters planet_;
+  double radius_;
+  double scale_;
+};
+
+}  // namespace strata::procedural

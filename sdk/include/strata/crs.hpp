@@ -1,0 +1,24 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include <strata/error.hpp>
+#include <strata/projection.hpp>
+
+class OGRSpatialReference;
+
+namespace strata {
+
+class PluginRegistry;
+
+// Recognises a coordinate reference system as one of the registered projections (built-in or from
+// plugins), by the PROJ form of the CRS and its ellipsoid. `crs` is anything GDAL reads as a CRS: WKT, a
+// PROJ string, "EPSG:3031". Throws strata::Error at `where` when the CRS cannot be read, uses units other
+// than metres or degrees, or is a projection no registered type handles; the fix says how to reproject.
+std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const std::string& crs,
+                                            const SourceLocation& where);
+// The same for a CRS GDAL holds already, such as a raster's.
+std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const OGRSpatialReference& crs,
+                                            const SourceLocation& where);
+
+}  // namespace strata

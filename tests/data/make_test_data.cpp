@@ -1,0 +1,66 @@
+// strata-make-test-data: writes the procedural planet (seed 000 chapter 4's demonstration data, digest 000
+// section 5) "observed" through several projections and resolutions, as GeoTIFFs for the tests and
+// benchmarks. Positions come from PROJ, heights and colours from the planet model, nothing from Strata.
+#include <gdal_priv.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "observation.hpp"
+#include "observation_writer.hpp"
+
+namespace {
+
+// "WIDTHxHEIGHT", or an explanation of what is wrong with it.
+std::string parseSize(const std::string& text, int& width, int& height) {
+  char separator = 0, rest = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x' ||
+      width < 2 || height < 1)
+    return "expected WIDTHxHEIGHT, e.g. 40000x20000";
+  return {};
+}
+
+void makeTestData(const std::filesystem::path& directory, int largeWidth, int largeHeight) {
+  using namespace strata::testdata;
+  GDALAllRegister();
+  std::filesystem::create_directories(directory);
+  const strata::procedural::PlanetModel planet({}, kMarsRadius);
+  const bool progress = isatty(STDOUT_FILENO);
+  if (largeWidth > 0) {
+    const Observation large = largeGlobalObservation(largeWidth, largeHeight);
+    writeObservation(large, planet, directory, Products::ColourOnly, progress);
+    return;
+  }
+  for (const Observation& observation : standardObservations())
+    writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
+               "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif."};
+  std::string directory;
+  int largeWidth = 0, largeHeight = 0;
+  app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();
+  app.add_option_function<std::string>(
+      "--large",
+      [&](const std::string& text) {
+        if (std::string problem = parseSize(text, largeWidth, largeHeight); !problem.empty())
+          throw CLI::ValidationError("--large", problem);
+      },
+      "write only a global longitude/latitude colour raster of WIDTHxHEIGHT pixels (for benchmarks)");
+  CLI11_PARSE(app, argc, argv);
+  try {
+    makeTestData(directory, largeWidth, largeHeight);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "strata-make-test-data: error: %s\n", error.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,75 @@
+// End-to-end tests of what `strata render` says about rasters it cannot use: a CRS that is none of the
+// registered projections, truncated and corrupt files, and nodata values no sample can hold. Each must end
+// in exit code 1 with the file and a fix, never in a crash or a silent picture.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "strata_command.hpp"
+#include "test_rasters.hpp"
+
+namespace strata::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::array<double, 6> kNearTheEquator{-30.0, 0.1, 0.0, 15.0, 0.0, -0.1};
+
+class SourceErrors : public StrataCommandTest {
+ protected:
+  CommandResult renderRaster(const fs::path& raster, const std::string& kind = "height") const {
+    return renderTiny(write("p.yaml", "strata: 1\nnodes:\n"
+                                      "  data: {type: source.gdal, path: " + raster.string() + ", kind: " + kind + "}\n"
+                                      "  globe: {type: geometry.icosahedral, height: data}\n"
+                                      "  frame: {type: output.image, geometry: globe}\n"));
+  }
+};
+
+// Overwrites `count` bytes of `file` from `offset` with a pattern no codec decodes.
+void damage(const fs::path& file, std::streamoff offset, std::size_t count) {
+  std::fstream stream(file, std::ios::in | std::ios::out | std::ios::binary);
+  stream.seekp(offset);
+  const std::string garbage(count, '\xA5');
+  stream.write(garbage.data(), static_cast<std::streamsize>(garbage.size()));
+}
+
+TEST_F(SourceErrors, AnUnknownCrsNamesTheFileAndSaysHowToTileIt) {
+  writeRasterFile(file("mercator.tif"), {"EPSG:3857", {-2e6, 5000.0, 0.0, 2e6, 0.0, -5000.0}, 200, 200});
+  const CommandResult result = renderRaster(file("mercator.tif"));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "+proj=merc")) << result.err;
+  EXPECT_TRUE(contains(result.err, "p.yaml")) << "the pipeline line of the source: " << result.err;
+  EXPECT_TRUE(contains(result.err, "strata tile")) << result.err;
+}
+
+TEST_F(SourceErrors, ATruncatedRasterIsAReadErrorNotACrash) {
+  writeRasterFile(file("cut.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 600, 300});
+  fs::resize_file(file("cut.tif"), fs::file_size(file("cut.tif")) / 2);
+  const CommandResult result = renderRaster(file("cut.tif"));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "cut.tif")) << result.err;
+  EXPECT_TRUE(contains(result.err, "fix:")) << result.err;
+}
+
+TEST_F(SourceErrors, ACorruptCompressedTileIsAReadErrorNotACrash) {
+  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 600, 300, 1, GDT_Float32, 255.0,
+                                    {"TILED=YES", "COMPRESS=DEFLATE"}});
+  damage(file("bad.tif"), static_cast<std::streamoff>(fs::file_size(file("bad.tif")) / 2), 4096);
+  const CommandResult result = renderRaster(file("bad.tif"));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "cannot read 'bad.tif'") || contains(result.err, "bad.tif")) << result.err;
+  EXPECT_TRUE(contains(result.err, "gdalinfo -checksum")) << result.err;
+}
+
+TEST_F(SourceErrors, NodataNoSampleCanHoldIsRefusedWithTheValueAndAFix) {
+  writeRasterFile(file("bytes.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 60, 30, 1, GDT_Byte, -9999.0});
+  const CommandResult result = renderRaster(file("bytes.tif"));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "nodata -9999")) << result.err;
+  EXPECT_TRUE(contains(result.err, "gdal_edit.py")) << result.err;
+}
+
+}  // namespace
+}  // namespace strata::test
