@@ -15,11 +15,11 @@ bool isGeographic(const Projection& projection) {
   return ProjParameters::parse(projection.projString()).name() == "longlat";
 }
 
-std::unique_ptr<Projection> projectionOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+std::unique_ptr<Projection> projectionOf(GDALDataset& dataset, const PluginRegistry& plugins,
                                          const GeoreferenceOptions& options) {
   if (!options.crs.empty()) return projectionOfCrs(plugins, options.crs, options.crsWhere);
   if (const OGRSpatialReference* crs = dataset.GetSpatialRef()) return projectionOfCrs(plugins, *crs, options.fileWhere);
-  return projectionOfCrs(plugins, "+proj=longlat +R=" + std::to_string(body.radius), options.fileWhere);
+  return geographicProjection(plugins);
 }
 
 GeographicExtent checkedExtent(const std::vector<double>& v, const SourceLocation& where) {
@@ -61,9 +61,9 @@ std::array<double, 6> geotransformOf(GDALDataset& dataset, const Projection& pro
 
 }  // namespace
 
-RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins,
                                   const GeoreferenceOptions& options) {
-  std::unique_ptr<Projection> projection = projectionOf(dataset, plugins, body, options);
+  std::unique_ptr<Projection> projection = projectionOf(dataset, plugins, options);
   const std::array<double, 6> geotransform = geotransformOf(dataset, *projection, options);
   return makeGeoreference(std::move(projection), geotransform, dataset.GetRasterXSize());
 }

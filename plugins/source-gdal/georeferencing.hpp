@@ -4,7 +4,6 @@
 
 #include <gdal_priv.h>
 
-#include <strata/body.hpp>
 #include <strata/error.hpp>
 #include <strata/plugin_registry.hpp>
 #include <strata/raster_layer.hpp>
@@ -24,7 +23,7 @@ struct GeoreferenceOptions {
 // the registered projections (the options' CRS when given) and its north-up geotransform (or the
 // options' extent). A raster with neither CRS nor geotransform is longitude/latitude, global when 2:1.
 // Throws strata::Error naming the parameter or the file, with a fix, for what cannot be placed.
-RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins, const Body& body,
+RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins,
                                   const GeoreferenceOptions& options);
 
 // The geotransform for the same map area read at `width` x `height` texels (rasters are read at most

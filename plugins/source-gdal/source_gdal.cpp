@@ -17,8 +17,7 @@ namespace {
 class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
-      : parameters_(setup.parameters), plugins_(*setup.plugins), body_(*setup.body), kind_(kindOf(setup)),
-        layer_(setup.id, kind_) {
+      : parameters_(setup.parameters), plugins_(*setup.plugins), kind_(kindOf(setup)), layer_(setup.id, kind_) {
     layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
   }
 
@@ -30,7 +29,7 @@ class GdalSource : public Node {
     if (!dataset)
       throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
                   "check the path, and that `gdalinfo " + path + "` reads it");
-    georeference_ = georeferenceOf(*dataset, plugins_, body_,
+    georeference_ = georeferenceOf(*dataset, plugins_,
                                    {parameters_.string("projection"), parameters_.where("projection"),
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
     image_ = readRaster(*dataset, kind_, where);
@@ -54,7 +53,6 @@ class GdalSource : public Node {
 
   ParameterSet parameters_;
   const PluginRegistry& plugins_;
-  const Body& body_;
   LayerKind kind_;
   RasterLayer layer_;
   RasterImage image_;

@@ -7,7 +7,7 @@ namespace strata {
 
 RasterGeoreference makeGeoreference(std::unique_ptr<Projection> projection, const std::array<double, 6>& geotransform,
                                     int width) {
-  if (projection->periodX()) {
+  if (projection->periodX()) {  // periodic projections are defined at (0, 0), on the equator
     const glm::dvec2 centre{geotransform[0] + geotransform[1] * width / 2.0, projection->forward({0.0, 0.0})->y};
     if (auto lonlat = projection->inverse(centre)) projection->setLongitudeCentre(lonlat->x);
   }
@@ -20,9 +20,7 @@ std::array<double, 6> geographicGeotransform(const GeographicExtent& extent, int
 
 RasterGeoreference geographicGeoreference(const PluginRegistry& plugins, const GeographicExtent& extent, int width,
                                           int height) {
-  // The radius does not matter to a map in degrees.
-  auto projection = projectionOfCrs(plugins, "+proj=longlat +R=1", SourceLocation{"(geographic raster)"});
-  return makeGeoreference(std::move(projection), geographicGeotransform(extent, width, height), width);
+  return makeGeoreference(geographicProjection(plugins), geographicGeotransform(extent, width, height), width);
 }
 
 }  // namespace strata

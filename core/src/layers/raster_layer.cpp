@@ -32,6 +32,12 @@ bool anisotropicFilteringWorks() {
   return offered && !(renderer && std::string_view(renderer).starts_with("llvmpipe"));
 }
 
+// Whether a raster `width` texels wide spans one period of a periodic projection.
+bool spansPeriod(const RasterGeoreference& georeference, int width) {
+  const std::optional<double> period = georeference.projection->periodX();
+  return period && std::abs(std::abs(georeference.geotransform[1]) * width - *period) <= 1e-9 * *period;
+}
+
 // Texture coordinates per GLSL map unit: u = x * s.x + s.y, v = y * s.z + s.w (see Projection::glslMapScale).
 glm::vec4 mapToTexture(const RasterGeoreference& georeference, int width, int height) {
   const std::array<double, 6>& t = georeference.geotransform;
@@ -51,8 +57,10 @@ void RasterLayer::setValueTransform(double scale, double offset) {
 
 void RasterLayer::upload(const RasterImage& image, RasterGeoreference georeference) {
   georeference_ = std::move(georeference);
-  width_ = image.width;
-  height_ = image.height;
+  const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
+  uniforms_ = {{glm::vec4(projection[0]), glm::vec4(projection[1])},
+               mapToTexture(georeference_, image.width, image.height),
+               spansPeriod(georeference_, image.width)};
   const bool colour = image.channels == 4;
   texture_ = Texture(colour ? GL_RGBA16F : GL_RG32F, image.width, image.height, mipLevels(image.width, image.height));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
@@ -65,15 +73,10 @@ void RasterLayer::upload(const RasterImage& image, RasterGeoreference georeferen
     if (mip.width == 1 && mip.height == 1) break;
   }
   // A raster that goes all the way round wraps across its east/west seam when filtered.
-  glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, wrapsAround() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, uniforms_.repeatX ? GL_REPEAT : GL_CLAMP_TO_EDGE);
   // Texels stretch where a projection is stretched (toward the poles of equirectangular maps);
   // anisotropic filtering keeps them sharp there.
   if (anisotropicFilteringWorks()) glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
-}
-
-bool RasterLayer::wrapsAround() const {
-  const std::optional<double> period = georeference_.projection->periodX();
-  return period && std::abs(std::abs(georeference_.geotransform[1]) * width_ - *period) <= 1e-9 * *period;
 }
 
 std::string RasterLayer::samplingFunction() const { return prefix_; }
@@ -111,13 +114,12 @@ std::string RasterLayer::glsl() const {
 }
 
 void RasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
-  const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
   units.bind(program, prefix_ + "_texture", texture_.id());
-  program.set(prefix_ + "_projectionA", glm::vec4(projection[0]));
-  program.set(prefix_ + "_projectionB", glm::vec4(projection[1]));
-  program.set(prefix_ + "_mapToTexture", mapToTexture(georeference_, width_, height_));
+  program.set(prefix_ + "_projectionA", uniforms_.projection[0]);
+  program.set(prefix_ + "_projectionB", uniforms_.projection[1]);
+  program.set(prefix_ + "_mapToTexture", uniforms_.mapToTexture);
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
-  program.set(prefix_ + "_repeatX", wrapsAround() ? 1 : 0);
+  program.set(prefix_ + "_repeatX", uniforms_.repeatX ? 1 : 0);
 }
 
 }  // namespace strata

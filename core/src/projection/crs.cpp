@@ -6,12 +6,22 @@
 #include <strata/crs.hpp>
 #include <strata/plugin_registry.hpp>
 
+#include "projection/projection_terms.hpp"
+
 namespace strata {
 namespace {
 
 const char* kReprojectFix =
     "reproject it into one of Strata's projections with `strata tile in.tif out.tif` (it picks the best suited), "
     "or give the source's `projection` when the file's CRS is wrong";
+
+std::string typeList(const PluginRegistry& plugins) {
+  std::string list;
+  for (const ProjectionDeclaration* type : plugins.projections()) list += (list.empty() ? "" : ", ") + type->type;
+  return list;
+}
+
+}  // namespace
 
 std::string projStringOf(const OGRSpatialReference& crs) {
   char* text = nullptr;
@@ -21,22 +31,6 @@ std::string projStringOf(const OGRSpatialReference& crs) {
   return proj;
 }
 
-std::string typeList(const PluginRegistry& plugins) {
-  std::string list;
-  for (const ProjectionDeclaration* type : plugins.projections()) list += (list.empty() ? "" : ", ") + type->type;
-  return list;
-}
-
-// Metres for projected CRSs, degrees for geographic ones: the units the built-in forms produce.
-void checkUnits(const ProjParameters& terms, const std::string& proj, const SourceLocation& where) {
-  const bool metres = !terms.has("units") || terms.terms().at("units") == "m";
-  if (!metres || (terms.has("to_meter") && terms.real("to_meter", 1.0) != 1.0))
-    throw Error(where, "the CRS " + proj + " measures map coordinates in units other than metres",
-                "reproject it to metres: gdalwarp -t_srs '<the same CRS with +units=m>' in.tif out.tif");
-}
-
-}  // namespace
-
 std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const OGRSpatialReference& crs,
                                             const SourceLocation& where) {
   const std::string proj = projStringOf(crs);
@@ -44,7 +38,10 @@ std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const
     throw Error(where, std::string("the CRS '") + (crs.GetName() ? crs.GetName() : "?") + "' has no PROJ form",
                 kReprojectFix);
   const ProjParameters terms = ProjParameters::parse(proj);
-  checkUnits(terms, proj, where);
+  // The built-in forms produce metres (degrees for geographic CRSs) on east/north axes from Greenwich.
+  if (!plainFrame(terms))
+    throw Error(where, "the CRS " + proj + " measures map coordinates in other units, axes or from another meridian",
+                "reproject it with `strata tile in.tif out.tif`, which writes metres east and north of Greenwich");
   const Ellipsoid ellipsoid{crs.GetSemiMajor(), crs.GetInvFlattening()};
   const ProjectionDeclaration* type = plugins.projectionForProjName(terms.name());
   std::unique_ptr<Projection> projection;
@@ -66,6 +63,10 @@ std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const
     throw Error(where, "'" + text + "' is not a coordinate reference system GDAL can read",
                 "give WKT, a PROJ string such as '+proj=stere +lat_0=-90 +lat_ts=-71 +R=3396190', or 'EPSG:<code>'");
   return projectionOfCrs(plugins, crs, where);
+}
+
+std::unique_ptr<Projection> geographicProjection(const PluginRegistry& plugins) {
+  return projectionOfCrs(plugins, "+proj=longlat +R=1", SourceLocation{"(geographic raster)"});
 }
 
 }  // namespace strata

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include <strata/crs.hpp>
 #include <strata/tiling.hpp>
 
 #include "tiling/tile_target.hpp"
@@ -95,12 +96,8 @@ TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& requ
   const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input->GetRasterXSize(),
                                                 input->GetRasterYSize(), request.target, {"--to"});
   Dataset output = translate(*input, request, target, where);
-  char* proj = nullptr;
-  output->GetSpatialRef()->exportToProj4(&proj);
-  TilingResult result{proj ? proj : "", !target.empty(), output->GetRasterXSize(), output->GetRasterYSize(),
-                      output->GetRasterBand(1)->GetOverviewCount()};
-  CPLFree(proj);
-  return result;
+  return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(),
+          output->GetRasterYSize(), output->GetRasterBand(1)->GetOverviewCount()};
 }
 
 }  // namespace strata

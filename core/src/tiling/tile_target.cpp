@@ -3,31 +3,20 @@
 #include "tiling/tile_target.hpp"
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <memory>
 #include <optional>
 
 #include <strata/crs.hpp>
 
+#include "projection/projection_terms.hpp"
+
 namespace strata::tiling {
 namespace {
-
-std::string number(double value) {
-  std::array<char, 32> text{};
-  std::snprintf(text.data(), text.size(), "%.17g", value);
-  return text.data();
-}
-
-std::string ellipsoidTerms(const OGRSpatialReference& crs) {
-  const double a = crs.GetSemiMajor(), inverseFlattening = crs.GetInvFlattening();
-  return inverseFlattening == 0.0 ? "+R=" + number(a) : "+a=" + number(a) + " +rf=" + number(inverseFlattening);
-}
 
 // The built-in projections by name, on the raster's ellipsoid. The polar ones are true to scale at the
 // pole, where a cap's data is densest.
 std::optional<std::string> namedTarget(const std::string& name, const OGRSpatialReference& crs) {
-  const std::string figure = " " + ellipsoidTerms(crs);
+  const std::string figure = ellipsoidTerms(Ellipsoid{crs.GetSemiMajor(), crs.GetInvFlattening()});
   if (name == "equirectangular") return "+proj=longlat" + figure;
   if (name == "polar-north") return "+proj=stere +lat_0=90 +lat_ts=90" + figure;
   if (name == "polar-south") return "+proj=stere +lat_0=-90 +lat_ts=-90" + figure;

@@ -21,4 +21,11 @@ std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const
 std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const OGRSpatialReference& crs,
                                             const SourceLocation& where);
 
+// Longitude/latitude in degrees: the projection of rasters placed by a geographic extent. The figure does
+// not matter to a map in degrees.
+std::unique_ptr<Projection> geographicProjection(const PluginRegistry& plugins);
+
+// The PROJ string of a CRS, or "" when it has none.
+std::string projStringOf(const OGRSpatialReference& crs);
+
 }  // namespace strata

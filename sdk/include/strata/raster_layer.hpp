@@ -68,15 +68,19 @@ class RasterLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
 
  private:
-  bool wrapsAround() const;  // the raster spans one period of a periodic projection
+  // What bind() gives the shader, fixed at upload.
+  struct SamplingUniforms {
+    std::array<glm::vec4, 2> projection{};  // Projection::glslParameters()
+    glm::vec4 mapToTexture{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
+    bool repeatX = false;                   // the raster spans one period of a periodic projection
+  };
 
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
   double scale_ = 1.0;
   double offset_ = 0.0;
   RasterGeoreference georeference_;
-  int width_ = 0;
-  int height_ = 0;
+  SamplingUniforms uniforms_;
   Texture texture_;
 };
 
