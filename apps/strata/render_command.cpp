@@ -22,7 +22,7 @@ void render(const RenderOptions& options) {
   enableGlDebugOutput(options.glDebug);
   Engine engine;
   engine.load(options.pipeline, options.overrides);
-  const FrameOutput& frame = engine.render(options.size.width, options.size.height);
+  const FrameOutput& frame = engine.renderComplete(options.size.width, options.size.height);
   const std::filesystem::path file =
       options.output.empty() ? std::filesystem::path("out") / (std::filesystem::path(options.pipeline).stem().string() + ".png")
                              : std::filesystem::path(options.output);

@@ -68,11 +68,4 @@ RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& pl
   return makeGeoreference(std::move(projection), geotransform, dataset.GetRasterXSize());
 }
 
-std::array<double, 6> resampledGeotransform(std::array<double, 6> t, int fromWidth, int fromHeight, int width,
-                                            int height) {
-  t[1] *= double(fromWidth) / width;
-  t[5] *= double(fromHeight) / height;
-  return t;
-}
-
 }  // namespace strata::gdal

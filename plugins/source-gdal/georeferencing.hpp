@@ -6,7 +6,7 @@
 
 #include <strata/error.hpp>
 #include <strata/plugin_registry.hpp>
-#include <strata/raster_layer.hpp>
+#include <strata/raster_georeference.hpp>
 
 namespace strata::gdal {
 
@@ -25,10 +25,5 @@ struct GeoreferenceOptions {
 // Throws strata::Error naming the parameter or the file, with a fix, for what cannot be placed.
 RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins,
                                   const GeoreferenceOptions& options);
-
-// The geotransform for the same map area read at `width` x `height` texels (rasters are read at most
-// kLongestSide texels across).
-std::array<double, 6> resampledGeotransform(std::array<double, 6> geotransform, int fromWidth, int fromHeight,
-                                            int width, int height);
 
 }  // namespace strata::gdal

@@ -1,47 +1,33 @@
 #include "raster_reading.hpp"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/gtc/packing.hpp>
 
 namespace strata::gdal {
 namespace {
 
-struct ReadSize {
-  int width;
-  int height;
-};
-
-ReadSize readSize(GDALDataset& dataset) {
-  const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
-  const int longest = std::max(width, height);
-  if (longest <= kLongestSide) return {width, height};
-  const double factor = double(kLongestSide) / longest;
-  ReadSize size{std::max(1, int(width * factor)), std::max(1, int(height * factor))};
-  std::fprintf(stderr, "strata: source.gdal reads '%s' (%dx%d) averaged down to %dx%d\n", dataset.GetDescription(),
-               width, height, size.width, size.height);
-  return size;
-}
-
-// One band (or its mask) read as floats at `size`, averaged where it is reduced.
-std::vector<float> readBand(GDALRasterBand& band, ReadSize size, const SourceLocation& where) {
-  std::vector<float> values(static_cast<std::size_t>(size.width) * static_cast<std::size_t>(size.height));
+// One band (or its mask) of `window` read as floats at width x height, averaged where it is reduced.
+std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, int width, int height) {
+  std::vector<float> values(std::size_t(width) * std::size_t(height));
   GDALRasterIOExtraArg extra;
   INIT_RASTERIO_EXTRA_ARG(extra);
   extra.eResampleAlg = GRIORA_Average;
   CPLErrorReset();
-  if (band.RasterIO(GF_Read, 0, 0, band.GetXSize(), band.GetYSize(), values.data(), size.width, size.height,
+  if (band.RasterIO(GF_Read, window.x, window.y, window.width, window.height, values.data(), width, height,
                     GDT_Float32, 0, 0, &extra) != CE_None)
-    throw Error(where, "cannot read '" + std::string(band.GetDataset() ? band.GetDataset()->GetDescription() : "") +
-                           "': " + CPLGetLastErrorMsg(),
-                "check that the file is complete and readable (gdalinfo -checksum FILE)");
+    throw std::runtime_error(CPLGetLastErrorMsg());
   return values;
 }
 
-// Coverage per texel in [0, 1] from the mask band of band 1 (0 or 255, averaged where reduced).
-std::vector<float> readCoverage(GDALRasterBand& band, ReadSize size, const SourceLocation& where) {
-  std::vector<float> coverage = readBand(*band.GetMaskBand(), size, where);
+// Coverage per texel in [0, 1] from the mask band of `band` (0 or 255, averaged where reduced).
+std::vector<float> readCoverage(GDALRasterBand& band, const RasterWindow& window, int width, int height) {
+  std::vector<float> coverage = readBand(*band.GetMaskBand(), window, width, height);
   for (float& c : coverage) c /= 255.0f;
   return coverage;
 }
@@ -50,39 +36,44 @@ float srgbToLinear(float encoded) {
   return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
-RasterImage readColour(GDALDataset& dataset, ReadSize size, const SourceLocation& where) {
+template <typename Texel>
+void store(std::span<std::byte> texels, std::size_t i, const Texel& texel) {
+  std::memcpy(texels.data() + i * sizeof(Texel), &texel, sizeof(Texel));
+}
+
+// PageFormat::Colour: half-float linear r, g, b premultiplied by coverage, then coverage.
+void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int height, std::span<std::byte> texels) {
   const int bands = dataset.GetRasterCount();
   GDALRasterBand& first = *dataset.GetRasterBand(1);
-  const GDALDataType type = first.GetRasterDataType();
+  const float full = first.GetRasterDataType() == GDT_Byte ? 255.0f : 65535.0f;
+  std::array<std::vector<float>, 3> rgb;
+  for (int c = 0; c < 3; ++c) rgb[c] = readBand(*dataset.GetRasterBand(bands >= 3 ? c + 1 : 1), window, width, height);
+  const std::vector<float> coverage = readCoverage(first, window, width, height);
+  for (std::size_t i = 0; i < coverage.size(); ++i) {
+    std::array<std::uint16_t, 4> texel{};
+    for (int c = 0; c < 3; ++c) texel[c] = glm::packHalf1x16(srgbToLinear(rgb[c][i] / full) * coverage[i]);
+    texel[3] = glm::packHalf1x16(coverage[i]);
+    store(texels, i, texel);
+  }
+}
+
+// PageFormat::Values: value x coverage, coverage, as 32-bit floats.
+void readValues(GDALDataset& dataset, const RasterWindow& window, int width, int height, std::span<std::byte> texels) {
+  GDALRasterBand& band = *dataset.GetRasterBand(1);
+  const std::vector<float> values = readBand(band, window, width, height);
+  const std::vector<float> coverage = readCoverage(band, window, width, height);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const float c = std::isfinite(values[i]) ? coverage[i] : 0.0f;
+    store(texels, i, std::array<float, 2>{c > 0.0f ? values[i] * c : 0.0f, c});
+  }
+}
+
+void checkColourBands(GDALDataset& dataset, const SourceLocation& where) {
+  const GDALDataType type = dataset.GetRasterBand(1)->GetRasterDataType();
   if (type != GDT_Byte && type != GDT_UInt16)
     throw Error(where, "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) +
                            " values, but a colour layer needs 8 or 16-bit bands",
                 "use `kind: scalar` for measurements, or convert: gdal_translate -ot Byte -scale");
-  const float full = type == GDT_Byte ? 255.0f : 65535.0f;
-  std::array<std::vector<float>, 3> rgb;
-  for (int c = 0; c < 3; ++c) rgb[c] = readBand(*dataset.GetRasterBand(bands >= 3 ? c + 1 : 1), size, where);
-  std::vector<float> coverage = readCoverage(first, size, where);
-  RasterImage image{size.width, size.height, 4, {}};
-  image.texels.resize(coverage.size() * 4);
-  for (std::size_t i = 0; i < coverage.size(); ++i) {
-    for (int c = 0; c < 3; ++c) image.texels[i * 4 + c] = srgbToLinear(rgb[c][i] / full) * coverage[i];
-    image.texels[i * 4 + 3] = coverage[i];
-  }
-  return image;
-}
-
-RasterImage readValues(GDALDataset& dataset, ReadSize size, const SourceLocation& where) {
-  GDALRasterBand& band = *dataset.GetRasterBand(1);
-  std::vector<float> values = readBand(band, size, where);
-  std::vector<float> coverage = readCoverage(band, size, where);
-  RasterImage image{size.width, size.height, 2, {}};
-  image.texels.resize(values.size() * 2);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const float c = std::isfinite(values[i]) ? coverage[i] : 0.0f;
-    image.texels[i * 2] = c > 0.0f ? values[i] * c : 0.0f;
-    image.texels[i * 2 + 1] = c;
-  }
-  return image;
 }
 
 // A nodata value that no sample of the band's type can hold masks nothing: the file says "these texels
@@ -107,14 +98,22 @@ void checkNodata(GDALRasterBand& band, const SourceLocation& where) {
 
 }  // namespace
 
-RasterImage readRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where) {
+PageFormat pageFormatOf(LayerKind kind) { return kind == LayerKind::Color ? PageFormat::Colour : PageFormat::Values; }
+
+void checkRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where) {
   if (dataset.GetRasterCount() < 1 || dataset.GetRasterXSize() < 1 || dataset.GetRasterYSize() < 1)
     throw Error(where, "'" + std::string(dataset.GetDescription()) + "' has no raster data",
                 "point `path` at a raster (gdalinfo FILE lists its bands)");
   for (int band = 1; band <= dataset.GetRasterCount(); ++band) checkNodata(*dataset.GetRasterBand(band), where);
-  ReadSize size = readSize(dataset);
-  const bool colour = kind == LayerKind::Color;
-  return colour ? readColour(dataset, size, where) : readValues(dataset, size, where);
+  if (pageFormatOf(kind) == PageFormat::Colour) checkColourBands(dataset, where);
+}
+
+void readWindow(GDALDataset& dataset, LayerKind kind, const RasterWindow& window, int width, int height,
+                std::span<std::byte> texels) {
+  if (pageFormatOf(kind) == PageFormat::Colour)
+    readColour(dataset, window, width, height, texels);
+  else
+    readValues(dataset, window, width, height, texels);
 }
 
 }  // namespace strata::gdal

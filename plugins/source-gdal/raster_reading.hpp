@@ -1,20 +1,36 @@
 #pragma once
+#include <cstddef>
+#include <span>
+
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
+#include <strata/page_source.hpp>
 #include <strata/port.hpp>
-#include <strata/raster_layer.hpp>
 
 namespace strata::gdal {
 
-// The longest side a raster is read at. Larger rasters are averaged down by GDAL while reading; paging
-// them at full resolution is the page cache's job. 8192 fits every OpenGL 4.5 GPU (which must offer
-// 16384) and keeps a colour raster at 8192x4096 texels to 256 MiB of half floats.
-inline constexpr int kLongestSide = 8192;
+// Checks, when the source opens, that `dataset` can be read as `kind` (colour kinds: 1 to 4 bands of 8
+// or 16 bits, taken as sRGB-encoded; other kinds: band 1, any numeric type) and that its nodata values
+// fit its bands. Throws strata::Error at `where`.
+void checkRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where);
 
-// Reads the whole raster as `kind` (colour kinds: 1 to 4 bands of 8 or 16 bits, taken as sRGB-encoded;
-// other kinds: band 1, any numeric type). Coverage comes from GDAL's mask band (nodata, alpha band or
-// mask file) and excludes NaN and infinite values. Throws strata::Error at `where`.
-RasterImage readRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where);
+// The page format a layer of `kind` is stored in.
+PageFormat pageFormatOf(LayerKind kind);
+
+// A rectangle of the raster's own texels.
+struct RasterWindow {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+};
+
+// Reads `window` averaged down to `width` x `height` texels (GDAL takes them from the overview nearest
+// in resolution when the file has overviews) into `texels`, in pageFormatOf(kind). Coverage comes from
+// GDAL's mask band (nodata, alpha band or mask file) and excludes NaN and infinite values. Throws
+// std::runtime_error naming the file when GDAL cannot read it.
+void readWindow(GDALDataset& dataset, LayerKind kind, const RasterWindow& window, int width, int height,
+                std::span<std::byte> texels);
 
 }  // namespace strata::gdal

@@ -1,13 +1,16 @@
-// source.gdal: a layer from any raster GDAL opens, in any registered projection, read whole (paging
-// comes with the page cache).
+// source.gdal: a layer from any raster GDAL opens, in any registered projection, of any size: its texels
+// reach the GPU page by page through the engine's page cache.
 #include <gdal_priv.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <memory>
 
+#include <strata/paged_raster_layer.hpp>
 #include <strata/plugin.hpp>
 #include <strata/plugin_registry.hpp>
-#include <strata/raster_layer.hpp>
 
+#include "gdal_page_source.hpp"
 #include "georeferencing.hpp"
 #include "raster_reading.hpp"
 
@@ -32,15 +35,12 @@ class GdalSource : public Node {
     georeference_ = georeferenceOf(*dataset, plugins_,
                                    {parameters_.string("projection"), parameters_.where("projection"),
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
-    image_ = readRaster(*dataset, kind_, where);
-    georeference_.geotransform = resampledGeotransform(georeference_.geotransform, dataset->GetRasterXSize(),
-                                                       dataset->GetRasterYSize(), image_.width, image_.height);
+    checkRaster(*dataset, kind_, where);
+    warnWithoutOverviews(*dataset);
+    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_);
   }
 
-  void createResources(GpuContext&) override {
-    layer_.upload(image_, georeference_);
-    image_ = {};  // the texture holds it now
-  }
+  void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
 
   Layer* layer() override { return &layer_; }
 
@@ -51,11 +51,25 @@ class GdalSource : public Node {
     return kind;
   }
 
+  // Coarse pages of a large raster without overviews are averaged from every texel under them: slow.
+  static void warnWithoutOverviews(GDALDataset& dataset) {
+    const int longest = std::max(dataset.GetRasterXSize(), dataset.GetRasterYSize());
+    if (longest <= kSlowWithoutOverviews || dataset.GetRasterBand(1)->GetOverviewCount() > 0) return;
+    std::fprintf(stderr,
+                 "strata: warning: '%s' (%dx%d) has no overviews, so its coarse pages are averaged from full "
+                 "resolution, slowly; `strata tile %s OUTPUT.tif` writes it as a tiled pyramid\n",
+                 dataset.GetDescription(), dataset.GetRasterXSize(), dataset.GetRasterYSize(), dataset.GetDescription());
+  }
+
+  // 4096 texels a side: a coarse page of such a raster averages 64 full-resolution pages, under a
+  // second's work; beyond, loading a view's first pages takes noticeably long.
+  static constexpr int kSlowWithoutOverviews = 4096;
+
   ParameterSet parameters_;
   const PluginRegistry& plugins_;
   LayerKind kind_;
-  RasterLayer layer_;
-  RasterImage image_;
+  PagedRasterLayer layer_;
+  std::shared_ptr<GdalPageSource> source_;
   RasterGeoreference georeference_;
 };
 
@@ -87,8 +101,14 @@ NodeTypeDeclaration declaration() {
   return type;
 }
 
+// GDAL's block cache defaults to 5% of RAM (6 GB on a 128 GB machine), which would put process memory far
+// beyond any page budget. Pages are read once and then held on the GPU, so GDAL only needs the few tiles
+// the pages being read straddle. A GDAL_CACHEMAX the user set is kept.
+constexpr GIntBig kBlockCacheBytes = 64 << 20;
+
 void registerTypes(PluginRegistrar& registrar) {
   GDALAllRegister();  // once, here: it is not safe to call while sources open on several workers
+  if (!CPLGetConfigOption("GDAL_CACHEMAX", nullptr)) GDALSetCacheMax64(kBlockCacheBytes);
   registrar.add(declaration());
 }
 

@@ -21,7 +21,7 @@ std::unique_ptr<Engine> makeEngine() {
 
 Image renderFrame(Engine& engine, const std::filesystem::path& pipelineFile, int width, int height) {
   engine.load(pipelineFile);
-  const FrameOutput& output = engine.render(width, height);
+  const FrameOutput& output = engine.renderComplete(width, height);
   return Image{width, height, readPixels(output.frame())};
 }
 

@@ -1,9 +1,11 @@
 #include <chrono>
+#include <cstdio>
 #include <thread>
 
 #include <strata/engine.hpp>
 #include <strata/gl.hpp>
 #include <strata/gl/shader_library.hpp>
+#include <strata/page_cache.hpp>
 
 #include "engine/node_graph.hpp"
 #include "engine/worker_pool.hpp"
@@ -18,7 +20,8 @@ struct Engine::Impl {
   WorkerPool workers;
   ShaderLibrary shaders;
   std::unique_ptr<Pipeline> pipeline;
-  std::unique_ptr<NodeGraph> graph;  // declared after the pipeline it points into: destroyed first
+  std::unique_ptr<PageCache> pages;
+  std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
   Camera camera;
   FrameStatistics statistics;
 };
@@ -27,6 +30,15 @@ namespace {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A page that cannot be read costs detail, not the frame: say so once, and how to check the file.
+void reportPageFailure(const PageFailure& failure) {
+  std::fprintf(stderr,
+               "strata: warning: cannot read '%s' (level %d, page %d, %d): %s; the coarser level stands in there\n"
+               "  fix: check that the file is complete and readable: gdalinfo -checksum '%s'\n",
+               failure.source.c_str(), failure.key.level, failure.key.column, failure.key.row, failure.reason.c_str(),
+               failure.source.c_str());
 }
 
 }  // namespace
@@ -44,8 +56,12 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
   auto pipeline = std::make_unique<Pipeline>(loadPipeline(file, overrides, impl_->registry));
   for (const ProjectionDeclaration* projection : impl_->registry.projections())
     for (const auto& [name, source] : projection->shaderSources) impl_->shaders.add(name, source);
-  GpuContext gpu{&impl_->shaders};
+  auto pages = std::make_unique<PageCache>(pipeline->cache);
+  GpuContext gpu{&impl_->shaders, pages.get()};
   auto graph = std::make_unique<NodeGraph>(*pipeline, impl_->registry, impl_->workers, gpu);
+  pages->allocate();
+  impl_->graph.reset();  // before the cache its layers attached to
+  impl_->pages = std::move(pages);
   impl_->graph = std::move(graph);
   impl_->pipeline = std::move(pipeline);
   impl_->camera = impl_->pipeline->camera;
@@ -69,11 +85,27 @@ const FrameOutput& Engine::render(int width, int height) {
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
+  impl_->pages->update(*frame.body, frame.view, frame.index);
+  for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
   impl_->graph->render(frame);
   impl_->statistics.renderMs = millisecondsSince(start);
   ++impl_->statistics.frame;
   return impl_->graph->output();
+}
+
+const FrameOutput& Engine::renderComplete(int width, int height) {
+  const FrameOutput* frame = &render(width, height);
+  while (impl_->pages->loading()) {
+    impl_->pages->waitForLoads();
+    frame = &render(width, height);
+  }
+  return *frame;
+}
+
+const PageCacheStatistics& Engine::pageCacheStatistics() const {
+  if (!impl_->pages) throw std::logic_error("Engine::pageCacheStatistics() before a pipeline was loaded");
+  return impl_->pages->statistics();
 }
 
 const FrameStatistics& Engine::statistics() const { return impl_->statistics; }

@@ -89,6 +89,10 @@ GLint ShaderProgram::location(const std::string& uniform) const {
 }
 
 void ShaderProgram::set(const std::string& u, int v) const { glProgramUniform1i(program_, location(u), v); }
+void ShaderProgram::set(const std::string& u, unsigned v) const { glProgramUniform1ui(program_, location(u), v); }
+void ShaderProgram::set(const std::string& u, const glm::ivec2& v) const {
+  glProgramUniform2iv(program_, location(u), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const std::string& u, float v) const { glProgramUniform1f(program_, location(u), v); }
 void ShaderProgram::set(const std::string& u, const glm::vec2& v) const {
   glProgramUniform2fv(program_, location(u), 1, glm::value_ptr(v));
@@ -109,6 +113,7 @@ void ShaderProgram::set(const std::string& u, const glm::mat4& v) const {
 TextureUnits::TextureUnits() { glGetIntegerv(GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, &available_); }
 
 void TextureUnits::bind(ShaderProgram& program, const std::string& sampler, GLuint texture) {
+  if (!bound_.insert(sampler).second) return;
   if (next_ >= available_)
     throw std::runtime_error("more textures than the " + std::to_string(available_) +
                              " texture units this GPU has; the page-cache atlas lifts this limit");

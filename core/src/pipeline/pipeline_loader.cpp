@@ -3,6 +3,7 @@
 //   strata: 1                                  # required: the format version; only 1 exists
 //   body: {name: Earth, radius: 6371000}       # optional (scene_parsing.hpp)
 //   camera: {lon: 10, lat: 20, altitude: 2e7}  # optional (scene_parsing.hpp)
+//   cache: {budget: 256}                       # optional: the page cache (scene_parsing.hpp)
 //   nodes:                                     # required: node id -> node (node_parsing.hpp)
 //     relief:  {type: source.gdal, path: egm96_15.gtx, kind: height, scale: 300}
 //     terrain: {type: geometry.icosahedral, height: relief}
@@ -33,7 +34,7 @@ namespace {
 using loader::SourceMap;
 
 constexpr std::int64_t kFormatVersion = 1;
-const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "nodes"};
+const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "nodes"};
 
 YAML::Node parseYaml(const std::string& text, const std::string& file) {
   try {
@@ -95,6 +96,8 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std
   pipeline.version = parseVersion(root, source);
   if (const YAML::Node body = root["body"]) pipeline.body = loader::parseBody(body, source);
   if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
+  pipeline.cache.where = {file.string()};
+  if (const YAML::Node cache = root["cache"]) pipeline.cache = loader::parseCache(cache, source);
   pipeline.nodes = parseNodes(root, {source, registry, baseDirectory(file)});
   return pipeline;
 }

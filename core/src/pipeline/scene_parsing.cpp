@@ -45,6 +45,24 @@ void requireMap(const YAML::Node& map, const SourceMap& source, const std::strin
   requireUniqueKeys(map, source, "key");
 }
 
+// The `cache:` keys: a whole number each, within what a machine can use.
+struct CacheField {
+  const char* name;
+  Interval allowed;
+  const char* units;
+  void (*apply)(PageCacheSettings&, std::int64_t);
+};
+
+const std::array<CacheField, 3> kCacheFields{{
+    // 16 MiB hold the upload staging and a few pages of each format.
+    {"budget", Interval::closed(16.0, 1 << 20), "MiB",
+     [](PageCacheSettings& cache, std::int64_t mib) { cache.budgetBytes = std::uint64_t(mib) << 20; }},
+    {"uploads_per_frame", Interval::closed(1.0, 256.0), "pages",
+     [](PageCacheSettings& cache, std::int64_t pages) { cache.uploadsPerFrame = int(pages); }},
+    {"loader_threads", Interval::closed(1.0, 64.0), "threads",
+     [](PageCacheSettings& cache, std::int64_t threads) { cache.loaderThreads = int(threads); }},
+}};
+
 }  // namespace
 
 Body parseBody(const YAML::Node& map, const SourceMap& source) {
@@ -74,6 +92,24 @@ Camera parseCamera(const YAML::Node& map, const SourceMap& source) {
   }
   camera.lon = wrapLongitude(camera.lon);
   return camera;
+}
+
+PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source) {
+  requireMap(map, source, "cache", "cache: {budget: 256}");
+  std::vector<std::string> keys;
+  for (const auto& field : kCacheFields) keys.emplace_back(field.name);
+  requireKnownKeys(map, keys, source, "cache");
+  PageCacheSettings cache;
+  cache.where = source.at(map);
+  for (const auto& field : kCacheFields) {
+    const YAML::Node value = map[field.name];
+    if (!value) continue;
+    const ValueContext context{source, std::string("cache '") + field.name + "'", {}};
+    const std::int64_t number = readInteger(value, context);
+    requireWithin(double(number), field.allowed, field.units, value, context);
+    field.apply(cache, number);
+  }
+  return cache;
 }
 
 }  // namespace strata::loader

@@ -3,6 +3,7 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
+#include <strata/page_cache_settings.hpp>
 
 #include "pipeline/source_map.hpp"
 
@@ -18,5 +19,11 @@ Body parseBody(const YAML::Node& map, const SourceMap& source);
 //   altitude: metres above the body's radius, > 0        heading: degrees, any value, kept as given
 //   tilt: degrees in [0, 90] (0 looks straight down)      fov: vertical, degrees in (0, 180)
 Camera parseCamera(const YAML::Node& map, const SourceMap& source);
+
+// cache: {budget, uploads_per_frame, loader_threads}, whole numbers (PageCacheSettings):
+//   budget: MiB of GPU memory for pages, upload staging included, in [16, 1048576]
+//   uploads_per_frame: pages copied to the GPU per frame, in [1, 256]
+//   loader_threads: threads reading pages, in [1, 64]
+PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source);
 
 }  // namespace strata::loader

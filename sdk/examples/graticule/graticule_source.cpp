@@ -135,8 +135,8 @@ strata::NodeTypeDeclaration declaration() {
        .minimum = 0.0, .maximum = 1.0, .doc = "line colour as linear RGB, each from 0 to 1", .count = 3},
       // 8: a 2880x1440 raster (32 MiB of half floats on the GPU, before mipmaps) with more texels per
       // degree than a whole-globe view like demo.yaml's has pixels even at 1920x1080 (under 4), so lines
-      // stay sharp. At most 22: 360 x 22 = 7920 texels, within the 8192 that source.gdal reads at most
-      // because every OpenGL 4.5 GPU holds it.
+      // stay sharp. At most 22: 360 x 22 = 7920 texels, within the 8192 that a RasterLayer's single
+      // texture may safely span on every OpenGL 4.5 GPU.
       {.name = "resolution", .type = ParameterType::Integer, .defaultValue = std::int64_t(8), .minimum = 1.0,
        .maximum = 22.0, .units = "texel/deg", .doc = "texels per degree of the raster the lines are drawn into"},
   };

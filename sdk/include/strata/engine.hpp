@@ -7,6 +7,7 @@
 
 #include <strata/camera.hpp>
 #include <strata/output.hpp>
+#include <strata/page_cache.hpp>
 #include <strata/pipeline.hpp>
 #include <strata/plugin_registry.hpp>
 
@@ -42,9 +43,14 @@ class Engine {
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames
-  // Renders one frame of width x height pixels and returns the pipeline's output.
+  // Renders one frame of width x height pixels and returns the pipeline's output. Paged layers show what
+  // the cache holds: pages still loading are stood in for by coarser ones.
   const FrameOutput& render(int width, int height);
+  // Renders until every page the view wants is loaded (or found unreadable) and returns the last frame:
+  // for still images.
+  const FrameOutput& renderComplete(int width, int height);
   const FrameStatistics& statistics() const;
+  const PageCacheStatistics& pageCacheStatistics() const;
 
  private:
   struct Impl;

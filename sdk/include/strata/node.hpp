@@ -18,6 +18,7 @@ class FrameOutput;
 class Node;
 class ShaderLibrary;
 class PluginRegistry;
+class PageCache;
 
 // What a node type's factory receives: its id, validated parameters and resolved inputs. The inputs were
 // made before this node (the graph is built in dependency order).
@@ -37,6 +38,7 @@ struct NodeSetup {
 // What the GL-thread hooks receive.
 struct GpuContext {
   ShaderLibrary* shaders = nullptr;
+  PageCache* pages = nullptr;  // where paged layers attach (strata/paged_raster_layer.hpp)
 };
 
 // One node of a pipeline. The scheduler calls, in this order:

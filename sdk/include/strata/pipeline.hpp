@@ -7,6 +7,7 @@
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 #include <strata/error.hpp>
+#include <strata/page_cache_settings.hpp>
 #include <strata/parameter.hpp>
 
 namespace strata {
@@ -29,6 +30,7 @@ struct Pipeline {
   int version = 1;
   Body body;
   Camera camera;
+  PageCacheSettings cache;
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
 
   const NodeDescription* find(const std::string& id) const;

@@ -1,4 +1,5 @@
 #pragma once
+#include <set>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,8 @@ class ShaderProgram {
   GLint location(const std::string& uniform) const;  // -1 when the uniform is unused
 
   void set(const std::string& uniform, int value) const;
+  void set(const std::string& uniform, unsigned value) const;
+  void set(const std::string& uniform, const glm::ivec2& value) const;
   void set(const std::string& uniform, float value) const;
   void set(const std::string& uniform, const glm::vec2& value) const;
   void set(const std::string& uniform, const glm::vec3& value) const;
@@ -46,13 +49,15 @@ class ShaderProgram {
 class TextureUnits {
  public:
   TextureUnits();  // on the GL thread
-  // Binds `texture` to the next free unit and points the sampler uniform at it.
+  // Binds `texture` to the next free unit and points the sampler uniform at it. A sampler already bound
+  // keeps its unit: textures several layers share (the page cache's) take one unit, not one per layer.
   void bind(ShaderProgram& program, const std::string& sampler, GLuint texture);
   int used() const { return next_; }
 
  private:
   int available_ = 0;
   int next_ = 0;
+  std::set<std::string> bound_;
 };
 
 }  // namespace strata

@@ -1,0 +1,86 @@
+#include <cmath>
+
+#include <strata/gl/shader_program.hpp>
+#include <strata/projected_raster_layer.hpp>
+
+namespace strata {
+namespace {
+
+bool isColour(LayerKind kind) {
+  return kind == LayerKind::Color || kind == LayerKind::Chroma || kind == LayerKind::Normal;
+}
+
+// Whether a raster `width` texels wide spans one period of a periodic projection.
+bool spansPeriod(const RasterGeoreference& georeference, int width) {
+  const std::optional<double> period = georeference.projection->periodX();
+  return period && std::abs(std::abs(georeference.geotransform[1]) * width - *period) <= 1e-9 * *period;
+}
+
+// Texture coordinates per GLSL map unit: u = x * s.x + s.y, v = y * s.z + s.w (see Projection::glslMapScale).
+glm::vec4 mapToTextureOf(const RasterGeoreference& georeference, int width, int height) {
+  const std::array<double, 6>& t = georeference.geotransform;
+  const double scale = georeference.projection->glslMapScale();
+  const double uSpan = t[1] * width, vSpan = t[5] * height;
+  return glm::vec4(glm::dvec4(scale / uSpan, -t[0] / uSpan, scale / vSpan, -t[3] / vSpan));
+}
+
+}  // namespace
+
+ProjectedRasterLayer::ProjectedRasterLayer(std::string nodeId, LayerKind kind)
+    : prefix_("layer_" + glslIdentifier(nodeId)), kind_(kind) {}
+
+void ProjectedRasterLayer::setValueTransform(double scale, double offset) {
+  scale_ = scale;
+  offset_ = offset;
+}
+
+void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int height) {
+  georeference_ = std::move(georeference);
+  const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
+  projection_ = {glm::vec4(projection[0]), glm::vec4(projection[1])};
+  mapToTexture_ = mapToTextureOf(georeference_, width, height);
+  repeatX_ = spansPeriod(georeference_, width);
+}
+
+std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered) const {
+  const std::string& p = prefix_;
+  const Projection& projection = *georeference_.projection;
+  const bool colour = isColour(kind_);
+  const std::string value = colour ? "vec4(t.rgb / t.a, t.a)"
+                                   : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
+  return "#include \"strata/projected_raster.glsl\"\n"
+         "#include \"" + projection.glslInclude() + "\"\n"
+         "uniform vec4 " + p + "_projectionA;\n"
+         "uniform vec4 " + p + "_projectionB;\n"
+         "uniform vec4 " + p + "_mapToTexture;\n"
+         "uniform vec2 " + p + "_scaleOffset;\n"
+         "uniform bool " + p + "_repeatX;\n" +
+         declarations +
+         "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
+         "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
+         "  return vec3(m.xy * " + p + "_mapToTexture.xz + " + p + "_mapToTexture.yw, m.z);\n"
+         "}\n"
+         "vec2 " + p + "_step(vec3 at, vec2 lonlat, vec2 step) {\n"
+         "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
+         "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
+         "}\n"
+         "vec4 " + p + "(SurfacePoint p) {\n"
+         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  bool repeatX = " + p + "_repeatX;\n"
+         "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
+         "  vec2 uv = at.xy, stepX = " + p + "_step(at, p.lonlat, p.lonlatDx), stepY = " + p + "_step(at, p.lonlat, p.lonlatDy);\n"
+         "  vec4 t = " + filtered + ";\n"
+         "  if (" + (colour ? "t.a" : "t.g") + " <= 0.0) return vec4(0.0);\n"
+         "  return " + value + ";\n"
+         "}\n";
+}
+
+void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
+  program.set(prefix_ + "_projectionA", projection_[0]);
+  program.set(prefix_ + "_projectionB", projection_[1]);
+  program.set(prefix_ + "_mapToTexture", mapToTexture_);
+  program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
+  program.set(prefix_ + "_repeatX", repeatX_ ? 1 : 0);
+}
+
+}  // namespace strata

@@ -1,0 +1,53 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <strata/gl.hpp>
+#include <strata/page_source.hpp>
+
+#include "paging/page_loader.hpp"
+
+namespace strata::paging {
+
+// One format's cache texture (seed 000 section 4.3.2): a 2D array texture whose layers are page slots
+// (the digest's GL 4.5 reading of the n x m atlas), and which page each slot holds. Slots are reused
+// least recently used first; slots used this frame and pinned slots (the coarsest levels, which stand
+// in for everything else) are never taken.
+class PageAtlas {
+ public:
+  PageAtlas(PageFormat format, int capacity);
+  ~PageAtlas();
+  PageAtlas(const PageAtlas&) = delete;
+  PageAtlas& operator=(const PageAtlas&) = delete;
+
+  GLuint texture() const { return texture_; }
+  PageFormat format() const { return format_; }
+  int capacity() const { return int(slots_.size()); }
+  int resident() const;
+  int pinned() const;
+
+  // A free slot, or else the least recently used one not used in `frame` and not pinned, whose page
+  // is returned in `evicted`. Empty when every slot is in use this frame.
+  std::optional<int> claim(std::uint64_t frame, std::optional<LayerPage>& evicted);
+  void hold(int slot, const LayerPage& page, std::uint64_t frame, bool pinned);
+  void touch(int slot, std::uint64_t frame) { slots_[std::size_t(slot)].lastUsed = frame; }
+
+ private:
+  struct Slot {
+    std::optional<LayerPage> page;
+    std::uint64_t lastUsed = 0;
+    bool pinned = false;
+  };
+
+  PageFormat format_;
+  GLuint texture_ = 0;
+  std::vector<Slot> slots_;
+};
+
+// GL's internal format, and the pixel format and type uploads use, for a page format.
+GLenum internalFormatOf(PageFormat format);
+GLenum pixelFormatOf(PageFormat format);
+GLenum pixelTypeOf(PageFormat format);
+
+}  // namespace strata::paging

@@ -1,0 +1,154 @@
+#include "paging/page_selection.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include <strata/projection.hpp>
+
+namespace strata::paging {
+namespace {
+
+constexpr int kSamples = 5;  // per side: a page's corners, edge midpoints and quarter points
+// Sampled points stand for a curved page, and terrain rises above the sphere: a point counts as above
+// the horizon up to 1% of R^2 below the horizon plane, and as in view 10% outside the frustum.
+constexpr double kHorizonSlack = 0.01;
+constexpr double kFrustumSlack = 0.1;
+// Bounds the traversal should the view ask for more pages than any cache holds.
+constexpr std::size_t kMostWanted = 8192;
+
+struct Viewing {
+  const Body& body;
+  const View& view;
+  double tanHalfHeight;
+  double tanHalfWidth;
+  double pixelAngle;   // rad per pixel, vertically
+  glm::dvec2 nadir;    // lon/lat (rad) below the eye
+  double altitude;     // m
+};
+
+Viewing viewingOf(const Body& body, const View& view) {
+  const double tanHalfHeight = std::tan(0.5 * view.verticalFov);
+  const double aspect = double(view.width) / double(std::max(1, view.height));
+  const double r = glm::length(view.eye);
+  return {body, view, tanHalfHeight, tanHalfHeight * aspect, view.verticalFov / double(std::max(1, view.height)),
+          {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / r, -1.0, 1.0))}, r - body.radius};
+}
+
+struct PageBounds {
+  bool visible = false;
+  bool refine = false;
+  double distance = std::numeric_limits<double>::max();
+};
+
+// Level texel coordinates to map coordinates through the geotransform (a level-l texel is 2^l raster
+// texels; the raster's own edge bounds the last one).
+glm::dvec2 mapOf(const SelectableLayer& layer, int level, glm::dvec2 texel) {
+  const std::array<double, 6>& t = layer.georeference->geotransform;
+  const double scale = std::ldexp(1.0, level);
+  const double x = std::min(texel.x * scale, double(layer.pyramid->width()));
+  const double y = std::min(texel.y * scale, double(layer.pyramid->height()));
+  return {t[0] + x * t[1], t[3] + y * t[5]};
+}
+
+// Whether the points lie outside one and the same plane of the view frustum.
+bool outsideFrustum(const std::vector<glm::dvec3>& eyePoints, const Viewing& viewing) {
+  const double tx = viewing.tanHalfWidth * (1.0 + kFrustumSlack), ty = viewing.tanHalfHeight * (1.0 + kFrustumSlack);
+  const auto allOutside = [&](auto outside) { return std::ranges::all_of(eyePoints, outside); };
+  return allOutside([](const glm::dvec3& q) { return q.z >= 0.0; }) ||
+         allOutside([&](const glm::dvec3& q) { return q.x < q.z * tx; }) ||
+         allOutside([&](const glm::dvec3& q) { return q.x > -q.z * tx; }) ||
+         allOutside([&](const glm::dvec3& q) { return q.y < q.z * ty; }) ||
+         allOutside([&](const glm::dvec3& q) { return q.y > -q.z * ty; });
+}
+
+// Whether the point below the eye falls in the page: then the page is as near as the altitude.
+bool holdsNadir(const SelectableLayer& layer, const PageKey& key, glm::dvec2 low, glm::dvec2 high,
+                const Viewing& viewing) {
+  const std::optional<glm::dvec2> map = layer.georeference->projection->forward(viewing.nadir);
+  if (!map) return false;
+  const std::array<double, 6>& t = layer.georeference->geotransform;
+  const double scale = std::ldexp(1.0, key.level);
+  const double x = (map->x - t[0]) / t[1] / scale, y = (map->y - t[3]) / t[5] / scale;
+  return x >= low.x && x <= high.x && y >= low.y && y <= high.y;
+}
+
+PageBounds boundsOf(const SelectableLayer& layer, const PageKey& key, const Viewing& viewing) {
+  const PagePyramid& pyramid = *layer.pyramid;
+  const glm::dvec2 low(key.column * kPagePayload, key.row * kPagePayload);
+  const glm::dvec2 high(std::min(low.x + kPagePayload, double(pyramid.levelWidth(key.level))),
+                        std::min(low.y + kPagePayload, double(pyramid.levelHeight(key.level))));
+  const glm::dvec2 spacing = (high - low) / double(kSamples - 1);
+  std::array<std::optional<glm::dvec3>, kSamples * kSamples> points;
+  std::vector<glm::dvec3> eyePoints;
+  PageBounds bounds;
+  bool aboveHorizon = false;
+  const double r2 = viewing.body.radius * viewing.body.radius;
+  for (int j = 0; j < kSamples; ++j)
+    for (int i = 0; i < kSamples; ++i) {
+      const std::optional<glm::dvec2> lonlat =
+          layer.georeference->projection->inverse(mapOf(layer, key.level, low + spacing * glm::dvec2(i, j)));
+      if (!lonlat) continue;
+      const glm::dvec3 p = viewing.body.radius * unitNormal(lonlat->x, lonlat->y);
+      points[std::size_t(j * kSamples + i)] = p;
+      eyePoints.push_back(viewing.view.toEye(p));
+      aboveHorizon = aboveHorizon || glm::dot(p, viewing.view.eye) >= r2 * (1.0 - kHorizonSlack);
+      bounds.distance = std::min(bounds.distance, glm::length(p - viewing.view.eye));
+    }
+  const bool nadir = holdsNadir(layer, key, low, high, viewing);
+  if (nadir) bounds.distance = std::min(bounds.distance, viewing.altitude);
+  bounds.visible = !eyePoints.empty() && (nadir || aboveHorizon) && !outsideFrustum(eyePoints, viewing);
+  // The largest ground distance between neighbouring samples, per texel between them.
+  double texelSize = 0.0;
+  for (int j = 0; j < kSamples; ++j)
+    for (int i = 0; i < kSamples; ++i) {
+      const auto& p = points[std::size_t(j * kSamples + i)];
+      if (!p) continue;
+      if (const auto& east = i + 1 < kSamples ? points[std::size_t(j * kSamples + i + 1)] : std::nullopt; east)
+        texelSize = std::max(texelSize, glm::length(*east - *p) / std::max(spacing.x, 1.0));
+      if (const auto& south = j + 1 < kSamples ? points[std::size_t((j + 1) * kSamples + i)] : std::nullopt; south)
+        texelSize = std::max(texelSize, glm::length(*south - *p) / std::max(spacing.y, 1.0));
+    }
+  bounds.refine = key.level > 0 && texelSize > bounds.distance * viewing.pixelAngle;
+  return bounds;
+}
+
+void addChildren(const PagePyramid& pyramid, const PageKey& key, std::vector<PageKey>& out) {
+  for (int row = 2 * key.row; row < 2 * key.row + 2; ++row)
+    for (int column = 2 * key.column; column < 2 * key.column + 2; ++column)
+      if (const PageKey child{key.level - 1, column, row}; pyramid.contains(child)) out.push_back(child);
+}
+
+void selectLayer(const SelectableLayer& layer, int number, const Viewing& viewing, std::vector<WantedPage>& wanted) {
+  const PagePyramid& pyramid = *layer.pyramid;
+  std::vector<PageKey> level;
+  const int top = pyramid.levels() - 1;
+  for (int row = 0; row < pyramid.pagesDown(top); ++row)
+    for (int column = 0; column < pyramid.pagesAcross(top); ++column) level.push_back({top, column, row});
+  for (int depth = 0; !level.empty() && wanted.size() < kMostWanted; ++depth) {
+    std::vector<PageKey> finer;
+    for (const PageKey& key : level) {
+      const PageBounds bounds = boundsOf(layer, key, viewing);
+      if (!bounds.visible) continue;
+      wanted.push_back({{number, key}, depth, bounds.distance});
+      if (bounds.refine) addChildren(pyramid, key, finer);
+    }
+    level = std::move(finer);
+  }
+}
+
+}  // namespace
+
+std::vector<WantedPage> selectPages(const std::vector<SelectableLayer>& layers, const Body& body, const View& view) {
+  const Viewing viewing = viewingOf(body, view);
+  std::vector<WantedPage> wanted;
+  for (std::size_t i = 0; i < layers.size(); ++i) selectLayer(layers[i], int(i), viewing, wanted);
+  std::ranges::sort(wanted, [](const WantedPage& a, const WantedPage& b) {
+    return a.depth != b.depth ? a.depth < b.depth : a.distance < b.distance;
+  });
+  return wanted;
+}
+
+}  // namespace strata::paging

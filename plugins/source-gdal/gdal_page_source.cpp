@@ -1,0 +1,68 @@
+#include "gdal_page_source.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "raster_reading.hpp"
+
+namespace strata::gdal {
+namespace {
+
+// The cache reports a failed page once, naming the file; GDAL's own printing would repeat it per block.
+// Handlers are per thread, so this quiets only the loader thread it runs on.
+struct QuietGdalErrors {
+  QuietGdalErrors() { CPLPushErrorHandler(CPLQuietErrorHandler); }
+  ~QuietGdalErrors() { CPLPopErrorHandler(); }
+  QuietGdalErrors(const QuietGdalErrors&) = delete;
+  QuietGdalErrors& operator=(const QuietGdalErrors&) = delete;
+};
+
+}  // namespace
+
+GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind)
+    : path_(dataset->GetDescription()), kind_(kind),
+      pyramid_(dataset->GetRasterXSize(), dataset->GetRasterYSize()) {
+  idle_.push_back(std::move(dataset));
+}
+
+GdalPageSource::~GdalPageSource() = default;
+
+PageFormat GdalPageSource::format() const { return pageFormatOf(kind_); }
+
+// A level texel covers 2^level raster texels; the raster's edge cuts the last row and column short,
+// and GDAL spreads what remains over them (under one level texel of shift, at the far edges only).
+void GdalPageSource::read(const LevelWindow& window, std::span<std::byte> texels) const {
+  const int scale = 1 << window.level;
+  const int x = window.x * scale, y = window.y * scale;
+  const RasterWindow raster{x, y, std::min(window.width * scale, pyramid_.width() - x),
+                            std::min(window.height * scale, pyramid_.height() - y)};
+  const Borrowed dataset(*this);
+  const QuietGdalErrors quiet;
+  readWindow(*dataset.handle, kind_, raster, window.width, window.height, texels);
+}
+
+GdalPageSource::Borrowed::Borrowed(const GdalPageSource& source) : owner(source), handle(source.borrow()) {}
+
+GdalPageSource::Borrowed::~Borrowed() { owner.giveBack(std::move(handle)); }
+
+std::unique_ptr<GDALDataset> GdalPageSource::borrow() const {
+  {
+    std::scoped_lock lock(mutex_);
+    if (!idle_.empty()) {
+      std::unique_ptr<GDALDataset> dataset = std::move(idle_.back());
+      idle_.pop_back();
+      return dataset;
+    }
+  }
+  CPLErrorReset();
+  std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path_.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+  if (!dataset) throw std::runtime_error("'" + path_ + "' can no longer be opened: " + CPLGetLastErrorMsg());
+  return dataset;
+}
+
+void GdalPageSource::giveBack(std::unique_ptr<GDALDataset> dataset) const {
+  std::scoped_lock lock(mutex_);
+  idle_.push_back(std::move(dataset));
+}
+
+}  // namespace strata::gdal

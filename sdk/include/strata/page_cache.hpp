@@ -1,0 +1,87 @@
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <strata/body.hpp>
+#include <strata/camera.hpp>
+#include <strata/page_cache_settings.hpp>
+#include <strata/page_source.hpp>
+#include <strata/raster_georeference.hpp>
+
+namespace strata {
+
+class ShaderProgram;
+class TextureUnits;
+
+// What the cache holds and did; `strata render --stats` and the benchmark print it.
+struct PageCacheStatistics {
+  int capacity = 0;               // pages the atlases hold
+  int resident = 0;               // pages in them now
+  int pinned = 0;                 // of those, the coarsest levels, never evicted
+  int wanted = 0;                 // pages the last frame asked for
+  int loading = 0;                // requested and not yet uploaded
+  std::uint64_t uploaded = 0;     // pages copied to the GPU since the pipeline loaded
+  std::uint64_t evicted = 0;
+  std::uint64_t failed = 0;       // pages that could not be read (each reported once)
+  std::uint64_t gpuBytes = 0;     // atlases, index and upload buffers
+  std::uint64_t stagingBytes = 0; // the most page memory held on the CPU between read and upload
+};
+
+// A page that could not be read. The cache never asks for it again; the coarser page it has stands in.
+struct PageFailure {
+  std::string source;  // PageSource::name(), usually the file
+  PageKey key;
+  std::string reason;
+};
+
+// Where a layer's pages are, for its GLSL (shaders/strata/paged_texture.glsl).
+struct PagedLayerPlacement {
+  unsigned indexBase = 0;  // the layer's first entry in the shared index
+  int levels = 0;
+  int width = 0;           // level 0, texels
+  int height = 0;
+  PageFormat format = PageFormat::Values;
+};
+
+// Virtual texturing for every paged layer of a pipeline (DESIGN.md "Data and paging"; seed 000 section
+// 4.3.2, after Lefohn et al.): one atlas of 514x514 pages per page format (a 2D array texture), one
+// index of page references shared by all layers, so the number of layers is not bounded by texture
+// units. Each frame the pages the view needs are chosen from their bounds, read on loader threads and
+// uploaded through pixel buffer objects; until a page arrives the nearest coarser one stands in.
+// All calls on the GL thread.
+class PageCache {
+ public:
+  explicit PageCache(PageCacheSettings settings = {});
+  ~PageCache();
+  PageCache(const PageCache&) = delete;
+  PageCache& operator=(const PageCache&) = delete;
+
+  // Adds a raster. `wrapX`: it spans one period of a periodic projection, so pages on its east and west
+  // edges border each other. Layers attach before the first update().
+  PagedLayerPlacement attach(std::shared_ptr<const PageSource> source, const RasterGeoreference& georeference,
+                             bool wrapX);
+  // Once the layers have attached: allocates the atlases and the index, and loads the coarsest level of
+  // every layer, which is pinned. Throws strata::Error when the budget cannot hold even those.
+  void allocate();
+  // Once a frame, before rendering: chooses the pages `view` needs, starts their loads, uploads finished
+  // ones within the per-frame budget and points the index at them. Allocates first if need be.
+  void update(const Body& body, const View& view, std::uint64_t frame);
+  // Whether pages the last update wanted are still on their way.
+  bool loading() const;
+  // Blocks until a requested page has been read (or `loading()` is false).
+  void waitForLoads() const;
+  // Binds the atlases and the index to the samplers paged_texture.glsl declares.
+  void bind(ShaderProgram& program, TextureUnits& units) const;
+
+  const PageCacheStatistics& statistics() const;
+  // Pages that could not be read since the last call, each once, in the order it happened.
+  std::vector<PageFailure> takeFailures();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace strata

@@ -1,0 +1,30 @@
+#pragma once
+#include <memory>
+#include <string>
+
+#include <strata/page_cache.hpp>
+#include <strata/projected_raster_layer.hpp>
+
+namespace strata {
+
+// A layer sampled through the page cache (DESIGN.md "Data and paging"): like RasterLayer, per sample the
+// projection maps longitude/latitude to texture coordinates, but the texels come from the pages of a
+// PageSource that the cache holds, so the raster may be far larger than GPU memory. Sources attach in
+// createResources(), to the cache GpuContext::pages.
+class PagedRasterLayer : public ProjectedRasterLayer {
+ public:
+  PagedRasterLayer(std::string nodeId, LayerKind kind);
+
+  // On the GL thread, before the first frame. The source's pyramid covers the raster `georeference`
+  // places.
+  void attach(PageCache& cache, std::shared_ptr<const PageSource> source, RasterGeoreference georeference);
+
+  std::string glsl() const override;
+  void bind(ShaderProgram& program, TextureUnits& units) const override;
+
+ private:
+  PageCache* cache_ = nullptr;
+  PagedLayerPlacement placement_;
+};
+
+}  // namespace strata

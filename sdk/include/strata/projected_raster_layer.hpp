@@ -1,0 +1,53 @@
+#pragma once
+#include <array>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include <strata/layer.hpp>
+#include <strata/raster_georeference.hpp>
+
+namespace strata {
+
+class ShaderProgram;
+
+// What every raster sampled through a projection shares, whether its texels sit in one texture
+// (RasterLayer) or in the page cache (PagedRasterLayer): per sample the projection's GLSL maps
+// longitude/latitude to map coordinates, the geotransform maps those to texture coordinates, and a
+// footprint step through the projection picks the level of detail (DESIGN.md "Projections").
+class ProjectedRasterLayer : public Layer {
+ public:
+  ProjectedRasterLayer(std::string nodeId, LayerKind kind);
+
+  // One-channel kinds: the value a shader sees is raw x scale + offset (e.g. int16 counts to metres).
+  void setValueTransform(double scale, double offset);
+
+  LayerKind kind() const override { return kind_; }
+  std::string samplingFunction() const override { return prefix_; }
+
+ protected:
+  // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.
+  void place(RasterGeoreference georeference, int width, int height);
+  // The layer's GLSL: the projection's, then `declarations` (the layer's textures and uniforms), then
+  // the sampling function. It evaluates `filtered`, a GLSL expression of vec2 uv (texture coordinates),
+  // stepX, stepY (their change to the next sample) and bool repeatX, giving the filtered texel: value x
+  // coverage and coverage (.rgb and .a for colour kinds, .r and .g for the others).
+  std::string samplingGlsl(const std::string& declarations, const std::string& filtered) const;
+  // Sets the uniforms samplingGlsl() declares.
+  void bindSampling(ShaderProgram& program) const;
+  const std::string& prefix() const { return prefix_; }
+  bool repeatX() const { return repeatX_; }
+
+ private:
+  std::string prefix_;  // GLSL identifier prefix unique to the node
+  LayerKind kind_;
+  double scale_ = 1.0;
+  double offset_ = 0.0;
+  RasterGeoreference georeference_;
+  // Fixed by place():
+  std::array<glm::vec4, 2> projection_{};  // Projection::glslParameters()
+  glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
+  bool repeatX_ = false;                   // the raster spans one period of a periodic projection
+};
+
+}  // namespace strata

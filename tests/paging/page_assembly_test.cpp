@@ -1,0 +1,80 @@
+// Assembling a page with its border (core/src/paging/page_assembly.hpp) from a source whose texels say
+// where they are: value = level column, coverage = level row + 1.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstring>
+#include <vector>
+
+#include "paging/page_assembly.hpp"
+
+namespace strata {
+namespace {
+
+class PositionSource : public PageSource {
+ public:
+  PositionSource(int width, int height) : pyramid_(width, height) {}
+  const PagePyramid& pyramid() const override { return pyramid_; }
+  PageFormat format() const override { return PageFormat::Values; }
+  std::string name() const override { return "positions"; }
+  void read(const LevelWindow& window, std::span<std::byte> texels) const override {
+    EXPECT_GE(window.x, 0);
+    EXPECT_GE(window.y, 0);
+    EXPECT_LE(window.x + window.width, pyramid_.levelWidth(window.level));
+    EXPECT_LE(window.y + window.height, pyramid_.levelHeight(window.level));
+    for (int y = 0; y < window.height; ++y)
+      for (int x = 0; x < window.width; ++x) {
+        const std::array<float, 2> texel{float(window.x + x), float(window.y + y + 1)};
+        std::memcpy(texels.data() + (std::size_t(y) * window.width + x) * kPageTexelBytes, texel.data(), 8);
+      }
+  }
+
+ private:
+  PagePyramid pyramid_;
+};
+
+struct Slot {
+  std::vector<std::byte> bytes = std::vector<std::byte>(kPageBytes);
+  // The level column and row slot texel (i, j) was filled from.
+  std::array<int, 2> at(int i, int j) const {
+    std::array<float, 2> texel{};
+    std::memcpy(texel.data(), bytes.data() + (std::size_t(j) * kPageSide + i) * kPageTexelBytes, 8);
+    return {int(texel[0]), int(texel[1]) - 1};
+  }
+};
+
+Slot assembled(const PositionSource& source, PageKey key, bool wrapX) {
+  Slot slot;
+  paging::assemblePage(source, key, wrapX, slot.bytes);
+  return slot;
+}
+
+TEST(PageAssembly, TheBorderHoldsTheNeighboursEdgeTexels) {
+  const PositionSource source(2000, 1600);
+  const Slot slot = assembled(source, {0, 1, 1}, false);
+  EXPECT_EQ(slot.at(1, 1), (std::array{512, 512}));       // the payload's first texel
+  EXPECT_EQ(slot.at(0, 0), (std::array{511, 511}));       // the north-west neighbour's corner
+  EXPECT_EQ(slot.at(513, 513), (std::array{1024, 1024}));  // the south-east neighbour's corner
+}
+
+TEST(PageAssembly, EdgesOfTheLevelAreClampedWithoutWrap) {
+  const PositionSource source(2000, 1600);
+  const Slot first = assembled(source, {0, 0, 0}, false);
+  EXPECT_EQ(first.at(0, 0), (std::array{0, 0}));
+  const Slot last = assembled(source, {0, 3, 3}, false);  // 464 x 64 texels of payload
+  EXPECT_EQ(last.at(464, 64), (std::array{1999, 1599}));
+  EXPECT_EQ(last.at(465, 65), (std::array{1999, 1599}));
+  EXPECT_EQ(last.at(513, 513), (std::array{1999, 1599}));
+}
+
+TEST(PageAssembly, AWrappingLevelBordersItsEastAndWestEdges) {
+  const PositionSource source(2000, 1000);
+  EXPECT_EQ(assembled(source, {0, 0, 0}, true).at(0, 5), (std::array{1999, 4}));
+  EXPECT_EQ(assembled(source, {0, 3, 0}, true).at(465, 5), (std::array{0, 4}));
+  const Slot whole = assembled(source, {2, 0, 0}, true);  // 500 x 250: one page holds the level
+  EXPECT_EQ(whole.at(0, 1), (std::array{499, 0}));
+  EXPECT_EQ(whole.at(501, 1), (std::array{0, 0}));
+}
+
+}  // namespace
+}  // namespace strata
