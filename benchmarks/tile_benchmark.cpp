@@ -81,10 +81,10 @@ void timeTiling(benchmark::State& state, const fs::path& output, double megapixe
 }
 
 void strataTile(benchmark::State& state, const fs::path& input, const fs::path& output, double megapixels) {
-  strata::PluginRegistry plugins;
-  plugins.loadDirectories(strata::defaultPluginDirectories());  // as the strata command does
   const strata::TilingRequest request{input, output, {}, true, {}};
   timeTiling(state, output, megapixels, [&] {
+    strata::PluginRegistry plugins;  // each `strata tile` loads them: projections from plugins count
+    plugins.loadDirectories(strata::defaultPluginDirectories());
     if (strata::tileRaster(plugins, request).reprojected)
       throw std::runtime_error("strata tile reprojected the input and gdal_translate would not: give a raster in a "
                                "projection Strata samples directly, e.g. longitude/latitude");

@@ -34,7 +34,9 @@ cmake --build build --target strata-benchmarks --parallel "$(nproc)" >/dev/null
 
 raster="$outdir/global-$large-color.tif"
 [ -f "$raster" ] || scripts/make-test-data.sh "$outdir" --large "$large"
+status=0
 for benchmark in build/bin/strata-bench-*; do
   echo "== $benchmark"
-  STRATA_BENCH_RASTER="$raster" "$benchmark" "${bench_args[@]}"
+  STRATA_BENCH_RASTER="$raster" "$benchmark" "${bench_args[@]}" || { echo "bench: $benchmark failed" >&2; status=1; }
 done
+exit $status
