@@ -16,13 +16,12 @@ void PagedRasterLayer::attach(PageCache& cache, std::shared_ptr<const PageSource
 
 std::string PagedRasterLayer::glsl() const {
   const std::string& p = prefix();
-  const bool colour = placement_.format == PageFormat::Colour;
   return samplingGlsl("#include \"strata/paged_texture.glsl\"\n"
-                      "#include \"strata/page_atlas_" + std::string(colour ? "colour" : "values") + ".glsl\"\n"
+                      "#include \"" + pageAtlasInclude(placement_.format) + "\"\n"
                       "uniform uint " + p + "_indexBase;\n"
                       "uniform int " + p + "_levels;\n"
                       "uniform ivec2 " + p + "_size;\n",
-                      "samplePaged(strata_pageAtlas" + std::string(colour ? "Colour" : "Values") + ", " + p +
+                      "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p +
                           "_indexBase, " + p + "_levels, " + p + "_size, uv, stepX, stepY, repeatX)");
 }
 

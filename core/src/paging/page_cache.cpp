@@ -28,10 +28,6 @@ struct AttachedLayer {
   std::set<PageKey> failed;         // never asked for again
 };
 
-const char* samplerOf(PageFormat format) {
-  return format == PageFormat::Colour ? "strata_pageAtlasColour" : "strata_pageAtlasValues";
-}
-
 }  // namespace
 
 struct PageCache::Impl {
@@ -59,6 +55,14 @@ struct PageCache::Impl {
   PageCacheStatistics statistics;
   std::vector<PageFailure> failures;
 };
+
+std::string pageAtlasInclude(PageFormat format) {
+  return format == PageFormat::Colour ? "strata/page_atlas_colour.glsl" : "strata/page_atlas_values.glsl";
+}
+
+std::string pageAtlasSampler(PageFormat format) {
+  return format == PageFormat::Colour ? "strata_pageAtlasColour" : "strata_pageAtlasValues";
+}
 
 PageCache::PageCache(PageCacheSettings settings) : impl_(std::make_unique<Impl>(std::move(settings))) {}
 
@@ -100,7 +104,7 @@ void PageCache::waitForLoads() const {
 void PageCache::bind(ShaderProgram& program, TextureUnits& units) const {
   units.bind(program, "strata_pageIndex", impl_->index.texture());
   for (const auto& [format, atlas] : impl_->atlases)
-    if (program.location(samplerOf(format)) >= 0) units.bind(program, samplerOf(format), atlas->texture());
+    if (program.location(pageAtlasSampler(format)) >= 0) units.bind(program, pageAtlasSampler(format), atlas->texture());
 }
 
 const PageCacheStatistics& PageCache::statistics() const { return impl_->statistics; }

@@ -45,6 +45,11 @@ struct PagedLayerPlacement {
   PageFormat format = PageFormat::Values;
 };
 
+// The GLSL of a page format's atlas: the file of the shader library that declares its sampler, and the
+// sampler's name. A paged layer includes the one and samples the other; the cache binds it.
+std::string pageAtlasInclude(PageFormat format);
+std::string pageAtlasSampler(PageFormat format);
+
 // Virtual texturing for every paged layer of a pipeline (DESIGN.md "Data and paging"; seed 000 section
 // 4.3.2, after Lefohn et al.): one atlas of 514x514 pages per page format (a 2D array texture), one
 // index of page references shared by all layers, so the number of layers is not bounded by texture
