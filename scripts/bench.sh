@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the benchmarks into build/ (configuring it as scripts/make-test-data.sh does) and runs each of
-# build/bin/strata-bench-* on one large raster, named to it by STRATA_BENCH_RASTER: the global colour GeoTIFF
-# scripts/make-test-data.sh --large writes into OUTDIR (default build/bench-data), made unless it is there.
+# build/bin/strata-bench-* on one large raster: STRATA_BENCH_RASTER names the global colour GeoTIFF
+# scripts/make-test-data.sh --large writes into OUTDIR (default build/bench-data), and STRATA_BENCH_COG
+# the Cloud Optimized GeoTIFF strata tile makes of it there; each is made unless it is there.
 #   scripts/bench.sh [--large WIDTHxHEIGHT] [--out OUTDIR] [-- BENCHMARK_FLAGS...]
 # --large defaults to 40000x20000. Flags after -- go to every benchmark, e.g. -- --benchmark_format=json.
 # What each benchmark measures, and results: docs/benchmarks.md.
@@ -17,7 +18,7 @@ while [ $# -gt 0 ]; do
     --out) [ $# -ge 2 ] || { echo "bench: --out needs a directory" >&2; exit 1; }
            outdir=$(realpath -m "$2"); shift 2 ;;  # relative to where the script was run from
     --) shift; bench_args=("$@"); break ;;
-    -h|--help) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench: unknown argument '$1' (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -33,10 +34,13 @@ fi
 cmake --build build --target strata-benchmarks --parallel "$(nproc)" >/dev/null
 
 raster="$outdir/global-$large-color.tif"
+cog="$outdir/global-$large-color-cog.tif"
 [ -f "$raster" ] || scripts/make-test-data.sh "$outdir" --large "$large"
+[ -f "$cog" ] || build/bin/strata tile "$raster" "$cog"
 status=0
 for benchmark in build/bin/strata-bench-*; do
   echo "== $benchmark"
-  STRATA_BENCH_RASTER="$raster" "$benchmark" "${bench_args[@]}" || { echo "bench: $benchmark failed" >&2; status=1; }
+  STRATA_BENCH_RASTER="$raster" STRATA_BENCH_COG="$cog" "$benchmark" "${bench_args[@]}" ||
+    { echo "bench: $benchmark failed" >&2; status=1; }
 done
 exit $status

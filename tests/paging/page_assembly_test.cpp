@@ -1,9 +1,12 @@
 // Assembling a page with its border (core/src/paging/page_assembly.hpp) from a source whose texels say
-// where they are: value = level column, coverage = level row + 1.
+// where they are: value = level column, coverage = level row + 1. A source may have one column it cannot
+// read, as a damaged tile would.
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "paging/page_assembly.hpp"
@@ -13,7 +16,8 @@ namespace {
 
 class PositionSource : public PageSource {
  public:
-  PositionSource(int width, int height) : pyramid_(width, height) {}
+  PositionSource(int width, int height, int unreadableColumn = -1)
+      : pyramid_(width, height), unreadableColumn_(unreadableColumn) {}
   const PagePyramid& pyramid() const override { return pyramid_; }
   PageFormat format() const override { return PageFormat::Values; }
   std::string name() const override { return "positions"; }
@@ -22,6 +26,8 @@ class PositionSource : public PageSource {
     EXPECT_GE(window.y, 0);
     EXPECT_LE(window.x + window.width, pyramid_.levelWidth(window.level));
     EXPECT_LE(window.y + window.height, pyramid_.levelHeight(window.level));
+    if (unreadableColumn_ >= window.x && unreadableColumn_ < window.x + window.width)
+      throw std::runtime_error("column " + std::to_string(unreadableColumn_) + " is damaged");
     for (int y = 0; y < window.height; ++y)
       for (int x = 0; x < window.width; ++x) {
         const std::array<float, 2> texel{float(window.x + x), float(window.y + y + 1)};
@@ -31,6 +37,7 @@ class PositionSource : public PageSource {
 
  private:
   PagePyramid pyramid_;
+  int unreadableColumn_;
 };
 
 struct Slot {
@@ -74,6 +81,20 @@ TEST(PageAssembly, AWrappingLevelBordersItsEastAndWestEdges) {
   const Slot whole = assembled(source, {2, 0, 0}, true);  // 500 x 250: one page holds the level
   EXPECT_EQ(whole.at(0, 1), (std::array{499, 0}));
   EXPECT_EQ(whole.at(501, 1), (std::array{0, 0}));
+}
+
+TEST(PageAssembly, AnUnreadableNeighbourLeavesTheBorderClampedToThePagesOwnEdge) {
+  const PositionSource source(2000, 1600, 1024);  // the first column of page column 2
+  const Slot slot = assembled(source, {0, 1, 1}, false);
+  EXPECT_EQ(slot.at(0, 0), (std::array{512, 512}));       // no longer the north-west neighbour's corner
+  EXPECT_EQ(slot.at(256, 256), (std::array{767, 767}));   // the payload as ever
+  EXPECT_EQ(slot.at(513, 513), (std::array{1023, 1023}));  // no longer the south-east neighbour's corner
+}
+
+TEST(PageAssembly, AnUnreadablePageThrows) {
+  const PositionSource source(2000, 1600, 700);
+  Slot slot;
+  EXPECT_THROW(paging::assemblePage(source, {0, 1, 1}, false, slot.bytes), std::runtime_error);
 }
 
 }  // namespace

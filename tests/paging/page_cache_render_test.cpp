@@ -118,7 +118,8 @@ TEST_F(PageCacheRendering, TheLeastRecentlyUsedPagesAreEvictedAsTheViewMoves) {
 
 // The view looks down on full-resolution tile (3, 1), 1500 km below: level 0 is wanted there. With that
 // tile damaged, level 1 (from the COG's overview) stands in; the field is smooth, so the picture stays
-// within 2 levels of the intact one, where a masked page would show the 0.18 grey, 80 levels away.
+// within 2 levels of the intact one, where a masked page would show the 0.18 grey, 80 levels away. Only
+// that page fails: its neighbours, whose borders it would give, clamp their borders instead.
 TEST_F(PageCacheRendering, AnUnreadablePageIsStoodInForByTheCoarserLevel) {
   const std::filesystem::path intact = scratch_.path() / "intact.tif", damaged = scratch_.path() / "damaged.tif";
   const PluginRegistry plugins;
@@ -130,7 +131,7 @@ TEST_F(PageCacheRendering, AnUnreadablePageIsStoodInForByTheCoarserLevel) {
   const Image expected = renderFrame(*reference, pipeline(intact, "{}", -22.5, 22.5, 1.5e6), kFrame, kFrame);
   auto engine = makeEngine();
   const Image stoodIn = renderFrame(*engine, pipeline(damaged, "{}", -22.5, 22.5, 1.5e6), kFrame, kFrame);
-  EXPECT_GE(engine->pageCacheStatistics().failed, 1u);
+  EXPECT_EQ(engine->pageCacheStatistics().failed, 1u);
   EXPECT_LE(largestDifference(expected, stoodIn), 2);
 }
 

@@ -1,5 +1,7 @@
 #include <chrono>
 #include <cstdio>
+#include <set>
+#include <string>
 #include <thread>
 
 #include <strata/engine.hpp>
@@ -24,6 +26,7 @@ struct Engine::Impl {
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
   Camera camera;
   FrameStatistics statistics;
+  std::set<std::string> sourcesAdvised;  // the files whose page failures have been given the fix
 };
 
 namespace {
@@ -32,13 +35,14 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-// A page that cannot be read costs detail, not the frame: say so once, and how to check the file.
-void reportPageFailure(const PageFailure& failure) {
-  std::fprintf(stderr,
-               "strata: warning: cannot read '%s' (level %d, page %d, %d): %s; the coarser level stands in there\n"
-               "  fix: check that the file is complete and readable: gdalinfo -checksum '%s'\n",
-               failure.source.c_str(), failure.key.level, failure.key.column, failure.key.row, failure.reason.c_str(),
-               failure.source.c_str());
+// A page that cannot be read costs detail, not the frame: say so once per page, and how to check the
+// file once per file.
+void reportPageFailure(const PageFailure& failure, std::set<std::string>& sourcesAdvised) {
+  std::fprintf(stderr, "strata: warning: cannot read '%s' (level %d, page %d, %d): %s; the coarser level stands in there\n",
+               failure.source.c_str(), failure.key.level, failure.key.column, failure.key.row, failure.reason.c_str());
+  if (sourcesAdvised.insert(failure.source).second)
+    std::fprintf(stderr, "  fix: check that the file is complete and readable: gdalinfo -checksum '%s'\n",
+                 failure.source.c_str());
 }
 
 }  // namespace
@@ -66,6 +70,7 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
   impl_->pipeline = std::move(pipeline);
   impl_->camera = impl_->pipeline->camera;
   impl_->statistics = {};
+  impl_->sourcesAdvised.clear();
 }
 
 bool Engine::loaded() const { return impl_->graph != nullptr; }
@@ -86,7 +91,7 @@ const FrameOutput& Engine::render(int width, int height) {
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
   impl_->pages->update(*frame.body, frame.view, frame.index);
-  for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure);
+  for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
   impl_->graph->render(frame);
   impl_->statistics.renderMs = millisecondsSince(start);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <exception>
 #include <optional>
 #include <vector>
 
@@ -23,27 +24,32 @@ struct WindowTexels {
   }
 };
 
-}  // namespace
+// The level texels a page may be filled from: [first, last] in each direction, and whether the columns
+// wrap across the level's seam.
+struct ReadableRange {
+  int firstColumn, lastColumn, firstRow, lastRow;
+  bool wrapX;
+};
 
-void assemblePage(const PageSource& source, const PageKey& key, bool wrapX, std::span<std::byte> slot) {
-  const PagePyramid& pyramid = source.pyramid();
-  const int width = pyramid.levelWidth(key.level), height = pyramid.levelHeight(key.level);
+// Fills the slot from the texels in `range`; texels outside it are clamped to its edges, except the one
+// column across a wrapping seam. Only the first column past either edge is ever filtered against; the
+// rest of a partial page is clamped like the rows.
+void copyPage(const PageSource& source, const PageKey& key, const ReadableRange& range, std::span<std::byte> slot) {
+  const int width = source.pyramid().levelWidth(key.level);
   const int x0 = key.column * kPagePayload - kPageBorder, y0 = key.row * kPagePayload - kPageBorder;
-  // Only the first column past either edge is ever filtered against; the rest of a partial page is
-  // clamped like the rows.
   const auto column = [&](int i) {
     const int x = x0 + i;
-    if (wrapX && x == -1) return width - 1;
-    if (wrapX && x == width) return 0;
-    return std::clamp(x, 0, width - 1);
+    if (range.wrapX && x == -1) return width - 1;
+    if (range.wrapX && x == width) return 0;
+    return std::clamp(x, range.firstColumn, range.lastColumn);
   };
-  const auto row = [&](int j) { return std::clamp(y0 + j, 0, height - 1); };
-  const int left = std::max(0, x0), right = std::min(width, x0 + kPageSide);
+  const auto row = [&](int j) { return std::clamp(y0 + j, range.firstRow, range.lastRow); };
+  const int left = std::max(range.firstColumn, x0), right = std::min(range.lastColumn + 1, x0 + kPageSide);
   const int top = row(0), bottom = row(kPageSide - 1) + 1;
   const WindowTexels main(source, {key.level, left, top, right - left, bottom - top});
   // At an edge of a wrapping level the column across the seam lies outside the main window.
   std::optional<WindowTexels> seam;
-  if (wrapX)
+  if (range.wrapX)
     for (const int i : {0, width - x0})
       if (i >= 0 && i < kPageSide && !main.holdsColumn(column(i)))
         seam.emplace(source, LevelWindow{key.level, column(i), top, 1, bottom - top});
@@ -54,6 +60,22 @@ void assemblePage(const PageSource& source, const PageKey& key, bool wrapX, std:
       const int x = column(i);
       std::memcpy(out, (main.holdsColumn(x) ? main : *seam).texel(x, y), kPageTexelBytes);
     }
+  }
+}
+
+}  // namespace
+
+void assemblePage(const PageSource& source, const PageKey& key, bool wrapX, std::span<std::byte> slot) {
+  const PagePyramid& pyramid = source.pyramid();
+  const int width = pyramid.levelWidth(key.level), height = pyramid.levelHeight(key.level);
+  try {
+    copyPage(source, key, {0, width - 1, 0, height - 1, wrapX}, slot);
+  } catch (const std::exception&) {
+    // A neighbour's texels may be what cannot be read (a damaged tile beside this page): without them
+    // the border is the page's own edge, clamped. Where the page itself is unreadable, this throws too.
+    const int x0 = key.column * kPagePayload, y0 = key.row * kPagePayload;
+    copyPage(source, key,
+             {x0, std::min(width, x0 + kPagePayload) - 1, y0, std::min(height, y0 + kPagePayload) - 1, false}, slot);
   }
 }
 
