@@ -1,0 +1,47 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <strata/camera.hpp>
+
+#include "edge_windings.hpp"
+#include "geodesic_subdivision.hpp"
+#include "patch_tree.hpp"
+
+namespace strata::icosahedral {
+
+// One corner of a seed as the compute pass reads it (std430: three vec4).
+struct SeedCorner {
+  glm::vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: unused
+  glm::vec4 normal;    // xyz: planet-fixed unit normal
+  glm::vec4 lonlat;    // xy: rad from the frame's reference, longitude unwrapped
+};
+
+// glMultiDrawElementsIndirect's command, as OpenGL lays it out.
+struct DrawElementsIndirectCommand {
+  std::uint32_t count;
+  std::uint32_t instanceCount;
+  std::uint32_t firstIndex;
+  std::int32_t baseVertex;
+  std::uint32_t baseInstance;
+};
+
+// What one frame uploads for the visible patches (seed 000 section 3.2.4, its "seed textures"): three
+// corners per patch, computed in double and made eye-relative before they become float (section 3.2.5),
+// and the draw of each patch with the edge winding its coarser neighbours call for (section 3.4.1).
+struct PatchBatch {
+  LonLatReference reference;  // the point below the eye: longitude and latitude are measured from it
+  // The angle between neighbouring vertices, rad, per metre of their distance from the eye: the median
+  // over the patches. Patches of equal solid angle make it nearly constant, and as a function of distance
+  // alone it gives a vertex shared by two patches the same height footprint in both, so that the displaced
+  // surface stays closed where their levels differ.
+  double footprintPerMetre = 0.0;
+  std::vector<SeedCorner> seeds;
+  std::vector<DrawElementsIndirectCommand> draws;
+};
+
+PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
+                        const SubdivisionTable& table, const EdgeWindings& windings);
+
+}  // namespace strata::icosahedral

@@ -1,0 +1,47 @@
+#pragma once
+#include <array>
+
+#include <strata/gl.hpp>
+
+#include "patch_batch.hpp"
+
+namespace strata::icosahedral {
+
+// The GPU side of the patches: the dependence table and the edge windings (uploaded once), the frame's
+// seeds and draws, and the subdivided vertices, which the compute pass writes and the draw reads as
+// vertex attributes with nothing copied (digest 000 sections 3.8 and 4.1, GL 4.5 forms).
+class PatchBuffers {
+ public:
+  PatchBuffers(const SubdivisionTable& table, const EdgeWindings& windings);
+  ~PatchBuffers();
+  PatchBuffers(const PatchBuffers&) = delete;
+  PatchBuffers& operator=(const PatchBuffers&) = delete;
+
+  // Uploads the frame's seeds and draws, growing the buffers when there are more patches than before.
+  void upload(const PatchBatch& batch);
+  // Subdivides the uploaded patches with the program in use (subdivide_patches.comp).
+  void subdivide() const;
+  // Draws the subdivided patches with the program in use.
+  void draw() const;
+
+  // The subdivided vertices of the uploaded patches, read back from the GPU (which this waits for):
+  // for tests and inspection.
+  struct Vertex {
+    glm::vec4 position;  // as SeedCorner
+    glm::vec4 normal;    // xyz: planet-fixed unit normal; w: angle between the parents, rad
+    glm::vec2 lonlat;    // rad from the frame's reference
+  };
+  std::vector<Vertex> readVertices() const;
+
+ private:
+  enum Buffer { kParents, kElements, kSeeds, kDraws, kPositions, kNormals, kLonLats, kBufferCount };
+  void reserve(std::size_t patches);
+
+  std::size_t verticesPerPatch_;
+  std::size_t capacity_ = 0;  // patches the per-frame buffers hold
+  std::size_t patches_ = 0;   // patches uploaded this frame
+  std::array<GLuint, kBufferCount> buffers_{};
+  GLuint vertexArray_ = 0;
+};
+
+}  // namespace strata::icosahedral

@@ -1,0 +1,64 @@
+#include "patch_shell.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace strata::icosahedral {
+namespace {
+
+// The largest dot(direction, u) over the unit vectors u of the shorter great-circle arc from a to b.
+double largestDotOnArc(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& direction) {
+  const glm::dvec3 pole = glm::cross(a, b);
+  const double poleLength = glm::length(pole);
+  double best = std::max(glm::dot(a, direction), glm::dot(b, direction));
+  if (poleLength == 0.0) return best;
+  // The direction's nearest point on the whole great circle, kept where it falls between a and b.
+  const glm::dvec3 inPlane = direction - pole * (glm::dot(direction, pole) / (poleLength * poleLength));
+  const double inPlaneLength = glm::length(inPlane);
+  if (inPlaneLength == 0.0) return best;
+  const glm::dvec3 nearest = inPlane / inPlaneLength;
+  if (glm::dot(glm::cross(a, nearest), pole) >= 0.0 && glm::dot(glm::cross(nearest, b), pole) >= 0.0)
+    best = std::max(best, inPlaneLength);
+  return best;
+}
+
+}  // namespace
+
+bool holds(const SphericalTriangle& t, const glm::dvec3& unit) {
+  return glm::dot(glm::cross(t[0], t[1]), unit) >= 0.0 && glm::dot(glm::cross(t[1], t[2]), unit) >= 0.0 &&
+         glm::dot(glm::cross(t[2], t[0]), unit) >= 0.0;
+}
+
+double largestDot(const SphericalTriangle& t, const glm::dvec3& direction) {
+  const double length = glm::length(direction);
+  if (length > 0.0 && holds(t, direction / length)) return length;
+  return std::max({largestDotOnArc(t[0], t[1], direction), largestDotOnArc(t[1], t[2], direction),
+                   largestDotOnArc(t[2], t[0], direction)});
+}
+
+bool outsidePlane(const PatchShell& shell, const glm::dvec3& normal, double offset) {
+  const double support = largestDot(shell.corners, normal);
+  const double radius = support > 0.0 ? shell.outerRadius : shell.innerRadius;
+  return support * radius + offset < 0.0;
+}
+
+bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occluderRadius) {
+  const double distance = glm::length(eye);
+  // An eye below the terrain's floor, or a shell reaching no higher than it: nothing is ruled out.
+  if (distance <= occluderRadius || shell.outerRadius < occluderRadius) return false;
+  const double hidden = std::acos(occluderRadius / distance) + std::acos(occluderRadius / shell.outerRadius);
+  if (hidden >= std::numbers::pi) return false;
+  // Hidden when even the shell's nearest direction to the eye lies beyond the angle.
+  return largestDot(shell.corners, eye / distance) < std::cos(hidden);
+}
+
+double solidAngle(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {
+  const glm::dvec3 a = corners[0] * radius - eye, b = corners[1] * radius - eye, c = corners[2] * radius - eye;
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  const double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
+  const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+}  // namespace strata::icosahedral

@@ -1,0 +1,37 @@
+#pragma once
+#include <glm/glm.hpp>
+
+#include "icosahedron.hpp"
+
+namespace strata::icosahedral {
+
+// The terrain a patch can hold: the wedge of its three great-circle planes between two radii, the
+// "surface shell" of seed 000 section 3.2.3. Everything here is exact for the shell, so culling by it
+// never removes terrain that lies inside it.
+struct PatchShell {
+  SphericalTriangle corners;  // planet-fixed unit normals, counter-clockwise from outside
+  double innerRadius;         // m: the body's radius plus the lowest height inside
+  double outerRadius;         // m: the body's radius plus the highest height inside
+};
+
+// The largest value of dot(direction, u) over the unit vectors u of the spherical triangle: the
+// triangle's support function, exact (the direction's nearest point lies inside or on an edge arc).
+double largestDot(const SphericalTriangle& triangle, const glm::dvec3& direction);
+
+// Whether the unit vector lies inside the spherical triangle (edges included).
+bool holds(const SphericalTriangle& triangle, const glm::dvec3& unit);
+
+// Whether every point of the shell is strictly on the negative side of the plane dot(normal, p) + offset = 0.
+bool outsidePlane(const PatchShell& shell, const glm::dvec3& normal, double offset);
+
+// Whether the body hides the whole shell from the eye. The body is taken as the sphere of
+// `occluderRadius`, below which no terrain lies anywhere; a point at radius R is hidden when its angle
+// from the eye's direction exceeds acos(r/d) + acos(r/R) (digest 000 section 2.2, the conservative form
+// of seed 000's horizon plane r^2/d, which alone would cull mountains that rise above the horizon).
+bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occluderRadius);
+
+// The solid angle, in steradians, that the flat triangle of the patch's corners on the sphere of
+// `radius` subtends at the eye (Van Oosterom and Strackee, digest 000 section 2.1).
+double solidAngle(const SphericalTriangle& corners, double radius, const glm::dvec3& eye);
+
+}  // namespace strata::icosahedral

@@ -1,0 +1,66 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "icosahedron.hpp"
+
+namespace strata::icosahedral {
+
+// One patch of the tree: a face of the icosahedron or a quarter of its parent.
+struct PatchNode {
+  std::array<std::uint32_t, 3> corners{};  // vertices, counter-clockwise from outside
+  std::int32_t parent = -1;
+  std::array<std::int32_t, 4> children{-1, -1, -1, -1};  // corner 0's, 1's, 2's, then the middle one
+  int level = 0;
+  bool alive = false;
+  bool visible = false;      // set by the tree's visibility test
+  double solidAngle = 0.0;   // sr; 0 when not visible
+  bool leaf() const { return children[0] < 0; }
+};
+
+// The shape of the patch tree: patches, their shared vertices and who lies across each edge. A split
+// makes four children from the edge midpoints; vertices are shared by every patch that touches them,
+// so neighbours hold the same corners bit for bit (digest 000 section 2.5). Edge e of a patch runs
+// from corner e to corner e + 1.
+class PatchTopology {
+ public:
+  static constexpr std::int32_t kFaces = 20;
+  PatchTopology();  // the icosahedron's faces, ids 0 to kFaces - 1
+
+  std::size_t capacity() const { return nodes_.size(); }  // ids are below this; some are not alive
+  const PatchNode& operator[](std::int32_t id) const { return nodes_[std::size_t(id)]; }
+  PatchNode& operator[](std::int32_t id) { return nodes_[std::size_t(id)]; }
+  SphericalTriangle cornersOf(std::int32_t id) const;
+
+  // The patch of the same level across an edge, or -1 where the neighbour there is coarser.
+  std::int32_t across(std::int32_t id, int edge) const;
+  // The coarser patch across an edge that has no patch of the same level across it.
+  std::int32_t coarserNeighbour(std::int32_t id, int edge) const;
+
+  void split(std::int32_t leaf);
+  void merge(std::int32_t parent);  // the four children must be leaves
+
+ private:
+  struct Vertex {
+    glm::dvec3 normal;
+    std::uint64_t splitEdge;  // the edge it is the midpoint of, or kNoEdge for the icosahedron's own
+    int users;
+  };
+
+  std::int32_t addNode(const std::array<std::uint32_t, 3>& corners, std::int32_t parent, int level);
+  void removeNode(std::int32_t id);
+  std::uint32_t addVertex(const glm::dvec3& normal, std::uint64_t splitEdge);
+  std::uint32_t midpoint(std::uint32_t a, std::uint32_t b);
+  void release(std::uint32_t vertex);
+
+  std::vector<PatchNode> nodes_;
+  std::vector<std::int32_t> freeNodes_;
+  std::vector<Vertex> vertices_;
+  std::vector<std::uint32_t> freeVertices_;
+  std::unordered_map<std::uint64_t, std::uint32_t> midpoints_;            // edge -> its midpoint
+  std::unordered_map<std::uint64_t, std::array<std::int32_t, 2>> sides_;  // edge -> the patch on each side
+};
+
+}  // namespace strata::icosahedral

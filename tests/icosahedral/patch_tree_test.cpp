@@ -1,0 +1,150 @@
+// The patch tree (plugins/geometry-icosahedral/patch_tree.hpp) from orbit and from the ground: it keeps
+// near its number of visible patches and stays put while the view does, neighbouring leaves differ by at
+// most one level with the coarser edges flagged, and no terrain the eye can see is culled.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include <strata/body.hpp>
+#include <strata/camera.hpp>
+
+#include "patch_tree.hpp"
+
+namespace strata::icosahedral {
+namespace {
+
+constexpr double kEarth = 6371000.0;
+
+View viewFrom(const Camera& camera) { return makeView(Body{"Earth", kEarth}, camera, 1280, 720); }
+
+// Updates until the tree makes no more changes, or fails after many frames' worth.
+void settle(PatchTree& tree, std::span<const ViewVolume> views) {
+  for (int round = 0; round < 200; ++round)
+    if (tree.update(views, 1000) == 0) return;
+  FAIL() << "the tree did not settle";
+}
+
+// Every alive leaf, by id.
+std::vector<std::int32_t> leaves(const PatchTree& tree) {
+  std::vector<std::int32_t> ids;
+  const PatchTopology& topology = tree.topology();
+  for (std::int32_t id = 0; id < std::int32_t(topology.capacity()); ++id)
+    if (topology[id].alive && topology[id].leaf()) ids.push_back(id);
+  return ids;
+}
+
+// The leaf whose triangle holds the direction, found by brute force.
+std::int32_t leafHolding(const PatchTree& tree, const std::vector<std::int32_t>& ids, const glm::dvec3& direction) {
+  for (const std::int32_t id : ids)
+    if (holds(tree.topology().cornersOf(id), direction)) return id;
+  return -1;
+}
+
+TEST(PatchTree, FromOrbitItKeepsNearItsNumberOfPatchesAndStaysPut) {
+  PatchTree tree(kEarth, {0.0, 0.0}, {.patches = 300});
+  const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 20, .lat = 40, .altitude = 2e7}))};
+  settle(tree, views);
+  EXPECT_LE(tree.visibleCount(), 300);
+  EXPECT_GE(tree.visibleCount(), 280);
+  EXPECT_EQ(tree.update(views), 0) << "a settled tree must not keep changing under a still view";
+  EXPECT_EQ(int(tree.visiblePatches().size()), tree.visibleCount());
+}
+
+// Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser
+// exactly where the patch flags that edge as coarse.
+void expectOneLevelApartWithCoarseEdgesFlagged(const PatchTree& tree) {
+  const std::vector<std::int32_t> ids = leaves(tree);
+  const PatchTopology& topology = tree.topology();
+  for (const std::int32_t id : ids) {
+    const SphericalTriangle t = topology.cornersOf(id);
+    for (int e = 0; e < 3; ++e) {
+      const glm::dvec3 a = t[std::size_t(e)], b = t[std::size_t(e + 1) % 3];
+      const glm::dvec3 outward = -glm::normalize(glm::cross(a, b));
+      bool coarser = false;
+      for (const double along : {0.25, 0.75}) {
+        const glm::dvec3 edgePoint = glm::normalize(a * (1.0 - along) + b * along);
+        const std::int32_t neighbour = leafHolding(tree, ids, glm::normalize(edgePoint + outward * 1e-3 * glm::length(a - b)));
+        ASSERT_GE(neighbour, 0);
+        EXPECT_LE(std::abs(topology[neighbour].level - topology[id].level), 1);
+        coarser = coarser || topology[neighbour].level < topology[id].level;
+      }
+      EXPECT_EQ(coarser, topology.across(id, e) < 0) << "leaf " << id << " edge " << e;
+    }
+  }
+}
+
+TEST(PatchTree, NeighboursDifferByAtMostOneLevelFromTheGround) {
+  PatchTree tree(kEarth, {0.0, 0.0});
+  const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 179.99, .lat = 10, .altitude = 2.0, .tilt = 60}))};
+  settle(tree, views);
+  expectOneLevelApartWithCoarseEdgesFlagged(tree);
+  int deepest = 0;
+  for (const Patch& patch : tree.visiblePatches()) deepest = std::max(deepest, patch.level);
+  EXPECT_GE(deepest, 20) << "2 m up, the patch below the eye should be a few metres across";
+}
+
+// Points of terrain that the eye sees (in its frustum, the segment to them clear of the sphere below
+// all terrain) lie in visible patches, mountains beyond the bare sphere's horizon included.
+TEST(PatchTree, NoTerrainTheEyeCanSeeIsCulled) {
+  const HeightRange heights{0.0, 8848.0};
+  PatchTree tree(kEarth, heights);
+  const View view = viewFrom({.lon = -30, .lat = 45, .altitude = 1000.0, .heading = 70, .tilt = 88});
+  const std::vector<ViewVolume> views{ViewVolume(view)};
+  settle(tree, views);
+  const std::vector<std::int32_t> ids = leaves(tree);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> across(-1.0, 1.0), height(heights.lowest, heights.highest),
+      distance(0.0, 450e3);
+  int seen = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    // A direction in the frustum, followed to a distance, dropped onto a terrain height there.
+    const double tanHalf = std::tan(0.5 * view.verticalFov);
+    const glm::dvec3 eyeRay(across(random) * tanHalf * 1280.0 / 720.0, across(random) * tanHalf, -1.0);
+    const glm::dvec3 ray = glm::transpose(view.planetToEye) * glm::normalize(eyeRay);
+    const glm::dvec3 direction = glm::normalize(view.eye + ray * distance(random));
+    const glm::dvec3 point = direction * (kEarth + height(random));
+    const glm::dvec3 towardPoint = view.planetToEye * (point - view.eye);
+    if (towardPoint.z >= -view.near || std::abs(towardPoint.x) > -towardPoint.z * tanHalf * 1280.0 / 720.0 ||
+        std::abs(towardPoint.y) > -towardPoint.z * tanHalf)
+      continue;
+    const glm::dvec3 d = point - view.eye;
+    const double t = std::clamp(-glm::dot(view.eye, d) / glm::dot(d, d), 0.0, 1.0);
+    if (glm::length(view.eye + t * d) < kEarth + heights.lowest) continue;
+    ++seen;
+    const std::int32_t leaf = leafHolding(tree, ids, direction);
+    ASSERT_GE(leaf, 0);
+    EXPECT_TRUE(tree.topology()[leaf].visible) << "trial " << trial;
+  }
+  EXPECT_GT(seen, 1000);
+}
+
+TEST(PatchTree, EveryViewIsServedAtOnce) {
+  PatchTree tree(kEarth, {0.0, 0.0});
+  const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 90, .tilt = 80})),
+                                      ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 270, .tilt = 80}))};
+  settle(tree, views);
+  int east = 0, west = 0;
+  for (const Patch& patch : tree.visiblePatches()) {
+    const glm::dvec3 centre = glm::normalize(patch.corners[0] + patch.corners[1] + patch.corners[2]);
+    (centre.y > 0.0 ? east : west) += 1;
+  }
+  EXPECT_GT(east, 100);
+  EXPECT_GT(west, 100);
+}
+
+// Flying round the planet and back leaves a tree of the size the view needs, not of the flight.
+TEST(PatchTree, TheTreeFollowsTheViewAndForgetsWhatItLeft) {
+  PatchTree tree(kEarth, {0.0, 0.0});
+  std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 1e5, .tilt = 45}))};
+  settle(tree, views);
+  const std::size_t start = leaves(tree).size();
+  for (double lon = 0.0; lon <= 360.0; lon += 10.0) {
+    views = {ViewVolume(viewFrom({.lon = lon, .lat = 0, .altitude = 1e5, .tilt = 45}))};
+    settle(tree, views);
+  }
+  EXPECT_LE(leaves(tree).size(), start + start / 4);
+}
+
+}  // namespace
+}  // namespace strata::icosahedral
