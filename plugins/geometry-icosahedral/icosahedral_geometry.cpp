@@ -2,10 +2,12 @@
 // double (the patch tree), subdivision on the GPU (a compute pass), displacement by the height layer and
 // rasterisation into the deferred texturing buffer, with edge windings that leave no cracks between
 // patches of different levels. docs/geometry.md explains the parts.
+#include <chrono>
 #include <memory>
 #include <optional>
 
 #include <strata/geometry.hpp>
+#include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/layer.hpp>
@@ -37,15 +39,26 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
                               {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
                                gpu.shaders->expand("geometry/surface_buffer.frag")}});
     buffers_.emplace(table_, windings_);
+    subdivisionTimer_.emplace();
+    rasterisationTimer_.emplace();
   }
 
   void prepare(const FrameState& frame) override {
+    const auto start = std::chrono::steady_clock::now();
     const std::array<ViewVolume, 1> views{ViewVolume(frame.view)};
     if (frame.index == 0)
       tree_.update(views, kFirstFrameOperations);
     else
       tree_.update(views);
     batch_ = batchPatches(tree_.visiblePatches(), frame.view, radius_, table_, windings_);
+    visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  GeometryStatistics statistics() const override {
+    std::uint64_t indices = 0;
+    for (const DrawElementsIndirectCommand& draw : batch_.draws) indices += draw.count;
+    return {int(batch_.draws.size()), batch_.draws.size() * std::uint64_t(table_.vertexCount()), indices / 3,
+            visibilityMs_, subdivisionTimer_->milliseconds(), rasterisationTimer_->milliseconds()};
   }
 
   void render(const FrameState& frame) override;
@@ -82,6 +95,9 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   ShaderProgram subdivision_;
   ShaderProgram surface_;
   std::optional<PatchBuffers> buffers_;
+  std::optional<GpuTimer> subdivisionTimer_;
+  std::optional<GpuTimer> rasterisationTimer_;
+  double visibilityMs_ = 0.0;
   Framebuffer gbuffer_;
 };
 
@@ -99,7 +115,9 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   subdivision_.use();
   subdivision_.set("depth", table_.depth());
   subdivision_.set("referenceLatitude", glm::vec2(std::sin(batch_.reference.lat), std::cos(batch_.reference.lat)));
+  subdivisionTimer_->begin();
   buffers_->subdivide();
+  subdivisionTimer_->end();
 
   gbuffer_.bind();
   clear();
@@ -114,7 +132,9 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   surface_.set("footprintPerMetre", float(batch_.footprintPerMetre));
   TextureUnits units;
   if (height_) height_->bind(surface_, units);
+  rasterisationTimer_->begin();
   buffers_->draw();
+  rasterisationTimer_->end();
   glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
 }

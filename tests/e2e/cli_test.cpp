@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -100,6 +101,30 @@ TEST_F(StrataCommandTest, RenderDrapesImageryWithBothOceanAndLandColours) {
   ASSERT_GT(globe, 320 * 180 / 10) << "the globe covers less than a tenth of the frame";
   EXPECT_GT(bluish, globe / 5) << "under 20% of the globe is ocean-coloured";
   EXPECT_GT(reddish, globe / 5) << "under 20% of the globe is land-coloured";
+}
+
+// --stats: with geometry.icosahedral's defaults (300 patches of depth 5: 561 vertices and 1024 triangles
+// each, fewer triangles along edges that meet coarser neighbours) the numbers follow from the patches.
+TEST_F(StrataCommandTest, RenderStatsCountPatchesVerticesAndTriangles) {
+  const CommandResult result =
+      run({"render", "pipelines/demo.yaml", "--size", "320x180", "-o", file("demo.png").string(), "--stats"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  unsigned long long frames = 0, vertices = 0, triangles = 0;
+  int patches = 0;
+  const std::size_t at = result.out.find("strata: last of");
+  ASSERT_NE(at, std::string::npos) << result.out;
+  ASSERT_EQ(std::sscanf(result.out.c_str() + at, "strata: last of %llu frames: %d patches, %llu vertices, %llu triangles",
+                        &frames, &patches, &vertices, &triangles),
+            4)
+      << result.out;
+  EXPECT_GE(frames, 1u);
+  EXPECT_GT(patches, 200);
+  EXPECT_LE(patches, 300);
+  EXPECT_EQ(vertices, 561ull * unsigned(patches));
+  EXPECT_LE(triangles, 1024ull * unsigned(patches));
+  EXPECT_GT(triangles, 900ull * unsigned(patches));
+  for (const char* phase : {"visibility", "subdivision", "rasterisation", "page cache"})
+    EXPECT_TRUE(contains(result.out, phase)) << result.out;
 }
 
 TEST_F(StrataCommandTest, RenderToAnUnwritablePathFailsWithAMessage) {

@@ -108,6 +108,21 @@ const FrameOutput& Engine::renderComplete(int width, int height) {
   return *frame;
 }
 
+GeometryStatistics Engine::geometryStatistics() const {
+  if (!impl_->graph) throw std::logic_error("Engine::geometryStatistics() before a pipeline was loaded");
+  GeometryStatistics sum;
+  for (const SurfaceGeometry* geometry : impl_->graph->geometries()) {
+    const GeometryStatistics one = geometry->statistics();
+    sum.patches += one.patches;
+    sum.vertices += one.vertices;
+    sum.triangles += one.triangles;
+    sum.visibilityMs += one.visibilityMs;
+    sum.subdivisionMs += one.subdivisionMs;
+    sum.rasterisationMs += one.rasterisationMs;
+  }
+  return sum;
+}
+
 const PageCacheStatistics& Engine::pageCacheStatistics() const {
   if (!impl_->pages) throw std::logic_error("Engine::pageCacheStatistics() before a pipeline was loaded");
   return impl_->pages->statistics();

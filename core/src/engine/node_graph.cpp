@@ -3,12 +3,20 @@
 #include <algorithm>
 #include <map>
 
+#include <strata/geometry.hpp>
 #include <strata/layer.hpp>
 #include <strata/node_type.hpp>
 
 #include "engine/node_failure.hpp"
 
 namespace strata {
+
+std::vector<const SurfaceGeometry*> NodeGraph::geometries() const {
+  std::vector<const SurfaceGeometry*> found;
+  for (const Entry& entry : entries_)
+    if (const SurfaceGeometry* geometry = entry.node->geometry()) found.push_back(geometry);
+  return found;
+}
 namespace {
 
 bool accepts(const PortDeclaration& port, LayerKind kind) {

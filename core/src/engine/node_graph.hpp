@@ -21,6 +21,7 @@ class NodeGraph {
   void prepare(const FrameState& frame, WorkerPool& workers);
   void render(const FrameState& frame);
   FrameOutput& output() const { return *output_; }
+  std::vector<const SurfaceGeometry*> geometries() const;
 
  private:
   struct Entry {

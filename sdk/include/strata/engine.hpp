@@ -6,6 +6,7 @@
 #include <vector>
 
 #include <strata/camera.hpp>
+#include <strata/geometry.hpp>
 #include <strata/output.hpp>
 #include <strata/page_cache.hpp>
 #include <strata/pipeline.hpp>
@@ -50,6 +51,8 @@ class Engine {
   // for still images.
   const FrameOutput& renderComplete(int width, int height);
   const FrameStatistics& statistics() const;
+  // The geometry generators' statistics for the last frame, summed; waits for the GPU to finish it.
+  GeometryStatistics geometryStatistics() const;
   const PageCacheStatistics& pageCacheStatistics() const;
 
  private:

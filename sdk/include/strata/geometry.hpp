@@ -1,7 +1,19 @@
 #pragma once
+#include <cstdint>
+
 #include <strata/gl/framebuffer.hpp>
 
 namespace strata {
+
+// What a geometry generator made and spent on its last frame (`strata render --stats`, the benchmarks).
+struct GeometryStatistics {
+  int patches = 0;
+  std::uint64_t vertices = 0;
+  std::uint64_t triangles = 0;
+  double visibilityMs = 0.0;     // CPU: choosing what to tessellate
+  double subdivisionMs = 0.0;    // GPU: making the vertices
+  double rasterisationMs = 0.0;  // GPU: drawing the deferred texturing buffer
+};
 
 // The deferred texturing buffer a geometry generator rasterises (seed 000, section 3.4.2), read by
 // every per-pixel compositor. Attachments:
@@ -12,6 +24,8 @@ class SurfaceGeometry {
  public:
   virtual ~SurfaceGeometry() = default;
   virtual const Framebuffer& gbuffer() const = 0;
+  // On the GL thread, after the frame: GPU times wait for the GPU to finish it.
+  virtual GeometryStatistics statistics() const { return {}; }
 };
 
 }  // namespace strata
