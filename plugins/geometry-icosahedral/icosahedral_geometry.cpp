@@ -2,6 +2,7 @@
 // double (the patch tree), subdivision on the GPU (a compute pass), displacement by the height layer and
 // rasterisation into the deferred texturing buffer, with edge windings that leave no cracks between
 // patches of different levels. docs/geometry.md explains the parts.
+#include <array>
 #include <chrono>
 #include <memory>
 #include <optional>
