@@ -7,10 +7,6 @@
 namespace strata::icosahedral {
 namespace {
 
-LonLatReference belowTheEye(const glm::dvec3& eye) {
-  return {std::atan2(eye.y, eye.x), std::asin(std::clamp(eye.z / glm::length(eye), -1.0, 1.0))};
-}
-
 // The longitude of the patch's centre, unwrapped to within pi of the reference: the corners are unwrapped
 // around it, so a patch across the antimeridian keeps its corners together.
 double centreLongitude(const SphericalTriangle& corners, double referenceLon) {
@@ -28,7 +24,7 @@ double vertexSpacing(const Patch& patch, const SubdivisionTable& table) {
 
 PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
                         const SubdivisionTable& table, const EdgeWindings& windings) {
-  PatchBatch batch{belowTheEye(view.eye), 0.0, {}, {}};
+  PatchBatch batch{{view.reference.x, view.reference.y}, 0.0, {}, {}};
   batch.seeds.reserve(3 * patches.size());
   batch.draws.reserve(patches.size());
   std::vector<double> footprints;

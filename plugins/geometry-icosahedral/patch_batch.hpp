@@ -31,7 +31,7 @@ struct DrawElementsIndirectCommand {
 // corners per patch, computed in double and made eye-relative before they become float (section 3.2.5),
 // and the draw of each patch with the edge winding its coarser neighbours call for (section 3.4.1).
 struct PatchBatch {
-  LonLatReference reference;  // the point below the eye: longitude and latitude are measured from it
+  LonLatReference reference;  // View::reference, the point below the eye: longitude and latitude are measured from it
   // The angle between neighbouring vertices, rad, per metre of their distance from the eye: the median
   // over the patches. Patches of equal solid angle make it nearly constant, and as a function of distance
   // alone it gives a vertex shared by two patches the same height footprint in both, so that the displaced

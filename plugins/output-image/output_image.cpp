@@ -48,6 +48,7 @@ class ImageOutput : public Node, public FrameOutput {
     program_.set("shade", parameters_.string("shading") == "lambert" ? 1 : 0);
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
     program_.set("background", glm::vec3(0.0f));
+    program_.set("referenceLonlat", glm::vec2(frame.view.reference));
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());

@@ -1,11 +1,13 @@
 // source.procedural: the demonstration planet of seed 000 chapter 4 (digest 000, section 5), a fractal sum
-// of 3D simplex noise, as a height or colour layer computed on the GPU. It needs no data files.
+// of 3D simplex noise, as a height or colour layer computed on the GPU. It needs no data files. The plugin
+// also registers source.checker (source_checker.hpp).
 #include <cstdint>
 #include <memory>
 
 #include <strata/plugin.hpp>
 
 #include "procedural_layer.hpp"
+#include "source_checker.hpp"
 
 namespace strata::procedural {
 namespace {
@@ -61,7 +63,10 @@ NodeTypeDeclaration declaration() {
   return type;
 }
 
-void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+void registerTypes(PluginRegistrar& registrar) {
+  registrar.add(declaration());
+  registrar.add(checkerDeclaration());
+}
 
 }  // namespace
 }  // namespace strata::procedural

@@ -16,7 +16,7 @@ uniform vec2 referenceLonlat;  // rad: the point below the eye
 uniform float radius;          // m, only to turn height differences into slopes
 uniform float footprintPerMetre;  // rad between vertices per metre from the eye (patch_batch.hpp)
 
-out vec2 vLonlat;
+out vec2 vLonlatFromReference;
 out vec3 vSphereNormal;
 out vec3 vShadingNormal;
 
@@ -25,7 +25,7 @@ STRATA_HEIGHT_LAYER_GLSL
 
 // The height at `where`, sampled over a footprint of one vertex spacing.
 float heightAt(vec2 where, vec3 normal, float spacing) {
-  SurfacePoint p = SurfacePoint(where, normal, vec2(spacing, 0.0), vec2(0.0, spacing));
+  SurfacePoint p = SurfacePoint(where, normal, vec2(spacing, 0.0), vec2(0.0, spacing), where - referenceLonlat);
   vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
   return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
 }
@@ -55,6 +55,6 @@ void main() {
 #endif
   vec3 eyePosition = planetToEye * (eyeRelative.xyz + sphereNormal * h);
   gl_Position = projection * vec4(eyePosition, 1.0);
-  vLonlat = lonlat;
+  vLonlatFromReference = lonlatFromReference;
   vSphereNormal = sphereNormal;
 }

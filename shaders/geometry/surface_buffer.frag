@@ -1,14 +1,14 @@
 #version 450 core
 // Writes the deferred texturing buffer (seed 000, section 3.4.2), see strata/geometry.hpp.
-in vec2 vLonlat;
+in vec2 vLonlatFromReference;  // rad from View::reference
 in vec3 vSphereNormal;
 in vec3 vShadingNormal;
 
-layout(location = 0) out vec4 surface;  // lon, lat, normal x, normal y
+layout(location = 0) out vec4 surface;  // lon, lat from View::reference; normal x, normal y
 layout(location = 1) out vec4 shading;  // shading normal xyz, coverage
 
 void main() {
   vec3 n = normalize(vSphereNormal);
-  surface = vec4(vLonlat, n.x, n.y);
+  surface = vec4(vLonlatFromReference, n.x, n.y);
   shading = vec4(normalize(vShadingNormal), 1.0);
 }

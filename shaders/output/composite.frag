@@ -14,6 +14,7 @@ uniform float ambient;        // share of light that reaches surfaces facing awa
 uniform int shade;            // 0: unlit colours, 1: Lambertian
 uniform vec3 emptyColour;     // surface where no layer has data (linear)
 uniform vec3 background;      // where there is no body (linear)
+uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred buffer's lonlat is measured
 
 out vec4 colour;
 
@@ -37,9 +38,10 @@ void main() {
     return;
   }
   vec4 s = texelFetch(surfaceBuffer, pixel, 0);
-  float nz = sign(s.y) * sqrt(max(0.0, 1.0 - s.z * s.z - s.w * s.w));  // the sign of z is that of latitude
-  SurfacePoint p = SurfacePoint(s.xy, vec3(s.z, s.w, nz), footprint(pixel, ivec2(1, 0), s.xy),
-                                footprint(pixel, ivec2(0, 1), s.xy));
+  vec2 lonlat = referenceLonlat + s.xy;
+  float nz = sign(lonlat.y) * sqrt(max(0.0, 1.0 - s.z * s.z - s.w * s.w));  // the sign of z is that of latitude
+  SurfacePoint p = SurfacePoint(lonlat, vec3(s.z, s.w, nz), footprint(pixel, ivec2(1, 0), s.xy),
+                                footprint(pixel, ivec2(0, 1), s.xy), s.xy);
   vec4 accumulated = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE
   vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;

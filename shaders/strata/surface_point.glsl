@@ -1,10 +1,13 @@
 // A point of a body's surface as layers sample it: where it is, and the footprint of the sample (how far
 // longitude and latitude move to the next pixel or vertex), so each layer picks its own level of detail.
 struct SurfacePoint {
-  vec2 lonlat;    // rad; longitude is not wrapped and may lie outside [-pi, pi]
-  vec3 normal;    // planet-fixed unit normal of the undisplaced sphere (+z north, +x at longitude 0)
-  vec2 lonlatDx;  // change of lonlat to the next sample along x (longitude wrap already removed)
-  vec2 lonlatDy;  // the same along y
+  vec2 lonlat;         // rad; longitude is not wrapped and may lie outside [-pi, pi]
+  vec3 normal;         // planet-fixed unit normal of the undisplaced sphere (+z north, +x at longitude 0)
+  vec2 lonlatDx;       // change of lonlat to the next sample along x (longitude wrap already removed)
+  vec2 lonlatDy;       // the same along y
+  // lonlat measured from the frame's reference, the point below the eye (View::reference): float
+  // resolves it to micrometres near the eye, where lonlat itself resolves about a metre on Earth.
+  vec2 fromReference;
 };
 
 #ifdef STRATA_VERTEX_STAGE

@@ -49,6 +49,7 @@ Errors subdivideOnGpu(const Patch& patch, const glm::dvec3& eye) {
   const EdgeWindings windings(table);
   View view;
   view.eye = eye;
+  view.reference = {std::atan2(eye.y, eye.x), std::asin(eye.z / glm::length(eye))};  // as makeView sets it
   const PatchBatch batch = batchPatches({patch}, view, kEarth, table, windings);
   PatchBuffers buffers(table, windings);
   buffers.upload(batch);

@@ -43,6 +43,7 @@ View makeView(const Body& body, const Camera& camera, int width, int height) {
   view.width = width;
   view.height = height;
   view.eye = up * (body.radius + camera.altitude);
+  view.reference = {lon, lat};
   view.planetToEye = glm::transpose(glm::dmat3(right, cameraUp, -forward));
   // A thousandth of the altitude keeps the nearest terrain in front of the near plane even for relief
   // exaggerated far above the eye's own height; 1 cm is the closest anyone needs.

@@ -25,6 +25,9 @@ struct View {
   glm::mat4 projection{1.0f};      // infinite far plane, reversed depth (1 at the near plane, 0 at infinity)
   double near = 1.0;               // m
   double verticalFov = 0.0;        // rad
+  // Longitude and latitude (rad) of the point below the eye. The GPU gets longitudes and latitudes
+  // measured from it, which float resolves finely near the eye (DESIGN.md, Precision).
+  glm::dvec2 reference{0.0};
 
   // Eye-space position of a planet-fixed point, computed in double.
   glm::dvec3 toEye(const glm::dvec3& planetFixed) const { return planetToEye * (planetFixed - eye); }

@@ -17,7 +17,8 @@ struct GeometryStatistics {
 
 // The deferred texturing buffer a geometry generator rasterises (seed 000, section 3.4.2), read by
 // every per-pixel compositor. Attachments:
-//   color(0) RGBA32F: longitude, latitude (rad, longitude not wrapped), planet-fixed unit normal x, y
+//   color(0) RGBA32F: longitude, latitude measured from View::reference (rad, longitude not wrapped), so
+//                     that float resolves them finely near the eye; planet-fixed unit normal x, y
 //   color(1) RGBA16F: shading normal (planet-fixed, of the displaced surface) xyz, coverage (1 on the body)
 //   depth    DEPTH32F: reversed depth (1 at the near plane), 0 where nothing was drawn
 class SurfaceGeometry {
