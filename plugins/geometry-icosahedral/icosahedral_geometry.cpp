@@ -4,6 +4,8 @@
 // patches of different levels. docs/geometry.md explains the parts.
 #include <array>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -19,6 +21,13 @@
 namespace strata::icosahedral {
 namespace {
 
+// Metres as a user would type them: 240000, not 2.4e+05.
+std::string metres(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.0f", value);
+  return text;
+}
+
 // Splits and merges the first frame may make, so that a single still image is drawn from a settled tree;
 // later frames make PatchTreeSettings::operationsPerFrame and follow the view over a few frames.
 constexpr int kFirstFrameOperations = 20000;
@@ -28,9 +37,24 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   explicit IcosahedralGeometry(const NodeSetup& setup)
       : height_(setup.input("height") ? setup.input("height")->layer() : nullptr),
         radius_(setup.body->radius),
+        heights_(heightRange(setup)),
+        heightsWhere_(setup.parameters.where("highest")),
         table_(int(setup.parameters.integer("depth"))),
         windings_(table_),
-        tree_(radius_, heightRange(setup), {.patches = int(setup.parameters.integer("patches"))}) {}
+        tree_(radius_, heights_, {.patches = int(setup.parameters.integer("patches"))}) {}
+
+  // The height layer has opened: where it knows its heights, they must lie within what culling trusts.
+  void open() override {
+    if (!height_) return;
+    const std::optional<ValueRange> range = height_->valueRange();
+    if (!range || (range->least >= heights_.lowest && range->greatest <= heights_.highest)) return;
+    throw Error(heightsWhere_,
+                "the height layer reaches from " + metres(range->least) + " to " + metres(range->greatest) +
+                    " m, beyond lowest (" + metres(heights_.lowest) + " m) or highest (" + metres(heights_.highest) +
+                    " m): culling would cut off terrain that shows",
+                "set lowest: " + metres(std::floor(std::min(range->least, heights_.lowest))) + " and highest: " +
+                    metres(std::ceil(std::max(range->greatest, heights_.highest))) + " on this node");
+  }
 
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
@@ -89,6 +113,8 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
   Layer* height_;
   double radius_;
+  HeightRange heights_;
+  SourceLocation heightsWhere_;  // the node's `highest`, for messages
   SubdivisionTable table_;
   EdgeWindings windings_;
   PatchTree tree_;

@@ -3,21 +3,10 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "quiet_gdal_errors.hpp"
 #include "raster_reading.hpp"
 
 namespace strata::gdal {
-namespace {
-
-// The cache reports a failed page once, naming the file; GDAL's own printing would repeat it per block.
-// Handlers are per thread, so this quiets only the loader thread it runs on.
-struct QuietGdalErrors {
-  QuietGdalErrors() { CPLPushErrorHandler(CPLQuietErrorHandler); }
-  ~QuietGdalErrors() { CPLPopErrorHandler(); }
-  QuietGdalErrors(const QuietGdalErrors&) = delete;
-  QuietGdalErrors& operator=(const QuietGdalErrors&) = delete;
-};
-
-}  // namespace
 
 GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind)
     : path_(dataset->GetDescription()), kind_(kind),

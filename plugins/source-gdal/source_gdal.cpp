@@ -13,6 +13,7 @@
 #include "gdal_page_source.hpp"
 #include "georeferencing.hpp"
 #include "raster_reading.hpp"
+#include "value_range.hpp"
 
 namespace strata::gdal {
 namespace {
@@ -37,6 +38,8 @@ class GdalSource : public Node {
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
     checkRaster(*dataset, kind_, where);
     warnWithoutOverviews(*dataset);
+    if (kind_ != LayerKind::Color)
+      if (const std::optional<ValueRange> raw = exactRawRange(*dataset)) layer_.setRawRange(*raw);
     source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_);
   }
 

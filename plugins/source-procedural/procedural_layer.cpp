@@ -1,5 +1,7 @@
 #include "procedural_layer.hpp"
 
+#include <cmath>
+
 #include <strata/gl/shader_program.hpp>
 
 namespace strata::procedural {
@@ -19,6 +21,12 @@ std::string ProceduralLayer::glsl() const {
          "  float h = planetHeight(p.normal, planetFootprint(p, " + p + "_planet.radius), " + p + "_planet);\n"
          "  return " + value + ";\n"
          "}\n";
+}
+
+std::optional<ValueRange> ProceduralLayer::valueRange() const {
+  if (kind_ != LayerKind::Height) return std::nullopt;
+  const double reach = planet_.amplitude * std::abs(scale_);
+  return ValueRange{-reach, reach};
 }
 
 void ProceduralLayer::bind(ShaderProgram& program, TextureUnits&) const {

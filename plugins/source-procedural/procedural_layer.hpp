@@ -20,6 +20,8 @@ class ProceduralLayer : public Layer {
   std::string samplingFunction() const override { return prefix_; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
+  // Heights: within +-amplitude x scale, which the noise never reaches (planet_model.hpp).
+  std::optional<ValueRange> valueRange() const override;
 
  private:
   std::string prefix_;  // GLSL identifier prefix unique to the node

@@ -32,7 +32,7 @@ TEST_P(LevelBoundaries, EveryPixelOnTheBodyIsDrawn) {
       "low.yaml", "strata: 1\ncamera: {lon: " + std::to_string(low.lon) + ", lat: " + std::to_string(low.lat) +
                       ", altitude: " + std::to_string(low.altitude) + ", heading: 20, tilt: " + std::to_string(low.tilt) + "}\nnodes:\n" +
                       (low.heights ? "  heights: {type: source.procedural, kind: height}\n"
-                                     "  globe: {type: geometry.icosahedral, height: heights}\n"
+                                     "  globe: {type: geometry.icosahedral, height: heights, lowest: -12000, highest: 12000}\n"
                                    : "  globe: {type: geometry.icosahedral}\n") +
                       "  frame: {type: output.image, geometry: globe, shading: none}\n");
   auto engine = makeEngine();

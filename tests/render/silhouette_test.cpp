@@ -22,7 +22,7 @@ double measuredDiscRadius(const Image& image) {
 std::string raisedGlobePipeline(const std::filesystem::path& heights, double height) {
   return "strata: 1\nbody: {name: Test, radius: 6371000}\ncamera: {lon: 0, lat: 0, altitude: 2.0e7, fov: 45}\nnodes:\n"
          "  heights: {type: source.gdal, path: " + heights.string() + ", kind: height, scale: " + std::to_string(height) + "}\n"
-         "  globe: {type: geometry.icosahedral, height: heights}\n"
+         "  globe: {type: geometry.icosahedral, height: heights, lowest: 0, highest: " + std::to_string(height) + "}\n"
          "  frame: {type: output.image, geometry: globe}\n";
 }
 

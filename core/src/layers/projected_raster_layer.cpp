@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 
 #include <strata/gl/shader_program.hpp>
@@ -32,6 +33,12 @@ ProjectedRasterLayer::ProjectedRasterLayer(std::string nodeId, LayerKind kind)
 void ProjectedRasterLayer::setValueTransform(double scale, double offset) {
   scale_ = scale;
   offset_ = offset;
+}
+
+std::optional<ValueRange> ProjectedRasterLayer::valueRange() const {
+  if (!rawRange_ || isColour(kind_)) return std::nullopt;
+  const double a = rawRange_->least * scale_ + offset_, b = rawRange_->greatest * scale_ + offset_;
+  return ValueRange{std::min(a, b), std::max(a, b)};  // a negative scale turns the range over
 }
 
 void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int height) {

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 #include <string>
 
 #include <strata/port.hpp>
@@ -7,6 +8,13 @@ namespace strata {
 
 class ShaderProgram;
 class TextureUnits;
+
+// The least and greatest values a one-channel layer returns, as its sampling function returns them
+// (heights: metres, after the source's scale and offset).
+struct ValueRange {
+  double least = 0.0;
+  double greatest = 0.0;
+};
 
 // A layer is a GLSL sampling function over a projection, plus the GPU resources behind it (DESIGN.md).
 // Consumers paste glsl() into their programs after "strata/surface_point.glsl" and call
@@ -22,6 +30,9 @@ class Layer {
   virtual std::string glsl() const = 0;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;
+  // The values the layer can return, once its node has opened, where its source knows them for certain
+  // (geometry uses them to check what it may cull); none where it does not.
+  virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
 };
 
 // Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.

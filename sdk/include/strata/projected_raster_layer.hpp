@@ -21,6 +21,9 @@ class ProjectedRasterLayer : public Layer {
 
   // One-channel kinds: the value a shader sees is raw x scale + offset (e.g. int16 counts to metres).
   void setValueTransform(double scale, double offset);
+  // One-channel kinds: the least and greatest raw values, where the source knows them exactly.
+  void setRawRange(ValueRange raw) { rawRange_ = raw; }
+  std::optional<ValueRange> valueRange() const override;
 
   LayerKind kind() const override { return kind_; }
   std::string samplingFunction() const override { return prefix_; }
@@ -43,6 +46,7 @@ class ProjectedRasterLayer : public Layer {
   LayerKind kind_;
   double scale_ = 1.0;
   double offset_ = 0.0;
+  std::optional<ValueRange> rawRange_;
   RasterGeoreference georeference_;
   // Fixed by place():
   std::array<glm::vec4, 2> projection_{};  // Projection::glslParameters()
