@@ -118,7 +118,7 @@ template std::vector<GeodesicVertex<float>> subdivideGeodesic<float>(const Patch
 template std::vector<GeodesicVertex<double>> subdivideGeodesic<double>(const PatchSeed&, LonLatReference,
                                                                        const SubdivisionTable&);
 
-SurfacePoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
+ExactPoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
                                LonLatReference reference) {
   return {unwrappedLonLat(normal, reference.lon) - glm::dvec2(reference.lon, reference.lat), radius * normal - eye};
 }

@@ -52,11 +52,11 @@ std::vector<GeodesicVertex<Real>> subdivideGeodesic(const PatchSeed& seed, LonLa
 // The exact surface point of a unit normal, computed directly in double: longitude and latitude by atan2
 // (relative to the reference, the longitude unwrapped to within pi of it) and the position as
 // radius * normal - eye. Any point's longitude serves at a pole.
-struct SurfacePoint {
+struct ExactPoint {
   glm::dvec2 lonlat;    // rad
   glm::dvec3 position;  // m
 };
-SurfacePoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
+ExactPoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
                                LonLatReference reference);
 
 }  // namespace strata::icosahedral

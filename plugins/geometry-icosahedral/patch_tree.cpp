@@ -16,6 +16,7 @@ int PatchTree::update(std::span<const ViewVolume> views, int operations) {
     if (topology_[id].alive && topology_[id].leaf()) classify(id);
   int made = 0;
   while (made < operations && improve()) ++made;
+  views_ = {};  // the views are the caller's: only this call may look at them
   return made;
 }
 

@@ -39,7 +39,7 @@ class PatchTree {
   PatchTree(double radius, HeightRange heights, PatchTreeSettings settings = {});
 
   // Reclassifies the leaves for the views, then splits or merges at most `operations` times; returns
-  // how many it made. The views must stay alive until the next update.
+  // how many it made.
   int update(std::span<const ViewVolume> views, int operations);
   int update(std::span<const ViewVolume> views) { return update(views, settings_.operationsPerFrame); }
 
@@ -69,7 +69,7 @@ class PatchTree {
   HeightRange heights_;
   PatchTreeSettings settings_;
   PatchTopology topology_;
-  std::span<const ViewVolume> views_;
+  std::span<const ViewVolume> views_;  // during update() only
   int visibleCount_ = 0;
 };
 

@@ -23,20 +23,23 @@ out vec3 vShadingNormal;
 #ifdef STRATA_HAS_HEIGHT
 STRATA_HEIGHT_LAYER_GLSL
 
-// The height at `where`, sampled over a footprint of one vertex spacing.
-float heightAt(vec2 where, vec3 normal, float spacing) {
-  SurfacePoint p = SurfacePoint(where, normal, vec2(spacing, 0.0), vec2(0.0, spacing), where - referenceLonlat);
+// The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
+// vertex spacing.
+float heightAt(vec2 fromReference, vec3 normal, float spacing) {
+  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(spacing, 0.0), vec2(0.0, spacing),
+                                fromReference);
   vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
   return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
 }
 
 // The displaced surface's normal from central differences of the height over one vertex spacing.
-vec3 shadingNormal(float h, vec2 lonlat, vec3 normal, float spacing) {
+vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
+  vec2 lonlat = referenceLonlat + fromReference;
   float dLon = spacing / max(cos(lonlat.y), 1e-4);
-  float eastSlope = (heightAt(lonlat + vec2(dLon, 0.0), normal, spacing) -
-                     heightAt(lonlat - vec2(dLon, 0.0), normal, spacing)) / (2.0 * (radius + h) * spacing);
-  float northSlope = (heightAt(lonlat + vec2(0.0, spacing), normal, spacing) -
-                      heightAt(lonlat - vec2(0.0, spacing), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  float eastSlope = (heightAt(fromReference + vec2(dLon, 0.0), normal, spacing) -
+                     heightAt(fromReference - vec2(dLon, 0.0), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  float northSlope = (heightAt(fromReference + vec2(0.0, spacing), normal, spacing) -
+                      heightAt(fromReference - vec2(0.0, spacing), normal, spacing)) / (2.0 * (radius + h) * spacing);
   vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
   vec3 north = cross(normal, east);
   return normalize(normal - eastSlope * east - northSlope * north);
@@ -45,13 +48,12 @@ vec3 shadingNormal(float h, vec2 lonlat, vec3 normal, float spacing) {
 
 void main() {
   vec3 sphereNormal = sphereNormalIn.xyz;
-  vec2 lonlat = referenceLonlat + lonlatFromReference;
   float h = 0.0;
   vShadingNormal = sphereNormal;
 #ifdef STRATA_HAS_HEIGHT
   float spacing = footprintPerMetre * length(eyeRelative.xyz);
-  h = heightAt(lonlat, sphereNormal, spacing);
-  vShadingNormal = shadingNormal(h, lonlat, sphereNormal, spacing);
+  h = heightAt(lonlatFromReference, sphereNormal, spacing);
+  vShadingNormal = shadingNormal(h, lonlatFromReference, sphereNormal, spacing);
 #endif
   vec3 eyePosition = planetToEye * (eyeRelative.xyz + sphereNormal * h);
   gl_Position = projection * vec4(eyePosition, 1.0);

@@ -70,7 +70,7 @@ Discrepancy discrepancy(const std::vector<GeodesicVertex<Real>>& vertices,
                         LonLatReference origin) {
   Discrepancy worst;
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    const SurfacePoint exact = exactSurfacePoint(reference[i].normal, kEarth, eye, origin);
+    const ExactPoint exact = exactSurfacePoint(reference[i].normal, kEarth, eye, origin);
     const glm::dvec2 error = glm::dvec2(vertices[i].lonlat) - exact.lonlat;
     const double lat = origin.lat + exact.lonlat.y;
     worst.ground = std::max(worst.ground, kEarth * std::hypot(error.x * std::cos(lat), error.y));
