@@ -28,10 +28,6 @@ std::string metres(double value) {
   return text;
 }
 
-// Splits and merges the first frame may make, so that a single still image is drawn from a settled tree;
-// later frames make PatchTreeSettings::operationsPerFrame and follow the view over a few frames.
-constexpr int kFirstFrameOperations = 20000;
-
 class IcosahedralGeometry : public Node, public SurfaceGeometry {
  public:
   explicit IcosahedralGeometry(const NodeSetup& setup)
@@ -41,7 +37,9 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
         heightsWhere_(setup.parameters.where("highest")),
         table_(int(setup.parameters.integer("depth"))),
         windings_(table_),
-        tree_(radius_, heights_, {.patches = int(setup.parameters.integer("patches"))}) {}
+        tree_(radius_, heights_,
+              {.patches = int(setup.parameters.integer("patches")),
+               .operationsPerFrame = int(setup.parameters.integer("operations"))}) {}
 
   // The height layer has opened: where it knows its heights, they must lie within what culling trusts.
   void open() override {
@@ -58,9 +56,9 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
-                                   gpu.shaders->expand("geometry/subdivide_patches.comp")}});
+                                   gpu.shaders->expand("geometry/subdivide_patches.comp", heightSubstitutions())}});
     surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/icosahedral.vert",
-                               gpu.shaders->expand("geometry/icosahedral.vert", heightSubstitutions())},
+                               gpu.shaders->expand("geometry/icosahedral.vert")},
                               {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
                                gpu.shaders->expand("geometry/surface_buffer.frag")}});
     buffers_.emplace(table_, windings_);
@@ -72,10 +70,11 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
     const auto start = std::chrono::steady_clock::now();
     const std::array<ViewVolume, 1> views{ViewVolume(frame.view)};
     if (frame.index == 0)
-      tree_.update(views, kFirstFrameOperations);
+      tree_.settle(views);  // a still image, or the first of many, is drawn from a settled tree
     else
       tree_.update(views);
-    batch_ = batchPatches(tree_.visiblePatches(), frame.view, radius_, table_, windings_);
+    batch_ = batchPatches(tree_.visiblePatches(), frame.view, radius_, tree_.splitDistanceAtLevelZero(), table_,
+                          windings_);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
@@ -139,9 +138,9 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   if (gbuffer_.width() != frame.view.width || gbuffer_.height() != frame.view.height)
     gbuffer_ = Framebuffer(frame.view.width, frame.view.height, {GL_RGBA32F, GL_RGBA16F}, GL_DEPTH_COMPONENT32F);
   buffers_->upload(batch_);
-  subdivision_.use();
-  subdivision_.set("depth", table_.depth());
-  subdivision_.set("referenceLatitude", glm::vec2(std::sin(batch_.reference.lat), std::cos(batch_.reference.lat)));
+  useSubdivision(subdivision_, batch_, table_.depth(), radius_);
+  TextureUnits units;
+  if (height_) height_->bind(subdivision_, units);
   subdivisionTimer_->begin();
   buffers_->subdivide();
   subdivisionTimer_->end();
@@ -154,11 +153,6 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   surface_.use();
   surface_.set("planetToEye", glm::mat3(frame.view.planetToEye));
   surface_.set("projection", frame.view.projection);
-  surface_.set("referenceLonlat", glm::vec2(batch_.reference.lon, batch_.reference.lat));
-  surface_.set("radius", float(radius_));
-  surface_.set("footprintPerMetre", float(batch_.footprintPerMetre));
-  TextureUnits units;
-  if (height_) height_->bind(surface_, units);
   rasterisationTimer_->begin();
   buffers_->draw();
   rasterisationTimer_->end();
@@ -181,6 +175,11 @@ NodeTypeDeclaration declaration() {
        .maximum = 8.0,
        .doc = "subdivisions of each patch: 4^depth triangles (5 is seed 000's default; 1 is the least without "
               "T-junctions between levels)"},
+      {.name = "operations", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 0.0,
+       .maximum = 100000.0,
+       .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU time near half a "
+              "millisecond and still follows a 30 Hz fly-in); 0 holds the first frame's patches, to look at them "
+              "from elsewhere"},
       {.name = "lowest", .type = ParameterType::Real, .defaultValue = -11000.0, .units = "m",
        .doc = "no height lies below this; culling trusts it (the default is below Earth's deepest trench)"},
       {.name = "highest", .type = ParameterType::Real, .defaultValue = 22000.0, .units = "m",

@@ -15,6 +15,10 @@ using SphericalTriangle = std::array<glm::dvec3, 3>;
 // share an edge share its corners bit for bit.
 std::vector<SphericalTriangle> icosahedronFaces();
 
+// The angle its edges subtend at the centre, rad: atan(2). A patch of level L is nominally this halved
+// L times across.
+constexpr double kFaceEdgeAngle = 1.1071487177940904;
+
 // The great-circle midpoint of two unit normals: their normalised sum, symmetric in its arguments so
 // that the two patches sharing an edge split it identically (seed 000 section 3.3.3).
 glm::dvec3 greatCircleMidpoint(const glm::dvec3& a, const glm::dvec3& b);

@@ -15,34 +15,25 @@ double centreLongitude(const SphericalTriangle& corners, double referenceLon) {
   return referenceLon + std::remainder(lon - referenceLon, 2.0 * std::numbers::pi);
 }
 
-// The angle between neighbouring vertices along the patch's first edge.
-double vertexSpacing(const Patch& patch, const SubdivisionTable& table) {
-  return 2.0 * std::asin(0.5 * glm::length(patch.corners[1] - patch.corners[0])) / table.segments();
-}
-
 }  // namespace
 
 PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        const SubdivisionTable& table, const EdgeWindings& windings) {
-  PatchBatch batch{{view.reference.x, view.reference.y}, 0.0, {}, {}};
+                        double splitDistanceAtLevelZero, const SubdivisionTable& table,
+                        const EdgeWindings& windings) {
+  PatchBatch batch{{view.reference.x, view.reference.y}, splitDistanceAtLevelZero,
+                   kFaceEdgeAngle / (std::numbers::sqrt2 * table.segments() * splitDistanceAtLevelZero), {}, {}};
   batch.seeds.reserve(3 * patches.size());
   batch.draws.reserve(patches.size());
-  std::vector<double> footprints;
   const glm::dvec2 reference(batch.reference.lon, batch.reference.lat);
   for (const Patch& patch : patches) {
     const PatchSeed seed = patchSeed(patch.corners, radius, view.eye, centreLongitude(patch.corners, reference.x));
     for (std::size_t c = 0; c < 3; ++c)
-      batch.seeds.push_back({glm::vec4(glm::vec3(seed.positions[c]), 0.0f), glm::vec4(glm::vec3(seed.normals[c]), 0.0f),
+      batch.seeds.push_back({glm::vec4(glm::vec3(seed.positions[c]), float(patch.level)),
+                             glm::vec4(glm::vec3(seed.normals[c]), 0.0f),
                              glm::vec4(glm::vec2(seed.lonlat[c] - reference), 0.0f, 0.0f)});
-    const glm::dvec3 centre = glm::normalize(patch.corners[0] + patch.corners[1] + patch.corners[2]) * radius;
-    footprints.push_back(vertexSpacing(patch, table) / std::max(glm::length(centre - view.eye), 1e-3));
     const IndexRange winding = windings.range(patch.coarseEdges);
     batch.draws.push_back({winding.count, 1, winding.first,
                            std::int32_t(batch.draws.size()) * table.vertexCount(), 0});
-  }
-  if (!footprints.empty()) {
-    std::ranges::nth_element(footprints, footprints.begin() + std::ptrdiff_t(footprints.size() / 2));
-    batch.footprintPerMetre = footprints[footprints.size() / 2];
   }
   return batch;
 }

@@ -13,7 +13,7 @@ namespace strata::icosahedral {
 
 // One corner of a seed as the compute pass reads it (std430: three vec4).
 struct SeedCorner {
-  glm::vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: unused
+  glm::vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: the patch's level
   glm::vec4 normal;    // xyz: planet-fixed unit normal
   glm::vec4 lonlat;    // xy: rad from the frame's reference, longitude unwrapped
 };
@@ -32,16 +32,18 @@ struct DrawElementsIndirectCommand {
 // and the draw of each patch with the edge winding its coarser neighbours call for (section 3.4.1).
 struct PatchBatch {
   LonLatReference reference;  // View::reference, the point below the eye: longitude and latitude are measured from it
-  // The angle between neighbouring vertices, rad, per metre of their distance from the eye: the median
-  // over the patches. Patches of equal solid angle make it nearly constant, and as a function of distance
-  // alone it gives a vertex shared by two patches the same height footprint in both, so that the displaced
-  // surface stays closed where their levels differ.
+  double splitDistanceAtLevelZero = 0.0;  // m: PatchTree::splitDistanceAtLevelZero(), for the morphs
+  // The angle between neighbouring vertices, rad, per metre of their face-on distance, where a patch's
+  // vertices lie between its split distance and twice that: the geometric middle. As a function of the
+  // vertex alone it gives a vertex shared by two patches the same height footprint in both, so that the
+  // displaced surface stays closed where their levels differ.
   double footprintPerMetre = 0.0;
   std::vector<SeedCorner> seeds;
   std::vector<DrawElementsIndirectCommand> draws;
 };
 
 PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        const SubdivisionTable& table, const EdgeWindings& windings);
+                        double splitDistanceAtLevelZero, const SubdivisionTable& table,
+                        const EdgeWindings& windings);
 
 }  // namespace strata::icosahedral

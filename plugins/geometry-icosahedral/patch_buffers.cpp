@@ -1,6 +1,7 @@
 #include "patch_buffers.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace strata::icosahedral {
 
@@ -13,11 +14,13 @@ PatchBuffers::PatchBuffers(const SubdivisionTable& table, const EdgeWindings& wi
   glNamedBufferStorage(buffers_[kElements], GLsizeiptr(elements.size() * sizeof(std::uint32_t)), elements.data(), 0);
   glCreateVertexArrays(1, &vertexArray_);
   glVertexArrayElementBuffer(vertexArray_, buffers_[kElements]);
-  // One attribute per buffer: position and spacing, normal, longitude and latitude.
-  const std::array<GLint, 3> sizes{4, 4, 2};
-  for (GLuint attribute = 0; attribute < 3; ++attribute) {
+  // One attribute per buffer (icosahedral.vert): the drawn point, the sphere's normal, the drawn
+  // longitude and latitude (zw of theirs), the shading normal.
+  const std::array<GLint, 4> sizes{4, 4, 2, 4};
+  const std::array<GLuint, 4> offsets{0, 0, 2 * sizeof(float), 0};
+  for (GLuint attribute = 0; attribute < 4; ++attribute) {
     glEnableVertexArrayAttrib(vertexArray_, attribute);
-    glVertexArrayAttribFormat(vertexArray_, attribute, sizes[attribute], GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribFormat(vertexArray_, attribute, sizes[attribute], GL_FLOAT, GL_FALSE, offsets[attribute]);
     glVertexArrayAttribBinding(vertexArray_, attribute, attribute);
   }
 }
@@ -31,19 +34,22 @@ PatchBuffers::~PatchBuffers() {
 void PatchBuffers::reserve(std::size_t patches) {
   if (patches <= capacity_) return;
   capacity_ = std::max(patches, capacity_ + capacity_ / 2);
-  const std::array<std::pair<Buffer, std::size_t>, 5> sizes{{{kSeeds, 3 * sizeof(SeedCorner)},
+  const std::size_t vertexVector = verticesPerPatch_ * sizeof(glm::vec4);
+  const std::array<std::pair<Buffer, std::size_t>, 7> sizes{{{kSeeds, 3 * sizeof(SeedCorner)},
                                                               {kDraws, sizeof(DrawElementsIndirectCommand)},
-                                                              {kPositions, verticesPerPatch_ * sizeof(glm::vec4)},
-                                                              {kNormals, verticesPerPatch_ * sizeof(glm::vec4)},
-                                                              {kLonLats, verticesPerPatch_ * sizeof(glm::vec2)}}};
+                                                              {kPositions, vertexVector},
+                                                              {kNormals, vertexVector},
+                                                              {kLonLats, vertexVector},
+                                                              {kSurface, vertexVector},
+                                                              {kShading, vertexVector}}};
   for (const auto& [buffer, bytesPerPatch] : sizes) {
     glDeleteBuffers(1, &buffers_[buffer]);
     glCreateBuffers(1, &buffers_[buffer]);
     glNamedBufferStorage(buffers_[buffer], GLsizeiptr(capacity_ * bytesPerPatch), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
-  glVertexArrayVertexBuffer(vertexArray_, 0, buffers_[kPositions], 0, sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vertexArray_, 1, buffers_[kNormals], 0, sizeof(glm::vec4));
-  glVertexArrayVertexBuffer(vertexArray_, 2, buffers_[kLonLats], 0, sizeof(glm::vec2));
+  const std::array<Buffer, 4> attributes{kSurface, kNormals, kLonLats, kShading};  // as the constructor's
+  for (GLuint binding = 0; binding < attributes.size(); ++binding)
+    glVertexArrayVertexBuffer(vertexArray_, binding, buffers_[attributes[binding]], 0, sizeof(glm::vec4));
 }
 
 void PatchBuffers::upload(const PatchBatch& batch) {
@@ -57,7 +63,7 @@ void PatchBuffers::upload(const PatchBatch& batch) {
 
 void PatchBuffers::subdivide() const {
   if (patches_ == 0) return;
-  const std::array<Buffer, 5> bindings{kParents, kSeeds, kPositions, kNormals, kLonLats};  // as the shader binds them
+  const std::array<Buffer, 7> bindings{kParents, kSeeds, kPositions, kNormals, kLonLats, kSurface, kShading};  // as the shader binds them
   for (GLuint binding = 0; binding < bindings.size(); ++binding)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffers_[bindings[binding]]);
   glDispatchCompute(GLuint(patches_), 1, 1);
@@ -75,15 +81,28 @@ void PatchBuffers::draw() const {
 
 std::vector<PatchBuffers::Vertex> PatchBuffers::readVertices() const {
   const std::size_t count = patches_ * verticesPerPatch_;
-  std::vector<glm::vec4> positions(count), normals(count);
-  std::vector<glm::vec2> lonlats(count);
+  const std::array<Buffer, 5> read{kPositions, kNormals, kLonLats, kSurface, kShading};
+  std::array<std::vector<glm::vec4>, 5> values;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(buffers_[kPositions], 0, GLsizeiptr(count * sizeof(glm::vec4)), positions.data());
-  glGetNamedBufferSubData(buffers_[kNormals], 0, GLsizeiptr(count * sizeof(glm::vec4)), normals.data());
-  glGetNamedBufferSubData(buffers_[kLonLats], 0, GLsizeiptr(count * sizeof(glm::vec2)), lonlats.data());
+  for (std::size_t b = 0; b < read.size(); ++b) {
+    values[b].resize(count);
+    glGetNamedBufferSubData(buffers_[read[b]], 0, GLsizeiptr(count * sizeof(glm::vec4)), values[b].data());
+  }
   std::vector<Vertex> vertices(count);
-  for (std::size_t i = 0; i < count; ++i) vertices[i] = {positions[i], normals[i], lonlats[i]};
+  for (std::size_t i = 0; i < count; ++i)
+    vertices[i] = {values[0][i], values[1][i], glm::vec2(values[2][i]), glm::vec2(values[2][i].z, values[2][i].w),
+                   values[3][i], values[4][i]};
   return vertices;
+}
+
+void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int depth, double radius) {
+  program.use();
+  program.set("depth", depth);
+  program.set("referenceLatitude", glm::vec2(std::sin(batch.reference.lat), std::cos(batch.reference.lat)));
+  program.set("referenceLonlat", glm::vec2(batch.reference.lon, batch.reference.lat));
+  program.set("radius", float(radius));
+  program.set("footprintPerMetre", float(batch.footprintPerMetre));
+  program.set("splitDistanceAtLevelZero", float(batch.splitDistanceAtLevelZero));
 }
 
 }  // namespace strata::icosahedral

@@ -2,6 +2,7 @@
 #include <array>
 
 #include <strata/gl.hpp>
+#include <strata/gl/shader_program.hpp>
 
 #include "patch_batch.hpp"
 
@@ -27,14 +28,17 @@ class PatchBuffers {
   // The subdivided vertices of the uploaded patches, read back from the GPU (which this waits for):
   // for tests and inspection.
   struct Vertex {
-    glm::vec4 position;  // as SeedCorner
-    glm::vec4 normal;    // xyz: planet-fixed unit normal; w: angle between the parents, rad
-    glm::vec2 lonlat;    // rad from the frame's reference
+    glm::vec4 position;       // xyz: m on the sphere, relative to the eye; w: the patch's level
+    glm::vec4 normal;         // xyz: planet-fixed unit normal; w: angle between the parents, rad
+    glm::vec2 lonlat;         // rad from the frame's reference
+    glm::vec2 drawnLonlat;    // rad from the frame's reference, as drawn (morphed)
+    glm::vec4 drawn;          // xyz: m from the eye, displaced and morphed; w: the morph, 0 to 1
+    glm::vec4 shadingNormal;  // xyz: planet-fixed normal of the displaced surface, as drawn
   };
   std::vector<Vertex> readVertices() const;
 
  private:
-  enum Buffer { kParents, kElements, kSeeds, kDraws, kPositions, kNormals, kLonLats, kBufferCount };
+  enum Buffer { kParents, kElements, kSeeds, kDraws, kPositions, kNormals, kLonLats, kSurface, kShading, kBufferCount };
   void reserve(std::size_t patches);
 
   std::size_t verticesPerPatch_;
@@ -43,5 +47,9 @@ class PatchBuffers {
   std::array<GLuint, kBufferCount> buffers_{};
   GLuint vertexArray_ = 0;
 };
+
+// Makes the compute pass (`program`, subdivide_patches.comp) current with its uniforms for the batch: the
+// subdivision's depth, the reference, the body's radius, the height footprint and the split distances.
+void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int depth, double radius);
 
 }  // namespace strata::icosahedral

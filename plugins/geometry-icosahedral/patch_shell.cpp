@@ -53,12 +53,34 @@ bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occlude
   return largestDot(shell.corners, eye / distance) < std::cos(hidden);
 }
 
-double solidAngle(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {
-  const glm::dvec3 a = corners[0] * radius - eye, b = corners[1] * radius - eye, c = corners[2] * radius - eye;
-  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
-  const double numerator = std::abs(glm::dot(a, glm::cross(b, c)));
-  const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(a, c) * lb + glm::dot(b, c) * la;
-  return 2.0 * std::atan2(numerator, denominator);
+namespace {
+
+// 1 - the largest dot of the triangle with the eye's direction, and the eye's distance.
+std::pair<double, double> nearestAngle(const SphericalTriangle& corners, const glm::dvec3& eye) {
+  const double distance = glm::length(eye);
+  if (distance == 0.0) return {1.0, 0.0};
+  return {std::max(1.0 - largestDot(corners, eye / distance), 0.0), distance};
+}
+
+// |eye - radius u|^2 written so that an eye a metre above the ground loses no digits to cancellation.
+double distanceAtAngle(double oneLessDot, double distance, double radius) {
+  return std::sqrt((distance - radius) * (distance - radius) + 2.0 * distance * radius * oneLessDot);
+}
+
+}  // namespace
+
+double nearestDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {
+  const auto [oneLessDot, distance] = nearestAngle(corners, eye);
+  return distanceAtAngle(oneLessDot, distance, radius);
+}
+
+// A point u's cosine is (dot(u, eye) - radius) / |eye - radius u|: at most the largest numerator over the
+// least denominator.
+double leastFaceOnDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {
+  const auto [oneLessDot, distance] = nearestAngle(corners, eye);
+  const double nearest = distanceAtAngle(oneLessDot, distance, radius);
+  const double largestCosine = nearest > 0.0 ? ((distance - radius) - distance * oneLessDot) / nearest : 1.0;
+  return nearest / std::sqrt(std::clamp(largestCosine, kGrazingCosine, 1.0));
 }
 
 }  // namespace strata::icosahedral

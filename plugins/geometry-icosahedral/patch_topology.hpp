@@ -16,7 +16,7 @@ struct PatchNode {
   int level = 0;
   bool alive = false;
   bool visible = false;      // set by the tree's visibility test
-  double solidAngle = 0.0;   // sr; 0 when not visible
+  double distance = 0.0;     // m: the least face-on distance (patch_shell.hpp) from an eye that sees it
   bool leaf() const { return children[0] < 0; }
 };
 

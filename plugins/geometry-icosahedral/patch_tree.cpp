@@ -6,17 +6,49 @@
 #include <optional>
 
 namespace strata::icosahedral {
+namespace {
+
+constexpr double kFollowingStep = 0.02;  // a frame's change of the detail scale: morphs move 6 % of their way
+constexpr double kSettlingStep = 1.0;    // settle(): the scale may double or halve per round
+constexpr int kSettlingRounds = 40;      // enough for the scale to cross its whole range and settle
+constexpr double kRestingShare = 0.8;    // the count may fall to this share of `patches` before the scale grows
+
+}  // namespace
 
 PatchTree::PatchTree(double radius, HeightRange heights, PatchTreeSettings settings)
     : radius_(radius), heights_(heights), settings_(settings) {}
 
 int PatchTree::update(std::span<const ViewVolume> views, int operations) {
   views_ = views;
+  const int made = refine(operations);
+  if (made < operations) followCount(kFollowingStep);  // the count means something once the tree kept up
+  views_ = {};  // the views are the caller's: only this call may look at them
+  return made;
+}
+
+void PatchTree::settle(std::span<const ViewVolume> views) {
+  views_ = views;
+  for (int round = 0; round < kSettlingRounds; ++round) {
+    const double before = detail_;
+    const int made = refine(std::numeric_limits<int>::max());
+    followCount(kSettlingStep);
+    if (made == 0 && detail_ == before) break;
+  }
+  views_ = {};
+}
+
+// Reclassifies the leaves, then merges and splits until the tree is what the detail scale asks for, or
+// `operations` were made; returns how many were.
+int PatchTree::refine(int operations) {
   for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id)
     if (topology_[id].alive && topology_[id].leaf()) classify(id);
   int made = 0;
-  while (made < operations && improve()) ++made;
-  views_ = {};  // the views are the caller's: only this call may look at them
+  while (made < operations) {
+    const int merged = mergeFar(operations - made);
+    const int split = splitNear(operations - made - merged);
+    if (merged + split == 0) break;
+    made += merged + split;
+  }
   return made;
 }
 
@@ -32,63 +64,107 @@ std::vector<Patch> PatchTree::visiblePatches() const {
     unsigned coarse = 0;
     for (int e = 0; e < 3; ++e)
       if (topology_.across(id, e) < 0) coarse |= 1u << e;
-    patches.push_back({topology_.cornersOf(id), node.level, coarse, node.solidAngle});
+    patches.push_back({topology_.cornersOf(id), node.level, coarse});
   };
   for (std::int32_t face = 0; face < PatchTopology::kFaces; ++face) visit(face);
   return patches;
+}
+
+double PatchTree::splitDistance(int level) const { return splitDistance(level, detail_); }
+
+double PatchTree::splitDistance(int level, double detail) const {
+  return std::ldexp(detail * radius_ * kFaceEdgeAngle, -level);
 }
 
 PatchShell PatchTree::shellOf(std::int32_t id) const {
   return {topology_.cornersOf(id), radius_ + heights_.lowest, radius_ + heights_.highest};
 }
 
-// A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. The
-// solid angle is measured on the datum sphere (the body's radius, moved into the height range if it lies
-// outside): heights vary within a patch, and per-patch height ranges would place it better.
-std::optional<double> PatchTree::viewedAngle(const PatchShell& shell) const {
+// A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. Its
+// distance is the least face-on distance of the patch on the body's sphere, as the compute pass measures
+// its vertices' (per-patch height ranges would place it nearer the terrain).
+std::optional<double> PatchTree::viewedDistance(const PatchShell& shell) const {
   const double occluder = radius_ + heights_.lowest;
-  const double datum = radius_ + std::clamp(0.0, heights_.lowest, heights_.highest);
-  std::optional<double> angle;
+  std::optional<double> distance;
   for (const ViewVolume& view : views_)
     if (!belowHorizon(shell, view.eye(), occluder) && view.mayHold(shell))
-      angle = std::max(angle.value_or(0.0), solidAngle(shell.corners, datum, view.eye()));
-  return angle;
+      distance = std::min(distance.value_or(std::numeric_limits<double>::infinity()),
+                          leastFaceOnDistance(shell.corners, radius_, view.eye()));
+  return distance;
 }
 
 void PatchTree::classify(std::int32_t id) {
-  const std::optional<double> angle = viewedAngle(shellOf(id));
+  const std::optional<double> distance = viewedDistance(shellOf(id));
   PatchNode& node = topology_[id];
-  visibleCount_ += int(angle.has_value()) - int(node.visible);
-  node.visible = angle.has_value();
-  node.solidAngle = angle.value_or(0.0);
+  visibleCount_ += int(distance.has_value()) - int(node.visible);
+  node.visible = distance.has_value();
+  node.distance = distance.value_or(std::numeric_limits<double>::infinity());
 }
 
-// One step toward `patches` visible patches of equal solid angle; false when none would help.
-bool PatchTree::improve() {
-  if (const std::int32_t hidden = smallestFamily(true); hidden >= 0) {
-    merge(hidden);  // out of every view: folded back, so that the tree follows the view
-    return true;
+bool PatchTree::wantsSplit(std::int32_t id, double distance) const {
+  const PatchNode& node = topology_[id];
+  return node.level < kDeepestLevel && distance < splitDistance(node.level);
+}
+
+// Folds every family whose parent would not be split (out of every view, or far enough); returns the
+// merges made, at most `operations`.
+int PatchTree::mergeFar(int operations) {
+  int made = 0;
+  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()) && made < operations; ++id) {
+    if (!mergeable(id)) continue;
+    const std::optional<double> distance = viewedDistance(shellOf(id));
+    if (distance && wantsSplit(id, *distance)) continue;
+    merge(id);
+    ++made;
   }
-  if (visibleCount_ > settings_.patches) {
-    const std::int32_t family = smallestFamily(false);
-    if (family >= 0) merge(family);
-    return family >= 0;
+  return made;
+}
+
+// Splits the visible leaves nearer than their split distance, the nearest (in split distances) first;
+// returns the splits made, at most `operations`.
+int PatchTree::splitNear(int operations) {
+  std::vector<std::pair<double, std::int32_t>> near;
+  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
+    const PatchNode& node = topology_[id];
+    if (node.alive && node.leaf() && node.visible && wantsSplit(id, node.distance))
+      near.emplace_back(node.distance / splitDistance(node.level), id);
   }
-  const std::int32_t largest = largestLeaf();
-  if (largest < 0) return false;
-  if (visibleCount_ + 3 <= settings_.patches) {
-    splitKeepingOneLevel(largest);
-    return true;
+  std::ranges::sort(near);
+  int made = 0;
+  for (const auto& [ratio, id] : near) {
+    if (made == operations) break;
+    if (!topology_[id].alive || !topology_[id].leaf()) continue;  // split already, to keep one level
+    splitKeepingOneLevel(id);
+    ++made;
   }
-  // Full: trade the smallest family for the largest patch where that evens their sizes out. Halving
-  // the largest's angle is the margin that keeps a trade from being undone by the next one.
-  const std::int32_t family = smallestFamily(false);
-  if (family < 0 || family == topology_[largest].parent ||
-      familyAngle(family) >= 0.5 * topology_[largest].solidAngle)
-    return false;
-  merge(family);
-  splitKeepingOneLevel(largest);
-  return true;
+  return made;
+}
+
+// Moves the detail scale toward `patches` visible patches by at most the factor 1 + largestStep. The count
+// grows about as the square of the scale (each level's ring of patches does), hence the square root. Over
+// `patches` it shrinks; under kRestingShare of them it grows, unless the splits that would bring would
+// pass `patches`: seen from afar, a whole level splits at once, and the count would swing between a
+// quarter and four times the aim.
+void PatchTree::followCount(double largestStep) {
+  const double count = std::max(visibleCount_, 1);
+  if (count > settings_.patches)
+    detail_ *= std::max(std::sqrt(settings_.patches / count), 1.0 / (1.0 + largestStep));
+  else if (count < kRestingShare * settings_.patches) {
+    const double grown = detail_ * std::min(std::sqrt(settings_.patches / count), 1.0 + largestStep);
+    if (visibleCount_ + 3 * splitsAt(grown) <= settings_.patches) detail_ = grown;
+  }
+  detail_ = std::clamp(detail_, kLeastDetail, kMostDetail);
+}
+
+// The visible leaves that would split at the detail scale `detail`.
+int PatchTree::splitsAt(double detail) const {
+  int splits = 0;
+  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
+    const PatchNode& node = topology_[id];
+    splits += int(node.alive && node.leaf() && node.visible && node.level < kDeepestLevel &&
+                  node.distance < splitDistance(node.level, detail));
+  }
+  return splits;
 }
 
 void PatchTree::splitKeepingOneLevel(std::int32_t leaf) {
@@ -123,39 +199,6 @@ void PatchTree::merge(std::int32_t parent) {
   topology_.merge(parent);
   topology_[parent].visible = false;
   classify(parent);
-}
-
-double PatchTree::familyAngle(std::int32_t parent) const {
-  double sum = 0.0;
-  for (const std::int32_t child : topology_[parent].children) sum += topology_[child].solidAngle;
-  return sum;
-}
-
-std::int32_t PatchTree::largestLeaf() const {
-  std::int32_t largest = -1;
-  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
-    const PatchNode& node = topology_[id];
-    if (node.alive && node.leaf() && node.visible && node.level < kDeepestLevel &&
-        (largest < 0 || node.solidAngle > topology_[largest].solidAngle))
-      largest = id;
-  }
-  return largest;
-}
-
-// The mergeable family of least solid angle: among families out of every view when `hiddenOnly`
-// (their parent's shell too), else among families whose four patches are all visible.
-std::int32_t PatchTree::smallestFamily(bool hiddenOnly) const {
-  std::int32_t smallest = -1;
-  double smallestAngle = std::numeric_limits<double>::infinity();
-  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
-    if (!mergeable(id)) continue;
-    const auto& children = topology_[id].children;
-    const int visible = int(std::ranges::count_if(children, [&](std::int32_t c) { return topology_[c].visible; }));
-    if (hiddenOnly ? visible > 0 || viewedAngle(shellOf(id)) : visible < 4) continue;
-    const double angle = familyAngle(id);
-    if (angle < smallestAngle) smallest = id, smallestAngle = angle;
-  }
-  return smallest;
 }
 
 }  // namespace strata::icosahedral

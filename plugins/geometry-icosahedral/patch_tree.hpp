@@ -25,12 +25,15 @@ struct Patch {
   SphericalTriangle corners;
   int level = 0;             // splits from the icosahedron's face
   unsigned coarseEdges = 0;  // bit e: the neighbour across the edge from corner e to corner e + 1 is coarser
-  double solidAngle = 0.0;   // sr, the largest any view sees
 };
 
 // The frame-coherent patch tree of seed 000 section 3.2.1, computed once for all views: the faces of
-// the icosahedron split 1-to-4, kept near `patches` visible patches of about equal solid angle by
-// splitting the largest and merging the smallest four siblings. A patch is visible when its shell
+// the icosahedron split 1-to-4. A visible patch is split while its face-on distance from an eye
+// (patch_shell.hpp) is below its level's split distance, the detail scale times the level's nominal
+// size, and four siblings are merged when their parent would not be split: the largest patches in solid
+// angle split first, as in seed 000, but by a threshold on a measure each vertex also has, which is what
+// geomorphing needs (docs/geometry.md; the split distances are CDLOD's, Strugar 2009, on the sphere).
+// The detail scale follows the count of visible patches slowly toward `patches`. A patch is visible when its shell
 // (section 3.2.3) rises above the horizon and reaches into a view's frustum. Neighbouring leaves differ
 // by at most one level (section 3.4.1): a split first splits coarser neighbours, and a merge that would
 // break the rule is not made (digest 000 section 2.1).
@@ -38,32 +41,48 @@ class PatchTree {
  public:
   PatchTree(double radius, HeightRange heights, PatchTreeSettings settings = {});
 
-  // Reclassifies the leaves for the views, then splits or merges at most `operations` times; returns
-  // how many it made.
+  // Reclassifies the leaves for the views, merges and splits at most `operations` times, and, when that
+  // was enough to follow the views, moves the detail scale a step toward `patches` visible patches.
+  // Returns the splits and merges made.
   int update(std::span<const ViewVolume> views, int operations);
   int update(std::span<const ViewVolume> views) { return update(views, settings_.operationsPerFrame); }
+  // Updates without bounds and lets the detail scale jump, until the tree holds about `patches`: for a
+  // first frame, or a still image.
+  void settle(std::span<const ViewVolume> views);
 
   // The visible leaves, depth first from the icosahedron's faces.
   std::vector<Patch> visiblePatches() const;
   int visibleCount() const { return visibleCount_; }
   const PatchTopology& topology() const { return topology_; }
 
+  // A patch of `level` is split while its face-on distance from an eye is below this, m.
+  double splitDistance(int level) const;
+  // The split distance of the icosahedron's faces: every level's is this halved `level` times.
+  double splitDistanceAtLevelZero() const { return splitDistance(0); }
+
   // Splits below this level would make patches narrower than about 7 mm (the icosahedron's 7054 km
   // edges on Earth halved 30 times): finer than depth 5's vertices need for a 1 cm pattern seen from
   // 2 m, and well within what double normals resolve.
   static constexpr int kDeepestLevel = 30;
+  // The detail scale's bounds, in nominal patch sizes: a patch nearest the eye is about 1 / scale rad
+  // across. Below 1 it would fill a view; beyond 64 it would cover under 2 percent of one, finer than 300
+  // patches can cover a view with.
+  static constexpr double kLeastDetail = 1.0, kMostDetail = 64.0;
 
  private:
   PatchShell shellOf(std::int32_t id) const;
-  std::optional<double> viewedAngle(const PatchShell& shell) const;
+  std::optional<double> viewedDistance(const PatchShell& shell) const;
   void classify(std::int32_t id);
+  int refine(int operations);
+  bool wantsSplit(std::int32_t id, double distance) const;
   void splitKeepingOneLevel(std::int32_t leaf);
   bool mergeable(std::int32_t parent) const;
   void merge(std::int32_t parent);
-  double familyAngle(std::int32_t parent) const;
-  std::int32_t largestLeaf() const;
-  std::int32_t smallestFamily(bool hiddenOnly) const;
-  bool improve();
+  int mergeFar(int operations);
+  int splitNear(int operations);
+  void followCount(double largestStep);
+  int splitsAt(double detail) const;
+  double splitDistance(int level, double detail) const;
 
   double radius_;
   HeightRange heights_;
@@ -71,6 +90,7 @@ class PatchTree {
   PatchTopology topology_;
   std::span<const ViewVolume> views_;  // during update() only
   int visibleCount_ = 0;
+  double detail_ = 16.0;  // the detail scale: a start between the bounds that settle() moves from
 };
 
 }  // namespace strata::icosahedral

@@ -1,12 +1,19 @@
 #version 450 core
+#define STRATA_GEOMETRY_STAGE
+STRATA_PROGRAM_DEFINES
 // The GPU subdivision of the visible patches (seed 000 section 3.3, done as digest 000 section 3.2 advises
 // for GL 4.5): one workgroup per patch fills the breadth-first levels in order, each vertex from its two
 // parents in the dependence table, so no ping-pong is needed. The operations mirror
 // plugins/geometry-icosahedral/geodesic_subdivision.cpp, whose float form the tests hold to its double one.
+// Each vertex is then displaced by the height layer and geomorphed: drawn between its parents' drawn
+// midpoint and its own surface point by how far its level's split distance lies beyond it
+// (docs/geometry.md, "Geomorphing"), so that patches split and merge without pops.
+#include "strata/precise_trig.glsl"
+#include "strata/surface_point.glsl"
 layout(local_size_x = 64) in;
 
 struct SeedCorner {
-  vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: unused
+  vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: the patch's level
   vec4 normal;    // xyz: planet-fixed unit normal
   vec4 lonlat;    // xy: rad from the frame's reference, longitude unwrapped
 };
@@ -15,65 +22,152 @@ layout(std430, binding = 0) readonly buffer Parents { uvec2 parents[]; };
 layout(std430, binding = 1) readonly buffer Seeds { SeedCorner seeds[]; };  // three per patch
 layout(std430, binding = 2) restrict buffer Positions { vec4 positions[]; };  // as SeedCorner
 layout(std430, binding = 3) restrict buffer Normals { vec4 normals[]; };  // xyz: normal; w: angle to the parents
-layout(std430, binding = 4) restrict buffer LonLats { vec2 lonlats[]; };
+layout(std430, binding = 4) restrict buffer LonLats { vec4 lonlats[]; };  // xy: own, zw: drawn; rad from the reference
+layout(std430, binding = 5) restrict buffer Surface { vec4 surface[]; };  // xyz: drawn point, m from the eye; w: morph
+layout(std430, binding = 6) restrict buffer Shading { vec4 shadingNormals[]; };  // xyz: drawn shading normal
 
 uniform int depth;
 uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
+uniform vec2 referenceLonlat;    // rad: the point below the eye
+uniform float radius;            // m, only to turn height differences into slopes
+uniform float footprintPerMetre;  // rad between vertices per metre from the eye (patch_batch.hpp)
+uniform float splitDistanceAtLevelZero;  // m: a patch of level L splits nearer than this halved L times
+
+// The share of a split distance over which a vertex morphs: from its parents' midpoint where its level's
+// split distance lies at the vertex to its own point a third nearer. A vertex of a patch's finest level
+// lies between half its split distance and all of it, so it is drawn where it is over the nearer third of
+// its range and morphs over the farther; CDLOD (Strugar 2009) morphs over about the same share.
+const float kMorphBand = 1.0 / 3.0;
+const float kGrazingCosine = 1.0 / 16.0;  // as patch_shell.hpp's
 
 int verticesUpTo(int level) { return ((1 << level) + 1) * ((1 << level) + 2) / 2; }
 
 // The geodesic midpoint of seed 000 section 3.3.4 (digest 000 section 3.4), both coordinates measured
 // from the reference: the plain midpoint plus two corrections, second order in the parents' separation,
-// so that the GPU's sin, cos and atan (good to about 1e-6 on llvmpipe: tens of metres on Earth in the
-// digest's form) only scale small numbers. geodesic_subdivision.cpp derives the form.
+// so that sin, cos and atan only scale small numbers. geodesic_subdivision.cpp derives the form. The
+// trigonometry is strata/precise_trig.glsl's: NVIDIA's builtin sin and tan are good only to about 4e-7
+// absolute, wholly wrong for the micro-radian angles here (a 720 m error at a pole on an H100), and
+// llvmpipe's asin and atan lose digits for tiny arguments.
 vec2 geodesicMidpoint(vec2 j, vec2 k) {
   vec2 middle = 0.5 * (j + k);
   float halfDLon = 0.5 * (k.x - j.x), halfDLat = 0.5 * (k.y - j.y);
   // sin and cos of the absolute mean latitude, from the reference's and the relative one's
-  float sinMiddle = referenceLatitude.x * cos(middle.y) + referenceLatitude.y * sin(middle.y);
-  float cosMiddle = referenceLatitude.y * cos(middle.y) - referenceLatitude.x * sin(middle.y);
-  float cosDelta = cos(halfDLat), sinDelta = sin(halfDLat);
+  float sinRelative, cosRelative, sinDelta, cosDelta;
+  preciseSinCos(middle.y, sinRelative, cosRelative);
+  preciseSinCos(halfDLat, sinDelta, cosDelta);
+  float sinMiddle = referenceLatitude.x * cosRelative + referenceLatitude.y * sinRelative;
+  float cosMiddle = referenceLatitude.y * cosRelative - referenceLatitude.x * sinRelative;
   float cosJ = cosMiddle * cosDelta + sinMiddle * sinDelta, cosK = cosMiddle * cosDelta - sinMiddle * sinDelta;
-  float lonCorrection = atan(-sinMiddle * sinDelta * tan(halfDLon), cosMiddle * cosDelta);
-  float sinHalfDLon = sin(halfDLon), cosMiddleDelta = cosMiddle * cosDelta;
+  float lonCorrection = preciseAtan(-sinMiddle * sinDelta * preciseTan(halfDLon), cosMiddle * cosDelta);
+  float sinHalfDLon = preciseSin(halfDLon), cosMiddleDelta = cosMiddle * cosDelta;
   float s = cosJ * cosK * sinHalfDLon * sinHalfDLon / (cosMiddleDelta * cosMiddleDelta);
   float root = sqrt(1.0 - s);
   float u = s / (root * (1.0 + root));
-  float latCorrection = atan(sinMiddle * cosMiddle * u, 1.0 + u * sinMiddle * sinMiddle);
+  float latCorrection = preciseAtan(sinMiddle * cosMiddle * u, 1.0 + u * sinMiddle * sinMiddle);
   return middle + vec2(lonCorrection, latCorrection);
 }
 
-void subdivide(uint base, uint i) {
+#ifdef STRATA_HAS_HEIGHT
+STRATA_HEIGHT_LAYER_GLSL
+
+// The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
+// vertex spacing.
+float heightAt(vec2 fromReference, vec3 normal, float spacing) {
+  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(spacing, 0.0), vec2(0.0, spacing),
+                                fromReference);
+  vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
+  return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
+}
+
+// The displaced surface's normal from central differences of the height over one vertex spacing.
+vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
+  vec2 lonlat = referenceLonlat + fromReference;
+  float dLon = spacing / max(cos(lonlat.y), 1e-4);
+  float eastSlope = (heightAt(fromReference + vec2(dLon, 0.0), normal, spacing) -
+                     heightAt(fromReference - vec2(dLon, 0.0), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  float northSlope = (heightAt(fromReference + vec2(0.0, spacing), normal, spacing) -
+                      heightAt(fromReference - vec2(0.0, spacing), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
+  vec3 north = cross(normal, east);
+  return normalize(normal - eastSlope * east - northSlope * north);
+}
+#endif
+
+// The face-on distance of a point of the sphere (patch_shell.hpp), m.
+float faceOnDistance(vec3 fromEye, vec3 normal) {
+  float distance = length(fromEye);
+  return distance / sqrt(clamp(-dot(fromEye, normal) / distance, kGrazingCosine, 1.0));
+}
+
+// How far a vertex of `globalLevel` (its patch's level plus its level within the patch) at `faceOn`
+// distance has morphed toward its own point: 0 where the split that brought it in is just being made, 1
+// a morph band nearer. Vertices of the faces' own levels never morph: the faces are never merged.
+float morphOf(int globalLevel, float faceOn) {
+  int splitLevel = globalLevel - depth - 1;  // the level whose split makes the vertex a patch's finest
+  if (splitLevel < 0) return 1.0;
+  float splitDistance = splitDistanceAtLevelZero * exp2(-float(splitLevel));
+  return clamp((1.0 - faceOn / splitDistance) / kMorphBand, 0.0, 1.0);
+}
+
+// Displaces vertex v and morphs it by m from the midpoint of its parents' drawn points (m = 1: its own).
+void draw(uint v, float m, uint j, uint k) {
+  vec3 position = positions[v].xyz, n = normals[v].xyz;
+  vec2 lonlat = lonlats[v].xy;
+  float h = 0.0;
+  vec3 shading = n;
+#ifdef STRATA_HAS_HEIGHT
+  float spacing = footprintPerMetre * faceOnDistance(position, n);
+  h = heightAt(lonlat, n, spacing);
+  shading = shadingNormal(h, lonlat, n, spacing);
+#endif
+  vec3 drawn = position + h * n;
+  vec2 drawnLonlat = lonlat;
+  if (m < 1.0) {
+    drawn = mix(0.5 * (surface[j].xyz + surface[k].xyz), drawn, m);
+    drawnLonlat = mix(0.5 * (lonlats[j].zw + lonlats[k].zw), lonlat, m);
+    shading = mix(normalize(shadingNormals[j].xyz + shadingNormals[k].xyz), shading, m);
+  }
+  surface[v] = vec4(drawn, m);
+  lonlats[v] = vec4(lonlat, drawnLonlat);
+  shadingNormals[v] = vec4(normalize(shading), 0.0);
+}
+
+void subdivide(uint base, uint i, int globalLevel) {
   uvec2 p = parents[i];
   uint j = base + p.x, k = base + p.y;
   vec3 nj = normals[j].xyz, nk = normals[k].xyz;
   // Seed 000 section 3.3.3; the chord keeps w's resolution near 0 where acos would not (digest 000 section 3.3).
   vec3 n = normalize(nj + nk);
-  float w = 2.0 * asin(0.5 * length(nj - nk));
+  float w = 2.0 * preciseAsin(0.5 * length(nj - nk));
   normals[base + i] = vec4(n, w);
   // Ordered by value, so that two patches sharing an edge compute its vertices bit for bit alike.
-  vec2 lj = lonlats[j], lk = lonlats[k];
+  vec2 lj = lonlats[j].xy, lk = lonlats[k].xy;
   bool ordered = lj.x < lk.x || (lj.x == lk.x && lj.y <= lk.y);
-  lonlats[base + i] = ordered ? geodesicMidpoint(lj, lk) : geodesicMidpoint(lk, lj);
+  lonlats[base + i].xy = ordered ? geodesicMidpoint(lj, lk) : geodesicMidpoint(lk, lj);
   // Seed 000 section 3.3.5 with the digest's sagitta x tan(w / 4): no radius, so precision follows scale.
   vec4 pj = positions[j], pk = positions[k];
   float halfChord = 0.5 * length(pj.xyz - pk.xyz);
-  positions[base + i] = vec4(0.5 * (pj.xyz + pk.xyz) + halfChord * tan(0.25 * w) * n, pj.w);
+  vec3 position = 0.5 * (pj.xyz + pk.xyz) + halfChord * preciseTan(0.25 * w) * n;
+  positions[base + i] = vec4(position, pj.w);
+  draw(base + i, morphOf(globalLevel, faceOnDistance(position, n)), j, k);
 }
 
 void main() {
   uint patchIndex = gl_WorkGroupID.x, base = patchIndex * uint(verticesUpTo(depth));
+  int patchLevel = int(seeds[3u * patchIndex].position.w);
   if (gl_LocalInvocationID.x < 3u) {
+    uint v = base + gl_LocalInvocationID.x;
     SeedCorner corner = seeds[3u * patchIndex + gl_LocalInvocationID.x];
-    positions[base + gl_LocalInvocationID.x] = corner.position;
-    normals[base + gl_LocalInvocationID.x] = vec4(corner.normal.xyz, 0.0);
-    lonlats[base + gl_LocalInvocationID.x] = corner.lonlat.xy;
+    positions[v] = corner.position;
+    normals[v] = vec4(corner.normal.xyz, 0.0);
+    lonlats[v] = vec4(corner.lonlat.xy, corner.lonlat.xy);
+    draw(v, 1.0, v, v);  // corners have finished morphing while their patch exists (docs/geometry.md)
   }
   memoryBarrierBuffer();
   barrier();
   for (int level = 1; level <= depth; ++level) {
     for (uint i = uint(verticesUpTo(level - 1)) + gl_LocalInvocationID.x; i < uint(verticesUpTo(level)); i += gl_WorkGroupSize.x)
-      subdivide(base, i);
+      subdivide(base, i, patchLevel + level);
     memoryBarrierBuffer();
     barrier();
   }

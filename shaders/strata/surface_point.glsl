@@ -10,7 +10,7 @@ struct SurfacePoint {
   vec2 fromReference;
 };
 
-#ifdef STRATA_VERTEX_STAGE
+#ifdef STRATA_GEOMETRY_STAGE
 // Bilinear filtering done by hand on one mip level, with texel fetches. Mesa's llvmpipe gave one vertex
 // different filtered values in different invocations of a vertex shader (textureLod and textureGrad
 // alike), which cracked the displaced mesh; fetches are exact everywhere. `repeatX`: wrap across the
@@ -29,10 +29,10 @@ vec4 bilinearTexels(sampler2D image, vec2 uv, int level, bool repeatX) {
 #endif
 
 // Samples `image` at `uv` over a footprint given as texture-coordinate steps along x and y. Fragment
-// stages filter anisotropically (textureGrad); vertex stages (heights for geometry) filter trilinearly by
-// hand at the level of the longer step.
+// stages filter anisotropically (textureGrad); geometry stages (heights sampled by the compute pass, which
+// has no derivatives) filter trilinearly by hand at the level of the longer step.
 vec4 sampleFootprint(sampler2D image, vec2 uv, vec2 stepX, vec2 stepY, bool repeatX) {
-#ifdef STRATA_VERTEX_STAGE
+#ifdef STRATA_GEOMETRY_STAGE
   vec2 size = vec2(textureSize(image, 0));
   float lod = clamp(log2(max(length(stepX * size), length(stepY * size))), 0.0, float(textureQueryLevels(image) - 1));
   int level = int(floor(lod));

@@ -33,7 +33,7 @@ Patch patchAround(const glm::dvec3& centre, double size) {
   const auto corner = [&](double angle) {
     return glm::normalize(centre + a * (std::cos(angle) * east + std::sin(angle) * north));
   };
-  return {{corner(glm::radians(-90.0)), corner(glm::radians(30.0)), corner(glm::radians(150.0))}, 0, 0, 0.0};
+  return {{corner(glm::radians(-90.0)), corner(glm::radians(30.0)), corner(glm::radians(150.0))}, 0, 0};
 }
 
 struct Errors {
@@ -50,15 +50,15 @@ Errors subdivideOnGpu(const Patch& patch, const glm::dvec3& eye) {
   View view;
   view.eye = eye;
   view.reference = {std::atan2(eye.y, eye.x), std::asin(eye.z / glm::length(eye))};  // as makeView sets it
-  const PatchBatch batch = batchPatches({patch}, view, kEarth, table, windings);
+  const PatchBatch batch = batchPatches({patch}, view, kEarth, 1.0, table, windings);  // level 0: never morphed
   PatchBuffers buffers(table, windings);
   buffers.upload(batch);
   ShaderLibrary shaders;
   const ShaderProgram subdivision(
-      {{GL_COMPUTE_SHADER, "subdivide_patches.comp", shaders.expand("geometry/subdivide_patches.comp")}});
-  subdivision.use();
-  subdivision.set("depth", kDepth);
-  subdivision.set("referenceLatitude", glm::vec2(std::sin(batch.reference.lat), std::cos(batch.reference.lat)));
+      {{GL_COMPUTE_SHADER, "subdivide_patches.comp",
+        shaders.expand("geometry/subdivide_patches.comp",
+                       {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}})}});
+  useSubdivision(subdivision, batch, kDepth, kEarth);
   buffers.subdivide();
   const std::vector<PatchBuffers::Vertex> gpu = buffers.readVertices();
 

@@ -53,9 +53,16 @@ TEST(PatchShell, ADirectionInsideIsItsOwnSupport) {
   EXPECT_FALSE(holds(kTriangle, -glm::normalize(centre)));
 }
 
-TEST(PatchShell, TheOctantSubtendsAnEighthOfTheSphereFromTheCentre) {
+// Above a point inside the octant, the nearest point is straight below; beside it, on the nearest edge.
+// An eye a metre above an Earth-sized sphere keeps its metre (no digits lost to R^2 - d^2).
+TEST(PatchShell, TheNearestDistanceIsToTheNearestPointOfThePatch) {
   const SphericalTriangle octant{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-  EXPECT_NEAR(solidAngle(octant, 1.0, glm::dvec3(0.0)), std::numbers::pi / 2.0, 1e-12);
+  const glm::dvec3 inside = glm::normalize(glm::dvec3(1, 1, 1));
+  EXPECT_NEAR(nearestDistance(octant, kEarth, inside * (kEarth + 1.0)), 1.0, 1e-6);
+  EXPECT_NEAR(nearestDistance(octant, 1.0, glm::dvec3(0.0)), 1.0, 1e-15);
+  // Beyond the edge x = 0 (the arc from y to z), 45 degrees round: the nearest point is (0, 1, 1)/sqrt(2).
+  const glm::dvec3 eye = glm::dvec3(-1, 1, 1) * 2.0;
+  EXPECT_NEAR(nearestDistance(octant, 1.0, eye), glm::length(eye - glm::normalize(glm::dvec3(0, 1, 1))), 1e-12);
 }
 
 // 300 km beyond a 1000 m high eye lies past the sphere's horizon (113 km) but within sight of an

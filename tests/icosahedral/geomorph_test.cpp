@@ -1,0 +1,125 @@
+// Geomorphing (issue 4, docs/geometry.md): the drawn surface moves continuously as the eye does, so a
+// fly-in shows no pops. The compute pass subdivides a settled tree's patches over relief of kilometres for
+// an eye descending in steps of a thousandth of its height; every drawn vertex must move, between steps,
+// by a small share of its distance, where a vertex that popped from its parents' midpoint to its own point
+// would jump by its share of the relief. And a patch whose split is just being made draws its finest
+// vertices at their parents' midpoints, so that the split itself changes nothing on screen.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <strata/body.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+
+#include "patch_buffers.hpp"
+#include "rendering.hpp"
+
+namespace strata::icosahedral {
+namespace {
+
+constexpr double kEarth = 6371000.0;
+constexpr int kDepth = 5;
+constexpr double kRelief = 3000.0;  // m: the test terrain's amplitude
+// Relief in waves 60 km long east-west and north-south: some tens of vertices across at the levels an
+// eye 30 km up draws, so that every level's vertices sit off their parents' midpoints by up to hundreds of
+// metres.
+const char* const kTerrain = R"(
+vec4 testTerrain(SurfacePoint p) {
+  float k = 6371000.0 / 60000.0 * 6.2831853;
+  return vec4(3000.0 * sin(k * p.fromReference.x) * cos(k * p.fromReference.y), 0.0, 0.0, 1.0);
+}
+)";
+
+class Subdivision {
+ public:
+  Subdivision() : table_(kDepth), windings_(table_), buffers_(table_, windings_) {
+    ShaderLibrary shaders;
+    program_ = ShaderProgram(
+        {{GL_COMPUTE_SHADER, "subdivide_patches.comp",
+          shaders.expand("geometry/subdivide_patches.comp",
+                         {{"STRATA_PROGRAM_DEFINES", "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION testTerrain"},
+                          {"STRATA_HEIGHT_LAYER_GLSL", kTerrain}})}});
+  }
+
+  // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
+  std::vector<glm::dvec4> drawn(const std::vector<Patch>& patches, const View& view, double splitDistanceAtLevelZero) {
+    const PatchBatch batch = batchPatches(patches, view, kEarth, splitDistanceAtLevelZero, table_, windings_);
+    buffers_.upload(batch);
+    useSubdivision(program_, batch, kDepth, kEarth);
+    buffers_.subdivide();
+    std::vector<glm::dvec4> points;
+    for (const PatchBuffers::Vertex& vertex : buffers_.readVertices())
+      points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
+    return points;
+  }
+  const SubdivisionTable& table() const { return table_; }
+
+ private:
+  GlContext& context_ = test::headlessContext();  // first: the buffers need it
+  SubdivisionTable table_;
+  EdgeWindings windings_;
+  PatchBuffers buffers_;
+  ShaderProgram program_;
+};
+
+View viewFrom(double altitude) {
+  return makeView(Body{"Earth", kEarth}, {.lon = 10, .lat = 45, .altitude = altitude, .tilt = 60}, 1280, 720);
+}
+
+// The largest move of a drawn vertex between steps, over its distance from the eye, must stay under 2e-5:
+// a thirtieth of a pixel of a 1280-pixel, 45-degree view (6e-4 rad), where vertices drawn without
+// morphing (a morph band of 1e-6) jumped by up to 4.7e-4, most of a pixel, at every step.
+TEST(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
+  Subdivision subdivision;
+  PatchTree tree(kEarth, {-kRelief, kRelief});
+  const std::vector<ViewVolume> views{ViewVolume(viewFrom(3e4))};
+  tree.settle(views);
+  const std::vector<Patch> patches = tree.visiblePatches();
+  std::vector<glm::dvec4> previous = subdivision.drawn(patches, viewFrom(3e4), tree.splitDistanceAtLevelZero());
+  double largest = 0.0;
+  int morphing = 0;
+  for (int step = 1; step <= 40; ++step) {
+    const View view = viewFrom(3e4 * std::pow(0.999, step));
+    const std::vector<glm::dvec4> next = subdivision.drawn(patches, view, tree.splitDistanceAtLevelZero());
+    for (std::size_t i = 0; i < next.size(); ++i) {
+      const double distance = glm::length(glm::dvec3(next[i]) - view.eye);
+      largest = std::max(largest, glm::length(glm::dvec3(next[i] - previous[i])) / distance);
+      morphing += int(next[i].w > 0.0 && next[i].w < 1.0);
+    }
+    previous = next;
+  }
+  EXPECT_LT(largest, 2e-5);
+  EXPECT_GT(morphing, 10000) << "vertex-steps between their parents' midpoint and their own point";
+}
+
+// The four children of every visible leaf: a leaf lies at or beyond its split distance, so the children's
+// finest vertices, which its split would bring in, must be drawn fully at their parents' midpoint.
+TEST(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
+  Subdivision subdivision;
+  PatchTree tree(kEarth, {-kRelief, kRelief});
+  const View view = viewFrom(3e4);
+  const std::vector<ViewVolume> views{ViewVolume(view)};
+  tree.settle(views);
+  std::vector<Patch> children;
+  for (const Patch& leaf : tree.visiblePatches()) {
+    const auto& [a, b, c] = leaf.corners;
+    const glm::dvec3 ab = greatCircleMidpoint(a, b), bc = greatCircleMidpoint(b, c), ca = greatCircleMidpoint(c, a);
+    for (const SphericalTriangle& corners : {SphericalTriangle{a, ab, ca}, SphericalTriangle{ab, b, bc},
+                                             SphericalTriangle{ca, bc, c}, SphericalTriangle{ab, bc, ca}})
+      children.push_back({corners, leaf.level + 1, 0});
+  }
+  const std::vector<glm::dvec4> drawn = subdivision.drawn(children, view, tree.splitDistanceAtLevelZero());
+  const SubdivisionTable& table = subdivision.table();
+  double largestMorph = 0.0;
+  for (std::size_t patch = 0; patch < children.size(); ++patch)
+    for (int v = verticesPerPatch(kDepth - 1); v < table.vertexCount(); ++v)  // breadth first: the finest last
+      largestMorph = std::max(largestMorph, drawn[patch * std::size_t(table.vertexCount()) + std::size_t(v)].w);
+  EXPECT_GT(children.size(), 400u);
+  EXPECT_LT(largestMorph, 1e-6);
+}
+
+}  // namespace
+}  // namespace strata::icosahedral
