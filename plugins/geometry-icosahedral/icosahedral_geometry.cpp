@@ -178,7 +178,7 @@ NodeTypeDeclaration declaration() {
       {.name = "operations", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 0.0,
        .maximum = 100000.0,
        .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU time near half a "
-              "millisecond and still follows a 30 Hz fly-in); 0 holds the first frame's patches, to look at them "
+              "millisecond and still follows a 30 Hz fly-in); 0 holds the tree the first frame made, to look at it "
               "from elsewhere"},
       {.name = "lowest", .type = ParameterType::Real, .defaultValue = -11000.0, .units = "m",
        .doc = "no height lies below this; culling trusts it (the default is below Earth's deepest trench)"},

@@ -76,6 +76,39 @@ TEST(PatchTree, PatchesNearerThanTheirSplitDistanceAreSplit) {
   }
 }
 
+// No operations allowed: the tree and its detail scale stay as they were, wherever the eye has gone.
+TEST(PatchTree, ATreeAllowedNoOperationsHoldsItsPatches) {
+  PatchTree tree(kEarth, {0.0, 0.0});
+  tree.settle(std::vector<ViewVolume>{ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 1e5, .tilt = 45}))});
+  const std::vector<std::int32_t> before = leaves(tree);
+  const double splitDistance = tree.splitDistanceAtLevelZero();
+  const std::vector<ViewVolume> elsewhere{ViewVolume(viewFrom({.lon = 90, .lat = 30, .altitude = 1e3, .tilt = 80}))};
+  EXPECT_EQ(tree.update(elsewhere, 0), 0);
+  EXPECT_EQ(leaves(tree), before);
+  EXPECT_EQ(tree.splitDistanceAtLevelZero(), splitDistance);
+}
+
+// Seed 000's fly-in as strata-bench-flyin flies it at 30 Hz, 10,000 km down to 300 m above an 8.7 km
+// summit of a Mars-sized body: the default operations per frame keep up, frame after frame (the busiest
+// frame made 38 of its 64).
+TEST(PatchTree, TheDefaultOperationsFollowAThirtyHertzFlyIn) {
+  constexpr double kMars = 3396190.0, kLow = 8972.0;
+  PatchTree tree(kMars, {-12000.0, 12000.0});
+  int busiest = 0;
+  for (int frame = 0; frame < 150; ++frame) {
+    const double altitude = 1e7 * std::pow(kLow / 1e7, frame / 149.0);
+    const double closeness = std::clamp(std::log10(1e5 / altitude) / std::log10(1e5 / kLow), 0.0, 1.0);
+    const Camera camera{.lon = -74, .lat = 4 - glm::degrees(2000.0 / kMars) * closeness, .altitude = altitude,
+                        .tilt = 75 * closeness};
+    const std::vector<ViewVolume> views{ViewVolume(makeView(Body{"Mars", kMars}, camera, 1280, 720))};
+    if (frame == 0)
+      tree.settle(views);
+    else
+      busiest = std::max(busiest, tree.update(views));
+  }
+  EXPECT_LT(busiest, PatchTreeSettings{}.operationsPerFrame);
+}
+
 // Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser
 // exactly where the patch flags that edge as coarse.
 void expectOneLevelApartWithCoarseEdgesFlagged(const PatchTree& tree) {
