@@ -30,7 +30,7 @@ uniform int depth;
 uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
 uniform vec2 referenceLonlat;    // rad: the point below the eye
 uniform float radius;            // m, only to turn height differences into slopes
-uniform float footprintPerMetre;  // rad between vertices per metre from the eye (patch_batch.hpp)
+uniform float footprintPerMetre;  // rad between vertices per metre of face-on distance (patch_batch.hpp)
 uniform float splitDistanceAtLevelZero;  // m: a patch of level L splits nearer than this halved L times
 
 // The share of a split distance over which a vertex morphs: from its parents' midpoint where its level's
