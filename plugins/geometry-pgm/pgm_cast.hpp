@@ -1,0 +1,49 @@
+#pragma once
+#include <array>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <strata/gl.hpp>
+#include <strata/gl/shader_program.hpp>
+
+#include "cross_section.hpp"
+#include "sampling_camera.hpp"
+
+namespace strata::pgm {
+
+// The unit ray of grid point (column, row) of a grid of `size` points, in sampling space: the point
+// column/(W - 1), row/(H - 1) of the frustum's near plane, so that the outer rows and columns lie on its
+// edges, where the rays it was fitted to lie. The double twin of pgm_cast.comp's gridRay.
+glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, int row);
+
+// Makes the cast pass (`program`, shaders/geometry/pgm_cast.comp) current with its uniforms: the grid's
+// size, the sampling frustum, the nadir in sampling space and the cross section's constants. Every double
+// becomes a float here, and nothing planet-sized but the primary radius goes up (digest 003 section 1.8).
+void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
+             const glm::dvec3& nadir, glm::ivec2 size);
+
+// The pass's two grid-sized buffers, row by row (digest 003 section 1.5, output).
+class CastBuffers {
+ public:
+  explicit CastBuffers(glm::ivec2 size);
+  ~CastBuffers();
+  CastBuffers(const CastBuffers&) = delete;
+  CastBuffers& operator=(const CastBuffers&) = delete;
+
+  // Casts the grid's rays with the program in use (pgm_cast.comp).
+  void cast() const;
+
+  // What the pass wrote for each grid point, read back from the GPU (which this waits for): for tests.
+  struct Point {
+    glm::vec4 normal;    // xyz: the unit sphere normal in sampling space; w: 1 for a hit, 0 for a miss
+    glm::vec4 position;  // xyz: from the eye in sampling space; zero for a miss
+  };
+  std::vector<Point> read() const;
+
+ private:
+  glm::ivec2 size_;
+  std::array<GLuint, 2> buffers_{};  // normals, positions: bindings 0 and 1
+};
+
+}  // namespace strata::pgm

@@ -1,0 +1,106 @@
+#version 450 core
+// The cast pass of projective grid mapping (digest 003 section 1.5): each point of a W x H grid becomes a
+// ray of the sampling camera, cast onto the reference spheres through the 2D cross section of
+// plugins/geometry-pgm/cross_section.cpp, in float; tests/pgm/pgm_cast_test.cpp holds it to that double
+// reference. It writes the sphere normal and the position from the eye, both in sampling space.
+//
+// Precision (digest 003 section 1.8): nothing planet-sized is subtracted here. 1 m above Mars a float
+// holding the eye's distance from the centre resolves 0.25 m; the altitude is uploaded as such and as
+// eps = a/r_p, the normal angle gamma is formed from eps in the cancellation-free form, and the position's
+// components, a + 2 r_p sin^2(gamma/2) and r_p sin(gamma), are sums of positive terms that keep float's
+// relative precision at every distance: a point 1 m below the eye is resolved to about 0.1 um (measured
+// 1 m up: 0.4 um straight down, 2.6 um within 5 m of the eye tilted 85 degrees). The trig is
+// strata/precise_trig.glsl's: NVIDIA's sin and cos are good to 4e-7 absolute only, wrong for angles of
+// 1e-7 rad (1 m above the ground near the nadir), and llvmpipe's asin is bad for tiny arguments.
+#include "strata/precise_trig.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = 0) writeonly buffer Normals { vec4 normals[]; };  // xyz: s; w: 1 hit, 0 miss
+layout(std430, binding = 1) writeonly buffer Positions { vec4 positions[]; };  // xyz: from the eye, m; w: as the normal's
+
+uniform ivec2 gridSize;
+uniform vec4 frustum;  // left, right, bottom, top on the near plane
+uniform float near;
+uniform vec3 nadir;               // unit, sampling space
+uniform float altitude;           // a = d - r_p, m
+uniform float relativeAltitude;   // eps = a/r_p
+uniform float primaryRadius;      // r_p, m
+uniform float primaryTangent;     // tau0
+uniform float blendStart;         // b = zeta tau0
+uniform bool hasSecondary;        // false beyond the distance where the secondary sphere vanishes
+uniform float secondarySpan;      // tau_s - b
+uniform float outermostAngle;     // gamma0 = pi/2 - tau_s
+uniform float outermostTangent;   // tan(gamma0) = 1 / tan(tau_s)
+
+// Below this sine of the ray angle the ray is the nadir: the point it gives lies within 1e-8 a of the
+// nadir point, below the rounding of a itself.
+const float kNadirSine = 1e-8;
+
+// The grid's outer rows and columns lie on the frustum's edges, x/(W - 1) rather than (x + 0.5)/W: the
+// sampling camera was fitted to rays on those edges (the nadir, the tangent planes of the visible-sphere
+// frustum), and a mesh of the grid's points must reach them (section 1.4, step 4).
+vec3 gridRay(ivec2 point) {
+  vec2 along = vec2(point) / vec2(gridSize - 1);
+  return normalize(vec3(mix(frustum.xz, frustum.yw, along), -near));
+}
+
+// delta = (c^2 - 1) u^2 with c = 1 + eps (section 1.8).
+float shortfall(float sinRay) { return relativeAltitude * (2.0 + relativeAltitude) * sinRay * sinRay; }
+
+// Beyond the primary tangent, or more than 90 degrees from the nadir (section 1.5, step 3).
+bool misses(float sinRay, float cosRay) { return cosRay < 0.0 || cosRay * cosRay < shortfall(sinRay); }
+
+// asin(c u) - asin(u) as asin(u [eps w + delta / (w + sqrt(w^2 - delta))]) (sections 1.5 step 4, 1.8).
+float frontNormalAngle(float sinRay, float cosRay) {
+  float delta = shortfall(sinRay);
+  float exitCosine = sqrt(max(cosRay * cosRay - delta, 0.0));
+  return preciseAsin(sinRay * (relativeAltitude * cosRay + delta / (cosRay + exitCosine)));
+}
+
+// asin((d/r_s) sin(omega_s)) - omega_s (section 1.5, step 6) with omega_s = tau_s - g, g = (1 - f)(tau_s - b).
+// As d/r_s = 1/sin(tau_s), the asin's argument is 1 - h with h = 2 sin^2(g/2) + sin(g)/tan(tau_s), and
+// asin(1 - h) = pi/2 - 2 asin(sqrt(h/2)): no argument rounded next to 1, where asin's slope is infinite.
+// h below 0 is the reference's argument clamped at 1.
+float secondaryNormalAngle(float blend) {
+  float g = (1.0 - blend) * secondarySpan, s, c;
+  preciseSinCos(0.5 * g, s, c);
+  float h = max(2.0 * s * (s + c * outermostTangent), 0.0);
+  return outermostAngle + g - 2.0 * preciseAsin(sqrt(0.5 * h));
+}
+
+// mix(gamma_p, gamma_s, f) with the blend f = clamp((omega - b)/(tau0 - b), 0, 1) (section 1.5, steps 5-7,
+// erratum 1).
+float normalAngle(float sinRay, float cosRay) {
+  float primary = frontNormalAngle(sinRay, cosRay);
+  float blend = clamp((preciseAtan(sinRay, cosRay) - blendStart) / (primaryTangent - blendStart), 0.0, 1.0);
+  if (blend == 0.0 || !hasSecondary) return primary;
+  return primary + blend * (secondaryNormalAngle(blend) - primary);
+}
+
+void main() {
+  ivec2 point = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(point, gridSize))) return;
+  int i = point.y * gridSize.x + point.x;
+  vec3 ray = gridRay(point), antinadir = -nadir;
+  // The cross-section basis (section 1.5, step 2): |n x ray| = sin(omega), k = (n x ray) x n / sin(omega).
+  vec3 across = cross(nadir, ray);
+  float sinRay = length(across), cosRay = dot(ray, nadir);
+  if (misses(sinRay, cosRay)) {
+    normals[i] = vec4(0.0);
+    positions[i] = vec4(0.0);
+    return;
+  }
+  float gamma = 0.0;
+  vec3 side = vec3(0.0);
+  if (sinRay >= kNadirSine) {
+    side = cross(across, nadir) / sinRay;
+    gamma = normalAngle(sinRay, cosRay);
+  }
+  // s = -n cos(gamma) + k sin(gamma) (Eq. 3.12); the position r_p s - d n without d (erratum 2).
+  float sinGamma, cosGamma, sinHalf, cosHalf;
+  preciseSinCos(gamma, sinGamma, cosGamma);
+  preciseSinCos(0.5 * gamma, sinHalf, cosHalf);
+  normals[i] = vec4(antinadir * cosGamma + side * sinGamma, 1.0);
+  positions[i] = vec4(-(altitude + 2.0 * primaryRadius * sinHalf * sinHalf) * antinadir +
+                      primaryRadius * sinGamma * side, 1.0);
+}
