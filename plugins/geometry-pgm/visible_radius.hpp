@@ -1,0 +1,55 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <optional>
+
+#include <strata/gl.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+
+namespace strata::pgm {
+
+// The least height seen in a frame, read back a frame or more later for the primary reference sphere
+// (digest 003 section 1.3, method 2). The frame's rasterisation writes each pixel's height above the body's
+// radius, in displaced (scaled) metres, into an R32F texture cleared to +infinity where no terrain is
+// drawn. Heights rather than radii: a float holding Mars's radius resolves 0.25 m, one holding 21 km
+// resolves 2 mm, and the two are the same up to the body's radius (the digest's note 10).
+//
+// reduce() folds the texture to its minimum on the GPU (shaders/geometry/pgm_least_radius.comp), copies
+// it into a persistently mapped slot and sets a fence; latest() only asks the fences with a zero timeout,
+// so neither ever waits for the GPU. Make and use it on the GL thread.
+class VisibleRadius {
+ public:
+  explicit VisibleRadius(const ShaderLibrary& library);
+  ~VisibleRadius();
+  VisibleRadius(const VisibleRadius&) = delete;
+  VisibleRadius& operator=(const VisibleRadius&) = delete;
+
+  // Reduces texels [0, width) x [0, height) of the R32F texture `heights`.
+  void reduce(GLuint heights, int width, int height);
+
+  // The least height (m) of the most recent reduction the GPU has finished; the one before while the
+  // newest is still running. None before the first one finishes, or when no texel of it was covered.
+  std::optional<double> latest();
+
+ private:
+  // Frames a reduction may stay in flight: a fourth reduce() drops the oldest unread one.
+  static constexpr std::size_t kSlots = 4;
+
+  void collect(std::size_t slot);
+
+  ShaderProgram program_;
+  GLuint least_ = 0;     // the shader's atomic minimum, on the GPU
+  GLuint readback_ = 0;  // kSlots copies of it, mapped
+  const std::uint32_t* mapped_ = nullptr;
+  std::array<GLsync, kSlots> fences_{};
+  std::size_t next_ = 0;  // the slot the next reduce() writes: also the oldest one in flight
+  std::optional<double> latest_;
+};
+
+// The primary radius for this frame (digest 003 section 1.3, DIGEST NOTE): the body's radius plus the last
+// frame's least visible height, or plus the lowest height the body has (the minimum sphere) while there is
+// none, on the first frame or when nothing was drawn; then kept below the eye by clampPrimaryRadius.
+double primaryRadius(std::optional<double> latestHeight, double bodyRadius, double lowest, double eyeDistance);
+
+}  // namespace strata::pgm

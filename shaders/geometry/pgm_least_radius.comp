@@ -1,0 +1,39 @@
+#version 450 core
+// The least visible height of a frame, for the next frame's primary reference sphere (digest 003 section
+// 1.3, method 2; plugins/geometry-pgm/visible_radius.cpp). The input holds each pixel's height above the
+// body's radius in metres, +infinity where no terrain was drawn. Each 16 x 16 workgroup folds its texels
+// in shared memory, then one atomicMin per workgroup folds them all into one uint: one dispatch, where the
+// thesis's min mipmap takes a pass per level. GL 4.5 has no float atomicMin, so the heights go through
+// orderedBits, which orders their uints as the floats are ordered; min is exact, so the result is the
+// least texel to the bit, whatever order the workgroups finish in.
+layout(local_size_x = 16, local_size_y = 16) in;
+
+layout(binding = 0) uniform sampler2D heights;  // m above the body's radius; +infinity uncovered
+layout(std430, binding = 0) buffer Least { uint least; };  // orderedBits of the minimum; cleared to +inf's
+
+uniform ivec2 size;  // the part of `heights` to reduce, from its corner (0, 0)
+
+const uint kGroupSize = 256u;
+const float kUncovered = uintBitsToFloat(0x7f800000u);  // +infinity
+
+shared float partial[kGroupSize];
+
+// A uint that compares as the float does: positives get the sign bit set, negatives are flipped whole.
+uint orderedBits(float value) {
+  const uint bits = floatBitsToUint(value);
+  return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
+}
+
+void main() {
+  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+  const uint index = gl_LocalInvocationIndex;
+  partial[index] = all(lessThan(texel, size)) ? texelFetch(heights, texel, 0).r : kUncovered;
+  memoryBarrierShared();
+  barrier();
+  for (uint stride = kGroupSize / 2u; stride > 0u; stride /= 2u) {
+    if (index < stride) partial[index] = min(partial[index], partial[index + stride]);
+    memoryBarrierShared();
+    barrier();
+  }
+  if (index == 0u) atomicMin(least, orderedBits(partial[0]));
+}
