@@ -109,8 +109,8 @@ float morphOf(int globalLevel, float faceOn) {
   return clamp((1.0 - faceOn / splitDistance) / kMorphBand, 0.0, 1.0);
 }
 
-// Displaces vertex v and morphs it by m from the midpoint of its parents' drawn points (m = 1: its own).
-void draw(uint v, float m, uint j, uint k) {
+// Displaces vertex v by the height layer: its own surface point, longitude and latitude, and shading normal.
+void displace(uint v) {
   vec3 position = positions[v].xyz, n = normals[v].xyz;
   vec2 lonlat = lonlats[v].xy;
   float h = 0.0;
@@ -120,19 +120,24 @@ void draw(uint v, float m, uint j, uint k) {
   h = heightAt(lonlat, n, spacing);
   shading = shadingNormal(h, lonlat, n, spacing);
 #endif
-  vec3 drawn = position + h * n;
-  vec2 drawnLonlat = lonlat;
-  if (m < 1.0) {
-    drawn = mix(0.5 * (surface[j].xyz + surface[k].xyz), drawn, m);
-    drawnLonlat = mix(0.5 * (lonlats[j].zw + lonlats[k].zw), lonlat, m);
-    shading = mix(normalize(shadingNormals[j].xyz + shadingNormals[k].xyz), shading, m);
-  }
-  surface[v] = vec4(drawn, m);
-  lonlats[v] = vec4(lonlat, drawnLonlat);
-  shadingNormals[v] = vec4(normalize(shading), 0.0);
+  surface[v] = vec4(position + h * n, 1.0);
+  lonlats[v] = vec4(lonlat, lonlat);
+  shadingNormals[v] = vec4(shading, 0.0);
 }
 
-void subdivide(uint base, uint i, int globalLevel) {
+// Morphs displaced vertex v, of `globalLevel`, from the midpoint of its parents' drawn points toward its
+// own: drawn = mix(midpoint, own, m), and its longitude, latitude and shading normal alike.
+void morph(uint v, uint j, uint k, int globalLevel) {
+  float m = morphOf(globalLevel, faceOnDistance(positions[v].xyz, normals[v].xyz));
+  surface[v].w = m;
+  if (m == 1.0) return;
+  surface[v].xyz = mix(0.5 * (surface[j].xyz + surface[k].xyz), surface[v].xyz, m);
+  lonlats[v].zw = mix(0.5 * (lonlats[j].zw + lonlats[k].zw), lonlats[v].xy, m);
+  shadingNormals[v].xyz =
+      normalize(mix(normalize(shadingNormals[j].xyz + shadingNormals[k].xyz), shadingNormals[v].xyz, m));
+}
+
+void subdivide(uint base, uint i) {
   uvec2 p = parents[i];
   uint j = base + p.x, k = base + p.y;
   vec3 nj = normals[j].xyz, nk = normals[k].xyz;
@@ -147,11 +152,13 @@ void subdivide(uint base, uint i, int globalLevel) {
   // Seed 000 section 3.3.5 with the digest's sagitta x tan(w / 4): no radius, so precision follows scale.
   vec4 pj = positions[j], pk = positions[k];
   float halfChord = 0.5 * length(pj.xyz - pk.xyz);
-  vec3 position = 0.5 * (pj.xyz + pk.xyz) + halfChord * preciseTan(0.25 * w) * n;
-  positions[base + i] = vec4(position, pj.w);
-  draw(base + i, morphOf(globalLevel, faceOnDistance(position, n)), j, k);
+  positions[base + i] = vec4(0.5 * (pj.xyz + pk.xyz) + halfChord * preciseTan(0.25 * w) * n, pj.w);
 }
 
+// Three sweeps, each a barrier apart: the subdivision level by level, which is cheap; the displacement of
+// every vertex at once, which samples the height layer five times a vertex and so keeps all invocations
+// busy; then the morphs level by level, each from its parents' finished drawn points. Corners keep their
+// own points: they have finished morphing while their patch exists (docs/geometry.md).
 void main() {
   uint patchIndex = gl_WorkGroupID.x, base = patchIndex * uint(verticesUpTo(depth));
   int patchLevel = int(seeds[3u * patchIndex].position.w);
@@ -161,13 +168,21 @@ void main() {
     positions[v] = corner.position;
     normals[v] = vec4(corner.normal.xyz, 0.0);
     lonlats[v] = vec4(corner.lonlat.xy, corner.lonlat.xy);
-    draw(v, 1.0, v, v);  // corners have finished morphing while their patch exists (docs/geometry.md)
   }
   memoryBarrierBuffer();
   barrier();
   for (int level = 1; level <= depth; ++level) {
     for (uint i = uint(verticesUpTo(level - 1)) + gl_LocalInvocationID.x; i < uint(verticesUpTo(level)); i += gl_WorkGroupSize.x)
-      subdivide(base, i, patchLevel + level);
+      subdivide(base, i);
+    memoryBarrierBuffer();
+    barrier();
+  }
+  for (uint i = gl_LocalInvocationID.x; i < uint(verticesUpTo(depth)); i += gl_WorkGroupSize.x) displace(base + i);
+  memoryBarrierBuffer();
+  barrier();
+  for (int level = 1; level <= depth; ++level) {
+    for (uint i = uint(verticesUpTo(level - 1)) + gl_LocalInvocationID.x; i < uint(verticesUpTo(level)); i += gl_WorkGroupSize.x)
+      morph(base + i, base + parents[i].x, base + parents[i].y, patchLevel + level);
     memoryBarrierBuffer();
     barrier();
   }
