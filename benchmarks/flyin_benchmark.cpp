@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include <fly_in_path.hpp>
 #include <planet_model.hpp>
 #include <strata/engine.hpp>
 #include <strata/gl.hpp>
@@ -23,23 +24,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
+using strata::icosahedral::FlyInPath;
+
 constexpr int kWidth = 1280, kHeight = 720;
-constexpr int kFramesEachWay = 150;  // 5 s down and 5 s up at 30 Hz
-constexpr double kMarsRadius = 3396190.0, kStartAltitude = 1.0e7, kAboveSummit = 300.0;
+constexpr double kMarsRadius = FlyInPath::kMarsRadius;
 
-struct Summit {
-  double lon = 0.0, lat = 0.0;  // deg
-  double height = 0.0;          // m
-};
-
-// The highest of a 1-degree grid of the model's heights.
-Summit highestPoint() {
+// The flight to the highest of a 1-degree grid of the model's heights.
+FlyInPath flightToHighestPoint() {
   const strata::procedural::PlanetModel model({}, kMarsRadius);
-  Summit best{0.0, 0.0, -1e9};
+  FlyInPath best{0.0, 0.0, -1e9};
   for (int lat = -80; lat <= 80; ++lat)
     for (int lon = -180; lon < 180; ++lon) {
       const double h = model.height(strata::unitNormal(glm::radians(double(lon)), glm::radians(double(lat))));
-      if (h > best.height) best = {double(lon), double(lat), h};
+      if (h > best.summitHeight) best = {double(lon), double(lat), h};
     }
   return best;
 }
@@ -56,18 +53,6 @@ fs::path writePipeline() {
   return file;
 }
 
-// Camera at step `i` of the flight: altitude falls geometrically to 300 m above the summit, starting
-// 2 km south of it and looking north, tilting from straight down to 75 degrees below 100 km.
-strata::Camera cameraAt(int i, const Summit& summit) {
-  const int step = i < kFramesEachWay ? i : 2 * kFramesEachWay - 1 - i;
-  const double t = double(step) / double(kFramesEachWay - 1);
-  const double low = summit.height + kAboveSummit;
-  const double altitude = kStartAltitude * std::pow(low / kStartAltitude, t);
-  const double closeness = std::clamp(std::log10(1.0e5 / altitude) / std::log10(1.0e5 / low), 0.0, 1.0);
-  return {.lon = summit.lon, .lat = summit.lat - glm::degrees(2000.0 / kMarsRadius) * closeness,
-          .altitude = altitude, .heading = 0.0, .tilt = 75.0 * closeness, .fov = 45.0};
-}
-
 double percentile(std::vector<double> values, double fraction) {
   std::ranges::sort(values);
   return values[std::min(values.size() - 1, std::size_t(fraction * double(values.size())))];
@@ -77,12 +62,12 @@ void BM_FlyIn(benchmark::State& state) {
   auto context = strata::createHeadlessContext(false);
   strata::Engine engine;
   engine.load(writePipeline());
-  const Summit summit = highestPoint();
+  const FlyInPath flight = flightToHighestPoint();
   std::vector<double> frameMs;
   double patches = 0, triangles = 0, visibility = 0, subdivision = 0, rasterisation = 0;
   for (auto _ : state) {
-    for (int i = 0; i < 2 * kFramesEachWay; ++i) {
-      engine.camera() = cameraAt(i, summit);
+    for (int i = 0; i < 2 * FlyInPath::kFramesEachWay; ++i) {
+      engine.camera() = flight.cameraAt(i);
       const auto start = std::chrono::steady_clock::now();
       engine.render(kWidth, kHeight);
       glFinish();
@@ -101,7 +86,7 @@ void BM_FlyIn(benchmark::State& state) {
   state.counters["visibility_ms"] = visibility / frames;
   state.counters["subdivision_ms"] = subdivision / frames;
   state.counters["rasterisation_ms"] = rasterisation / frames;
-  std::printf("summit %.0f m at %.0f, %.0f; %s\n", summit.height, summit.lon, summit.lat,
+  std::printf("summit %.0f m at %.0f, %.0f; %s\n", flight.summitHeight, flight.summitLon, flight.summitLat,
               strata::currentGlInfo().renderer.c_str());
 }
 

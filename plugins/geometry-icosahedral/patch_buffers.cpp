@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "patch_shell.hpp"
+
 namespace strata::icosahedral {
 
 PatchBuffers::PatchBuffers(const SubdivisionTable& table, const EdgeWindings& windings)
@@ -103,6 +105,7 @@ void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int d
   program.set("radius", float(radius));
   program.set("footprintPerMetre", float(batch.footprintPerMetre));
   program.set("splitDistanceAtLevelZero", float(batch.splitDistanceAtLevelZero));
+  program.set("grazingCosine", float(kGrazingCosine));
 }
 
 }  // namespace strata::icosahedral

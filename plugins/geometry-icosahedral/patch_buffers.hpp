@@ -49,7 +49,8 @@ class PatchBuffers {
 };
 
 // Makes the compute pass (`program`, subdivide_patches.comp) current with its uniforms for the batch: the
-// subdivision's depth, the reference, the body's radius, the height footprint and the split distances.
+// subdivision's depth, the reference, the body's radius, the height footprint, the split distances and
+// the grazing cosine the tree's face-on distances use.
 void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int depth, double radius);
 
 }  // namespace strata::icosahedral

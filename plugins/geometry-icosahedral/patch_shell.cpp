@@ -69,11 +69,6 @@ double distanceAtAngle(double oneLessDot, double distance, double radius) {
 
 }  // namespace
 
-double nearestDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {
-  const auto [oneLessDot, distance] = nearestAngle(corners, eye);
-  return distanceAtAngle(oneLessDot, distance, radius);
-}
-
 // A point u's cosine is (dot(u, eye) - radius) / |eye - radius u|: at most the largest numerator over the
 // least denominator.
 double leastFaceOnDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye) {

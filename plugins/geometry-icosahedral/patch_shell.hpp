@@ -30,10 +30,6 @@ bool outsidePlane(const PatchShell& shell, const glm::dvec3& normal, double offs
 // of seed 000's horizon plane r^2/d, which alone would cull mountains that rise above the horizon).
 bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occluderRadius);
 
-// The distance from the eye to the nearest point of the spherical triangle on the sphere of `radius`:
-// exact, from the support function (the nearest point is the one of largest dot with the eye's direction).
-double nearestDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye);
-
 // The face-on distance of a point of the sphere: its distance from the eye over the square root of the
 // cosine between its normal and the direction to the eye (at least kGrazingCosine). A small patch there
 // subtends the solid angle it would face on at that distance, so splitting by it splits by solid angle as
@@ -42,7 +38,8 @@ double nearestDistance(const SphericalTriangle& corners, double radius, const gl
 constexpr double kGrazingCosine = 1.0 / 16.0;  // at the horizon a patch counts as 4 times as far: seen edge on
                                                // it still needs some detail for its silhouette
 // The least face-on distance of any point of the spherical triangle: a bound from below, from the
-// nearest distance and the largest cosine any point can have.
+// nearest distance (exact, by the support function: the nearest point is the one of largest dot with the
+// eye's direction) and the largest cosine any point can have.
 double leastFaceOnDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye);
 
 }  // namespace strata::icosahedral

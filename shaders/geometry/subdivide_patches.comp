@@ -32,13 +32,13 @@ uniform vec2 referenceLonlat;    // rad: the point below the eye
 uniform float radius;            // m, only to turn height differences into slopes
 uniform float footprintPerMetre;  // rad between vertices per metre of face-on distance (patch_batch.hpp)
 uniform float splitDistanceAtLevelZero;  // m: a patch of level L splits nearer than this halved L times
+uniform float grazingCosine;  // the least cosine a face-on distance counts (patch_shell.hpp's kGrazingCosine)
 
 // The share of a split distance over which a vertex morphs: from its parents' midpoint where its level's
 // split distance lies at the vertex to its own point a third nearer. A vertex of a patch's finest level
 // lies between half its split distance and all of it, so it is drawn where it is over the nearer third of
 // its range and morphs over the farther; CDLOD (Strugar 2009) morphs over about the same share.
 const float kMorphBand = 1.0 / 3.0;
-const float kGrazingCosine = 1.0 / 16.0;  // as patch_shell.hpp's
 
 int verticesUpTo(int level) { return ((1 << level) + 1) * ((1 << level) + 2) / 2; }
 
@@ -96,7 +96,7 @@ vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
 // The face-on distance of a point of the sphere (patch_shell.hpp), m.
 float faceOnDistance(vec3 fromEye, vec3 normal) {
   float distance = length(fromEye);
-  return distance / sqrt(clamp(-dot(fromEye, normal) / distance, kGrazingCosine, 1.0));
+  return distance / sqrt(clamp(-dot(fromEye, normal) / distance, grazingCosine, 1.0));
 }
 
 // How far a vertex of `globalLevel` (its patch's level plus its level within the patch) at `faceOn`

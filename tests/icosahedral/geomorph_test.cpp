@@ -11,17 +11,14 @@
 #include <vector>
 
 #include <strata/body.hpp>
-#include <strata/gl/shader_library.hpp>
-#include <strata/gl/shader_program.hpp>
 
-#include "patch_buffers.hpp"
-#include "rendering.hpp"
+#include "gpu_patches.hpp"
 
 namespace strata::icosahedral {
 namespace {
 
-constexpr double kEarth = 6371000.0;
-constexpr int kDepth = 5;
+constexpr double kEarth = test::GpuPatches::kRadius;
+constexpr int kDepth = test::GpuPatches::kDepth;
 constexpr double kRelief = 3000.0;  // m: the test terrain's amplitude
 // Relief in waves 60 km long east-west and north-south: some tens of vertices across at the levels an
 // eye 30 km up draws, so that every level's vertices sit off their parents' midpoints by up to hundreds of
@@ -33,37 +30,14 @@ vec4 testTerrain(SurfacePoint p) {
 }
 )";
 
-class Subdivision {
- public:
-  Subdivision() : table_(kDepth), windings_(table_), buffers_(table_, windings_) {
-    ShaderLibrary shaders;
-    program_ = ShaderProgram(
-        {{GL_COMPUTE_SHADER, "subdivide_patches.comp",
-          shaders.expand("geometry/subdivide_patches.comp",
-                         {{"STRATA_PROGRAM_DEFINES", "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION testTerrain"},
-                          {"STRATA_HEIGHT_LAYER_GLSL", kTerrain}})}});
-  }
-
-  // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
-  std::vector<glm::dvec4> drawn(const std::vector<Patch>& patches, const View& view, double splitDistanceAtLevelZero) {
-    const PatchBatch batch = batchPatches(patches, view, kEarth, splitDistanceAtLevelZero, table_, windings_);
-    buffers_.upload(batch);
-    useSubdivision(program_, batch, kDepth, kEarth);
-    buffers_.subdivide();
-    std::vector<glm::dvec4> points;
-    for (const PatchBuffers::Vertex& vertex : buffers_.readVertices())
-      points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
-    return points;
-  }
-  const SubdivisionTable& table() const { return table_; }
-
- private:
-  GlContext& context_ = test::headlessContext();  // first: the buffers need it
-  SubdivisionTable table_;
-  EdgeWindings windings_;
-  PatchBuffers buffers_;
-  ShaderProgram program_;
-};
+// The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
+std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
+                              double splitDistanceAtLevelZero) {
+  std::vector<glm::dvec4> points;
+  for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceAtLevelZero).vertices)
+    points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
+  return points;
+}
 
 View viewFrom(double altitude) {
   return makeView(Body{"Earth", kEarth}, {.lon = 10, .lat = 45, .altitude = altitude, .tilt = 60}, 1280, 720);
@@ -73,17 +47,17 @@ View viewFrom(double altitude) {
 // a thirtieth of a pixel of a 1280-pixel, 45-degree view (6e-4 rad), where vertices drawn without
 // morphing (a morph band of 1e-6) jumped by up to 4.7e-4, most of a pixel, at every step.
 TEST(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
-  Subdivision subdivision;
+  test::GpuPatches gpu("testTerrain", kTerrain);
   PatchTree tree(kEarth, {-kRelief, kRelief});
   const std::vector<ViewVolume> views{ViewVolume(viewFrom(3e4))};
   tree.settle(views);
   const std::vector<Patch> patches = tree.visiblePatches();
-  std::vector<glm::dvec4> previous = subdivision.drawn(patches, viewFrom(3e4), tree.splitDistanceAtLevelZero());
+  std::vector<glm::dvec4> previous = drawnPoints(gpu, patches, viewFrom(3e4), tree.splitDistanceAtLevelZero());
   double largest = 0.0;
   int morphing = 0;
   for (int step = 1; step <= 40; ++step) {
     const View view = viewFrom(3e4 * std::pow(0.999, step));
-    const std::vector<glm::dvec4> next = subdivision.drawn(patches, view, tree.splitDistanceAtLevelZero());
+    const std::vector<glm::dvec4> next = drawnPoints(gpu, patches, view, tree.splitDistanceAtLevelZero());
     for (std::size_t i = 0; i < next.size(); ++i) {
       const double distance = glm::length(glm::dvec3(next[i]) - view.eye);
       largest = std::max(largest, glm::length(glm::dvec3(next[i] - previous[i])) / distance);
@@ -98,7 +72,7 @@ TEST(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
 // The four children of every visible leaf: a leaf lies at or beyond its split distance, so the children's
 // finest vertices, which its split would bring in, must be drawn fully at their parents' midpoint.
 TEST(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
-  Subdivision subdivision;
+  test::GpuPatches gpu("testTerrain", kTerrain);
   PatchTree tree(kEarth, {-kRelief, kRelief});
   const View view = viewFrom(3e4);
   const std::vector<ViewVolume> views{ViewVolume(view)};
@@ -111,8 +85,8 @@ TEST(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
                                              SphericalTriangle{ca, bc, c}, SphericalTriangle{ab, bc, ca}})
       children.push_back({corners, leaf.level + 1, 0});
   }
-  const std::vector<glm::dvec4> drawn = subdivision.drawn(children, view, tree.splitDistanceAtLevelZero());
-  const SubdivisionTable& table = subdivision.table();
+  const std::vector<glm::dvec4> drawn = drawnPoints(gpu, children, view, tree.splitDistanceAtLevelZero());
+  const SubdivisionTable& table = gpu.table();
   double largestMorph = 0.0;
   for (std::size_t patch = 0; patch < children.size(); ++patch)
     for (int v = verticesPerPatch(kDepth - 1); v < table.vertexCount(); ++v)  // breadth first: the finest last

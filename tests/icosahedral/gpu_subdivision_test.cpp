@@ -8,17 +8,12 @@
 
 #include <cmath>
 
-#include <strata/gl/shader_library.hpp>
-#include <strata/gl/shader_program.hpp>
-
-#include "patch_buffers.hpp"
-#include "rendering.hpp"
+#include "gpu_patches.hpp"
 
 namespace strata::icosahedral {
 namespace {
 
-constexpr double kEarth = 6371000.0;
-constexpr int kDepth = 5;
+constexpr double kEarth = test::GpuPatches::kRadius;
 
 glm::dvec3 at(double lonDeg, double latDeg) {
   const double lon = glm::radians(lonDeg), lat = glm::radians(latDeg);
@@ -44,34 +39,23 @@ struct Errors {
 
 // Subdivides one patch on the GPU as seen from `eye` and measures it against the double subdivision.
 Errors subdivideOnGpu(const Patch& patch, const glm::dvec3& eye) {
-  test::headlessContext();
-  const SubdivisionTable table(kDepth);
-  const EdgeWindings windings(table);
   View view;
   view.eye = eye;
   view.reference = {std::atan2(eye.y, eye.x), std::asin(eye.z / glm::length(eye))};  // as makeView sets it
-  const PatchBatch batch = batchPatches({patch}, view, kEarth, 1.0, table, windings);  // level 0: never morphed
-  PatchBuffers buffers(table, windings);
-  buffers.upload(batch);
-  ShaderLibrary shaders;
-  const ShaderProgram subdivision(
-      {{GL_COMPUTE_SHADER, "subdivide_patches.comp",
-        shaders.expand("geometry/subdivide_patches.comp",
-                       {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}})}});
-  useSubdivision(subdivision, batch, kDepth, kEarth);
-  buffers.subdivide();
-  const std::vector<PatchBuffers::Vertex> gpu = buffers.readVertices();
+  static test::GpuPatches gpu;  // one program for all the tests
+  const auto [batch, vertices] = gpu.subdivide({patch}, view, 1.0);  // level 0: never morphed
+  const SubdivisionTable& table = gpu.table();
 
   const glm::dvec3 centre = patch.corners[0] + patch.corners[1] + patch.corners[2];
   const PatchSeed seed = patchSeed(patch.corners, kEarth, eye, std::atan2(centre.y, centre.x));
   const auto reference = subdivideGeodesic<double>(seed, batch.reference, table);
   Errors errors;
   for (std::size_t i = 0; i < reference.size(); ++i) {
-    const glm::dvec2 d = glm::dvec2(gpu[i].lonlat) - reference[i].lonlat;
+    const glm::dvec2 d = glm::dvec2(vertices[i].lonlat) - reference[i].lonlat;
     const double lat = batch.reference.lat + reference[i].lonlat.y;
     const double allowed = 1e-3 + 1e-6 * glm::length(reference[i].position);
     errors.ground = std::max(errors.ground, kEarth * std::hypot(d.x * std::cos(lat), d.y) / allowed);
-    errors.position = std::max(errors.position, glm::length(glm::dvec3(glm::vec3(gpu[i].position)) - reference[i].position));
+    errors.position = std::max(errors.position, glm::length(glm::dvec3(glm::vec3(vertices[i].position)) - reference[i].position));
   }
   return errors;
 }

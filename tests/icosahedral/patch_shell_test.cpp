@@ -2,6 +2,7 @@
 // many points of the shell, each tested on its own.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -53,16 +54,33 @@ TEST(PatchShell, ADirectionInsideIsItsOwnSupport) {
   EXPECT_FALSE(holds(kTriangle, -glm::normalize(centre)));
 }
 
-// Above a point inside the octant, the nearest point is straight below; beside it, on the nearest edge.
-// An eye a metre above an Earth-sized sphere keeps its metre (no digits lost to R^2 - d^2).
-TEST(PatchShell, TheNearestDistanceIsToTheNearestPointOfThePatch) {
+// A point's face-on distance: its distance over the square root of its cosine to the eye (at least
+// kGrazingCosine).
+double faceOnDistance(const glm::dvec3& unit, double radius, const glm::dvec3& eye) {
+  const glm::dvec3 toEye = eye - radius * unit;
+  const double distance = glm::length(toEye);
+  return distance / std::sqrt(std::clamp(glm::dot(unit, toEye) / distance, kGrazingCosine, 1.0));
+}
+
+// Straight above a point inside the patch the bound is the altitude, a metre over an Earth-sized sphere
+// without digits lost to R^2 - d^2. From anywhere it lies between the nearest point's distance and the
+// least face-on distance of the patch's points, found by sampling them (every 1/64 of the way across the
+// octant: the sampled nearest distance may lie up to about 0.02 above the true one).
+TEST(PatchShell, TheLeastFaceOnDistanceBoundsEveryPointOfThePatch) {
   const SphericalTriangle octant{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-  const glm::dvec3 inside = glm::normalize(glm::dvec3(1, 1, 1));
-  EXPECT_NEAR(nearestDistance(octant, kEarth, inside * (kEarth + 1.0)), 1.0, 1e-6);
-  EXPECT_NEAR(nearestDistance(octant, 1.0, glm::dvec3(0.0)), 1.0, 1e-15);
-  // Beyond the edge x = 0 (the arc from y to z), 45 degrees round: the nearest point is (0, 1, 1)/sqrt(2).
-  const glm::dvec3 eye = glm::dvec3(-1, 1, 1) * 2.0;
-  EXPECT_NEAR(nearestDistance(octant, 1.0, eye), glm::length(eye - glm::normalize(glm::dvec3(0, 1, 1))), 1e-12);
+  EXPECT_NEAR(leastFaceOnDistance(octant, kEarth, glm::normalize(glm::dvec3(1, 1, 1)) * (kEarth + 1.0)), 1.0, 1e-6);
+  for (const glm::dvec3& eye : {glm::dvec3(-1, 1, 1) * 2.0, glm::dvec3(3, -1, 0.5), glm::dvec3(0.2, 0.3, 1.05)}) {
+    double nearest = 1e300, leastFaceOn = 1e300;
+    for (double a = 0.0; a <= 1.0; a += 1.0 / 64.0)
+      for (double b = 0.0; a + b <= 1.0; b += 1.0 / 64.0) {
+        const glm::dvec3 unit = inside(octant, a, b);
+        nearest = std::min(nearest, glm::length(eye - unit));
+        leastFaceOn = std::min(leastFaceOn, faceOnDistance(unit, 1.0, eye));
+      }
+    const double bound = leastFaceOnDistance(octant, 1.0, eye);
+    EXPECT_GE(bound, nearest - 0.02) << "eye " << eye.x << ", " << eye.y << ", " << eye.z;
+    EXPECT_LE(bound, leastFaceOn) << "eye " << eye.x << ", " << eye.y << ", " << eye.z;
+  }
 }
 
 // 300 km beyond a 1000 m high eye lies past the sphere's horizon (113 km) but within sight of an

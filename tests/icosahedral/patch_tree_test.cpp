@@ -9,6 +9,7 @@
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 
+#include "fly_in_path.hpp"
 #include "patch_tree.hpp"
 
 namespace strata::icosahedral {
@@ -92,15 +93,12 @@ TEST(PatchTree, ATreeAllowedNoOperationsHoldsItsPatches) {
 // summit of a Mars-sized body: the default operations per frame keep up, frame after frame (the busiest
 // frame made 38 of its 64).
 TEST(PatchTree, TheDefaultOperationsFollowAThirtyHertzFlyIn) {
-  constexpr double kMars = 3396190.0, kLow = 8972.0;
-  PatchTree tree(kMars, {-12000.0, 12000.0});
+  const FlyInPath flight{-74.0, 4.0, 8672.0};  // the summit strata-bench-flyin's survey finds
+  PatchTree tree(FlyInPath::kMarsRadius, {-12000.0, 12000.0});
   int busiest = 0;
-  for (int frame = 0; frame < 150; ++frame) {
-    const double altitude = 1e7 * std::pow(kLow / 1e7, frame / 149.0);
-    const double closeness = std::clamp(std::log10(1e5 / altitude) / std::log10(1e5 / kLow), 0.0, 1.0);
-    const Camera camera{.lon = -74, .lat = 4 - glm::degrees(2000.0 / kMars) * closeness, .altitude = altitude,
-                        .tilt = 75 * closeness};
-    const std::vector<ViewVolume> views{ViewVolume(makeView(Body{"Mars", kMars}, camera, 1280, 720))};
+  for (int frame = 0; frame < FlyInPath::kFramesEachWay; ++frame) {
+    const View view = makeView(Body{"Mars", FlyInPath::kMarsRadius}, flight.cameraAt(frame), 1280, 720);
+    const std::vector<ViewVolume> views{ViewVolume(view)};
     if (frame == 0)
       tree.settle(views);
     else
