@@ -1,6 +1,6 @@
 // shaders/strata/precise_trig.glsl run on the headless context at many float arguments, against the std::
-// functions in double at the same arguments. A second test prints how far the driver's builtins are off at
-// tiny arguments (NVIDIA's sin and cos are good to 4e-7 absolute only), without judging them.
+// functions in double at the same arguments. Beside it, the test prints how far the driver's builtins are
+// off at tiny arguments (NVIDIA's sin and cos are good to 4e-7 absolute only), without judging them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -143,30 +143,11 @@ struct Worst {
   }
 };
 
-TEST(PreciseTrig, IsGoodToAFewUlpRelativeEverywhere) {
-  const std::vector<glm::vec2> pairs = arguments();
-  const std::vector<Results> results = evaluate(pairs);
-  for (int f = 0; f < kFunctions; ++f) {
-    Worst worst;
-    int judged = 0;
-    for (std::size_t i = 0; i < pairs.size(); ++i) {
-      const double value = exact(f, pairs[i]);
-      if (std::isnan(value)) continue;
-      worst.add(units(results[i].ours[f], value), pairs[i]);
-      ++judged;
-    }
-    std::printf("precise %-4s: worst %.2f units of 2^-23 relative, at (%.9g, %.9g); %d arguments\n", kNames[f],
-                worst.units, worst.at.x, worst.at.y, judged);
-    EXPECT_LE(worst.units, kTolerance[f]) << kNames[f] << " at (" << worst.at.x << ", " << worst.at.y << ")";
-  }
-}
-
-// Documents, never judges: the largest relative errors of the driver's builtins next to precise_trig.glsl's
-// at tiny arguments (|a|, or for atan |a / b|), where an absolute error bound is no bound at all: from 1e-7
-// to 1e-5 (the angles subdivide_patches.comp takes sines of), below 1e-4, and everywhere.
-TEST(PreciseTrig, ReportsTheBuiltinsErrorsAtTinyArguments) {
-  const std::vector<glm::vec2> pairs = arguments();
-  const std::vector<Results> results = evaluate(pairs);
+// Prints, beside the judged errors, the largest relative errors of the driver's builtins next to
+// precise_trig.glsl's at tiny arguments (|a|, or for atan |a / b|), where an absolute error bound is no
+// bound at all: from 1e-7 to 1e-5 (the angles subdivide_patches.comp takes sines of), below 1e-4, and
+// everywhere.
+void reportBuiltins(const std::vector<glm::vec2>& pairs, const std::vector<Results>& results) {
   const std::array<glm::dvec2, 3> ranges = {glm::dvec2(1e-7, 1e-5), glm::dvec2(0.0, 1e-4),
                                             glm::dvec2(0.0, std::numeric_limits<double>::infinity())};
   for (int f = 0; f < kFunctions; ++f) {
@@ -185,10 +166,30 @@ TEST(PreciseTrig, ReportsTheBuiltinsErrorsAtTinyArguments) {
     std::printf("%-4s worst relative error, builtin / precise: 1e-7 to 1e-5 %.2g / %.2g, below 1e-4 %.2g / %.2g, "
                 "everywhere %.2g / %.2g\n", kNames[f], eps * builtin[0].units, eps * ours[0].units,
                 eps * builtin[1].units, eps * ours[1].units, eps * builtin[2].units, eps * ours[2].units);
-    RecordProperty(std::string("builtin_") + kNames[f] + "_tiny", std::to_string(eps * builtin[0].units));
-    RecordProperty(std::string("precise_") + kNames[f] + "_tiny", std::to_string(eps * ours[0].units));
+    ::testing::Test::RecordProperty(std::string("builtin_") + kNames[f] + "_tiny", std::to_string(eps * builtin[0].units));
+    ::testing::Test::RecordProperty(std::string("precise_") + kNames[f] + "_tiny", std::to_string(eps * ours[0].units));
   }
 }
+
+TEST(PreciseTrig, IsGoodToAFewUlpRelativeEverywhere) {
+  const std::vector<glm::vec2> pairs = arguments();
+  const std::vector<Results> results = evaluate(pairs);
+  for (int f = 0; f < kFunctions; ++f) {
+    Worst worst;
+    int judged = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const double value = exact(f, pairs[i]);
+      if (std::isnan(value)) continue;
+      worst.add(units(results[i].ours[f], value), pairs[i]);
+      ++judged;
+    }
+    std::printf("precise %-4s: worst %.2f units of 2^-23 relative, at (%.9g, %.9g); %d arguments\n", kNames[f],
+                worst.units, worst.at.x, worst.at.y, judged);
+    EXPECT_LE(worst.units, kTolerance[f]) << kNames[f] << " at (" << worst.at.x << ", " << worst.at.y << ")";
+  }
+  reportBuiltins(pairs, results);
+}
+
 
 }  // namespace
 }  // namespace strata::icosahedral
