@@ -32,7 +32,7 @@ vec4 testTerrain(SurfacePoint p) {
 
 // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
 std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
-                              double splitDistanceAtLevelZero) {
+                                  double splitDistanceAtLevelZero) {
   std::vector<glm::dvec4> points;
   for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceAtLevelZero).vertices)
     points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
