@@ -4,8 +4,6 @@
 // patches of different levels. docs/geometry.md explains the parts.
 #include <array>
 #include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -13,6 +11,7 @@
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/height_input.hpp>
 #include <strata/layer.hpp>
 #include <strata/plugin.hpp>
 
@@ -21,42 +20,23 @@
 namespace strata::icosahedral {
 namespace {
 
-// Metres as a user would type them: 240000, not 2.4e+05.
-std::string metres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.0f", value);
-  return text;
-}
-
 class IcosahedralGeometry : public Node, public SurfaceGeometry {
  public:
   explicit IcosahedralGeometry(const NodeSetup& setup)
-      : height_(setup.input("height") ? setup.input("height")->layer() : nullptr),
+      : heights_(setup),
         radius_(setup.body->radius),
-        heights_(heightRange(setup)),
-        heightsWhere_(setup.parameters.where("highest")),
         table_(int(setup.parameters.integer("depth"))),
         windings_(table_),
-        tree_(radius_, heights_,
+        tree_(radius_, heights_.range(),
               {.patches = int(setup.parameters.integer("patches")),
                .operationsPerFrame = int(setup.parameters.integer("operations"))}) {}
 
   // The height layer has opened: where it knows its heights, they must lie within what culling trusts.
-  void open() override {
-    if (!height_) return;
-    const std::optional<ValueRange> range = height_->valueRange();
-    if (!range || (range->least >= heights_.lowest && range->greatest <= heights_.highest)) return;
-    throw Error(heightsWhere_,
-                "the height layer reaches from " + metres(range->least) + " to " + metres(range->greatest) +
-                    " m, beyond lowest (" + metres(heights_.lowest) + " m) or highest (" + metres(heights_.highest) +
-                    " m): culling would cut off terrain that shows",
-                "set lowest: " + metres(std::floor(std::min(range->least, heights_.lowest))) + " and highest: " +
-                    metres(std::ceil(std::max(range->greatest, heights_.highest))) + " on this node");
-  }
+  void open() override { heights_.checkLayerWithin(); }
 
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
-                                   gpu.shaders->expand("geometry/subdivide_patches.comp", heightSubstitutions())}});
+                                   gpu.shaders->expand("geometry/subdivide_patches.comp", heights_.substitutions())}});
     surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/icosahedral.vert",
                                gpu.shaders->expand("geometry/icosahedral.vert")},
                               {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
@@ -91,29 +71,10 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   const Framebuffer& gbuffer() const override { return gbuffer_; }
 
  private:
-  // The heights the patches' shells must hold. Without a height layer, the sphere itself.
-  static HeightRange heightRange(const NodeSetup& setup) {
-    if (!setup.input("height")) return {};
-    const HeightRange range{setup.parameters.real("lowest"), setup.parameters.real("highest")};
-    if (range.lowest > range.highest)
-      throw Error(setup.parameters.where("lowest"),
-                  "lowest (" + formatValue(range.lowest) + " m) lies above highest (" + formatValue(range.highest) +
-                      " m)",
-                  "give the height layer's least and greatest heights, least first");
-    return range;
-  }
-  std::map<std::string, std::string> heightSubstitutions() const {
-    if (!height_) return {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}};
-    return {{"STRATA_PROGRAM_DEFINES",
-             "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + height_->samplingFunction()},
-            {"STRATA_HEIGHT_LAYER_GLSL", height_->glsl()}};
-  }
   void clear();
 
-  Layer* height_;
+  HeightInput heights_;
   double radius_;
-  HeightRange heights_;
-  SourceLocation heightsWhere_;  // the node's `highest`, for messages
   SubdivisionTable table_;
   EdgeWindings windings_;
   PatchTree tree_;
@@ -140,7 +101,7 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   buffers_->upload(batch_);
   useSubdivision(subdivision_, batch_, table_.depth(), radius_);
   TextureUnits units;
-  if (height_) height_->bind(subdivision_, units);
+  if (heights_.layer()) heights_.layer()->bind(subdivision_, units);
   subdivisionTimer_->begin();
   buffers_->subdivide();
   subdivisionTimer_->end();
@@ -165,8 +126,7 @@ NodeTypeDeclaration declaration() {
   type.type = "geometry.icosahedral";
   type.category = NodeCategory::Geometry;
   type.summary = "The icosahedron tessellated for the view: patches chosen on the CPU, subdivided on the GPU";
-  type.inputs = {{.name = "height", .type = PortType::Layer, .kinds = {LayerKind::Height}, .optional = true,
-                  .doc = "heights in metres above the body's radius; none: the bare sphere"}};
+  type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = {
       {.name = "patches", .type = ParameterType::Integer, .defaultValue = std::int64_t(300), .minimum = 20.0,
@@ -180,11 +140,8 @@ NodeTypeDeclaration declaration() {
        .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU time near half a "
               "millisecond and still follows a 30 Hz fly-in); 0 holds the tree the first frame made, to look at it "
               "from elsewhere"},
-      {.name = "lowest", .type = ParameterType::Real, .defaultValue = -11000.0, .units = "m",
-       .doc = "no height lies below this; culling trusts it (the default is below Earth's deepest trench)"},
-      {.name = "highest", .type = ParameterType::Real, .defaultValue = 22000.0, .units = "m",
-       .doc = "no height lies above this; culling trusts it (the default is above Olympus Mons)"},
   };
+  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<IcosahedralGeometry>(setup); };
   return type;
 }

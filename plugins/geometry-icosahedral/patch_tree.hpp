@@ -4,16 +4,12 @@
 #include <span>
 #include <vector>
 
+#include <strata/height_input.hpp>
+
 #include "patch_topology.hpp"
 #include "view_volume.hpp"
 
 namespace strata::icosahedral {
-
-// Heights of the terrain, m above the body's radius, that the patches' shells must enclose.
-struct HeightRange {
-  double lowest = 0.0;
-  double highest = 0.0;
-};
 
 struct PatchTreeSettings {
   int patches = 300;            // visible patches to keep: seed 000 section 2.4.1 sets np to about 300

@@ -63,17 +63,31 @@ double normalAngle(const CrossSection& view, double sinRay, double cosRay) {
   return primary + blend * (secondaryNormalAngle(view, blend) - primary);
 }
 
+namespace {
+
+// A unit vector perpendicular to `unit`: the plane of a ray straight up from the nadir.
+glm::dvec3 anyPerpendicular(const glm::dvec3& unit) {
+  const glm::dvec3 axis = std::abs(unit.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return glm::normalize(glm::cross(unit, axis));
+}
+
+}  // namespace
+
 SpherePoint castRay(const CrossSection& view, const glm::dvec3& ray, const glm::dvec3& nadir) {
   const glm::dvec3 antinadir = -nadir;
   // The cross-section basis of section 1.5 step 2: i = n, j = i x ray, k = j x i; |j| = sin(omega).
   const glm::dvec3 across = glm::cross(nadir, ray);
-  const double sinRay = glm::length(across), cosRay = glm::dot(ray, nadir);
-  if (misses(view.altitude / view.primaryRadius, sinRay, cosRay)) return {false, glm::dvec3(0.0), glm::dvec3(0.0)};
-  if (sinRay < kNadirSine) return {true, antinadir, -view.altitude * antinadir};
-  const glm::dvec3 side = glm::cross(across, nadir) / sinRay;
+  double sinRay = glm::length(across), cosRay = glm::dot(ray, nadir);
+  const bool hit = !misses(view.altitude / view.primaryRadius, sinRay, cosRay);
+  if (hit && sinRay < kNadirSine) return {true, antinadir, -view.altitude * antinadir};
+  const glm::dvec3 side = sinRay >= kNadirSine ? glm::cross(across, nadir) / sinRay : anyPerpendicular(nadir);
+  if (!hit) {
+    sinRay = std::sin(view.primaryTangent);
+    cosRay = std::cos(view.primaryTangent);
+  }
   const double gamma = normalAngle(view, sinRay, cosRay);
   const double halfSine = std::sin(0.5 * gamma);
-  return {true, antinadir * std::cos(gamma) + side * std::sin(gamma),
+  return {hit, antinadir * std::cos(gamma) + side * std::sin(gamma),
           -(view.altitude + 2.0 * view.primaryRadius * halfSine * halfSine) * antinadir +
               view.primaryRadius * std::sin(gamma) * side};
 }

@@ -56,11 +56,14 @@ double secondaryNormalAngle(const CrossSection& view, double blend);
 // The normal angle of a ray that hits: mix(gamma_p, gamma_s, f) (section 1.5, step 7).
 double normalAngle(const CrossSection& view, double sinRay, double cosRay);
 
-// What the pass writes for one grid ray.
+// What the pass writes for one grid ray. A ray that misses the primary sphere, or points away from the
+// planet, is replaced by the ray of its cross-section plane that grazes the sphere (omega = tau0): its point
+// is the horizon, or beyond it at gamma0 with a secondary sphere, so that the grid's mesh reaches as far as
+// the view does (the thesis leaves misses unsaid, section 1.10 item 9).
 struct SpherePoint {
-  bool hit;             // false: the ray misses the primary sphere, or points away from the planet
-  glm::dvec3 normal;    // s, the unit sphere normal; zero for a miss
-  glm::dvec3 position;  // the point of the primary sphere at normal angle gamma, from the eye; zero for a miss
+  bool hit;             // false: the ray misses; the point is its plane's horizon
+  glm::dvec3 normal;    // s, the unit sphere normal
+  glm::dvec3 position;  // the point of the primary sphere at normal angle gamma, from the eye
 };
 
 // Below this sine of the ray angle the ray is the nadir: gamma = 0. The cross-section plane it would

@@ -14,17 +14,19 @@ glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, in
 // The secondary sphere's constants go up as tau_s - b and gamma0 = pi/2 - tau_s, formed in double: in
 // float each difference would lose its leading digits (digest 003 section 1.5, step 6).
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
-             const glm::dvec3& nadir, glm::ivec2 size) {
+             const glm::dmat3& samplingToLocal, glm::ivec2 size) {
   const double outermost = 0.5 * std::numbers::pi - view.secondaryTangent;
   program.use();
   program.set("gridSize", size);
   program.set("frustum", glm::vec4(camera.left, camera.right, camera.bottom, camera.top));
   program.set("near", float(camera.near));
-  program.set("nadir", glm::vec3(nadir));
+  program.set("samplingToLocal", glm::mat3(samplingToLocal));
   program.set("altitude", float(view.altitude));
   program.set("relativeAltitude", float(view.altitude / view.primaryRadius));
   program.set("primaryRadius", float(view.primaryRadius));
   program.set("primaryTangent", float(view.primaryTangent));
+  program.set("horizonSine", float(std::sin(view.primaryTangent)));
+  program.set("horizonCosine", float(std::cos(view.primaryTangent)));
   program.set("blendStart", float(view.blendStart));
   program.set("hasSecondary", int(view.secondaryRadius > 0.0));
   program.set("secondarySpan", float(view.secondaryTangent - view.blendStart));
@@ -40,9 +42,12 @@ CastBuffers::CastBuffers(glm::ivec2 size) : size_(size) {
 
 CastBuffers::~CastBuffers() { glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data()); }
 
+void CastBuffers::bind(GLuint first) const {
+  for (GLuint i = 0; i < buffers_.size(); ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, first + i, buffers_[i]);
+}
+
 void CastBuffers::cast() const {
-  for (GLuint binding = 0; binding < buffers_.size(); ++binding)
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffers_[binding]);
+  bind(0);
   glDispatchCompute(GLuint(size_.x + 7) / 8, GLuint(size_.y + 7) / 8, 1);  // local size 8 x 8
 }
 

@@ -18,10 +18,11 @@ namespace strata::pgm {
 glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, int row);
 
 // Makes the cast pass (`program`, shaders/geometry/pgm_cast.comp) current with its uniforms: the grid's
-// size, the sampling frustum, the nadir in sampling space and the cross section's constants. Every double
-// becomes a float here, and nothing planet-sized but the primary radius goes up (digest 003 section 1.8).
+// size, the sampling frustum, the rotation from sampling space to the local frame at the point below the
+// eye (local_frame.hpp), and the cross section's constants. Every double becomes a float here, and nothing
+// planet-sized but the primary radius goes up (digest 003 section 1.8).
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
-             const glm::dvec3& nadir, glm::ivec2 size);
+             const glm::dmat3& samplingToLocal, glm::ivec2 size);
 
 // The pass's two grid-sized buffers, row by row (digest 003 section 1.5, output).
 class CastBuffers {
@@ -36,10 +37,13 @@ class CastBuffers {
 
   // What the pass wrote for each grid point, read back from the GPU (which this waits for): for tests.
   struct Point {
-    glm::vec4 normal;    // xyz: the unit sphere normal in sampling space; w: 1 for a hit, 0 for a miss
-    glm::vec4 position;  // xyz: from the eye in sampling space; zero for a miss
+    glm::vec4 normal;    // xyz: the unit sphere normal in the local frame; w: 1 for a hit, 0 for a miss
+    glm::vec4 position;  // xyz: from the eye in the local frame; zero for a miss
   };
   std::vector<Point> read() const;
+
+  // Binds the two buffers to shader storage bindings `first` and `first + 1`, for the passes that read them.
+  void bind(GLuint first) const;
 
  private:
   glm::ivec2 size_;

@@ -2,7 +2,13 @@
 // The cast pass of projective grid mapping (digest 003 section 1.5): each point of a W x H grid becomes a
 // ray of the sampling camera, cast onto the reference spheres through the 2D cross section of
 // plugins/geometry-pgm/cross_section.cpp, in float; tests/pgm/pgm_cast_test.cpp holds it to that double
-// reference. It writes the sphere normal and the position from the eye, both in sampling space.
+// reference. A ray that misses the primary sphere is drawn where the ray of its cross-section plane that
+// grazes the sphere meets it, on the horizon, so that the mesh reaches the horizon rather than stopping up to
+// a grid row short of it (the thesis leaves misses unsaid, digest 003 section 1.10 item 9); with a secondary
+// sphere that point lies beyond the horizon at gamma0, where the blend ends. The pass writes the sphere
+// normal and the position from the eye, both in the east-north-up frame
+// at the point below the eye (plugins/geometry-pgm/local_frame.hpp), where the nadir is exactly (0, 0, -1):
+// a nadir rounded to float would shift the planet's centre sideways by d times its rounding.
 //
 // Precision (digest 003 section 1.8): nothing planet-sized is subtracted here. 1 m above Mars a float
 // holding the eye's distance from the centre resolves 0.25 m; the altitude is uploaded as such and as
@@ -15,17 +21,19 @@
 #include "strata/precise_trig.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(std430, binding = 0) writeonly buffer Normals { vec4 normals[]; };  // xyz: s; w: 1 hit, 0 miss
-layout(std430, binding = 1) writeonly buffer Positions { vec4 positions[]; };  // xyz: from the eye, m; w: as the normal's
+layout(std430, binding = 0) writeonly buffer Normals { vec4 normals[]; };  // xyz: s, local; w: 1 hit, 0 miss
+layout(std430, binding = 1) writeonly buffer Positions { vec4 positions[]; };  // xyz: from the eye, m, local; w: as the normal's
 
 uniform ivec2 gridSize;
 uniform vec4 frustum;  // left, right, bottom, top on the near plane
 uniform float near;
-uniform vec3 nadir;               // unit, sampling space
+uniform mat3 samplingToLocal;     // the rotation from sampling space to the local frame
 uniform float altitude;           // a = d - r_p, m
 uniform float relativeAltitude;   // eps = a/r_p
 uniform float primaryRadius;      // r_p, m
 uniform float primaryTangent;     // tau0
+uniform float horizonSine;        // sin(tau0) = r_p/d
+uniform float horizonCosine;      // cos(tau0)
 uniform float blendStart;         // b = zeta tau0
 uniform bool hasSecondary;        // false beyond the distance where the secondary sphere vanishes
 uniform float secondarySpan;      // tau_s - b
@@ -38,10 +46,10 @@ const float kNadirSine = 1e-8;
 
 // The grid's outer rows and columns lie on the frustum's edges, x/(W - 1) rather than (x + 0.5)/W: the
 // sampling camera was fitted to rays on those edges (the nadir, the tangent planes of the visible-sphere
-// frustum), and a mesh of the grid's points must reach them (section 1.4, step 4).
+// frustum), and a mesh of the grid's points must reach them (section 1.4, step 4). In the local frame.
 vec3 gridRay(ivec2 point) {
   vec2 along = vec2(point) / vec2(gridSize - 1);
-  return normalize(vec3(mix(frustum.xz, frustum.yw, along), -near));
+  return normalize(samplingToLocal * vec3(mix(frustum.xz, frustum.yw, along), -near));
 }
 
 // delta = (c^2 - 1) u^2 with c = 1 + eps (section 1.8).
@@ -81,26 +89,22 @@ void main() {
   ivec2 point = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(point, gridSize))) return;
   int i = point.y * gridSize.x + point.x;
-  vec3 ray = gridRay(point), antinadir = -nadir;
-  // The cross-section basis (section 1.5, step 2): |n x ray| = sin(omega), k = (n x ray) x n / sin(omega).
-  vec3 across = cross(nadir, ray);
-  float sinRay = length(across), cosRay = dot(ray, nadir);
-  if (misses(sinRay, cosRay)) {
-    normals[i] = vec4(0.0);
-    positions[i] = vec4(0.0);
-    return;
+  vec3 ray = gridRay(point);
+  // The cross-section basis (section 1.5, step 2) with the nadir n = (0, 0, -1): sin(omega) = |n x ray| is
+  // the ray's horizontal length, and k = (n x ray) x n / sin(omega) its horizontal direction.
+  float sinRay = length(ray.xy), cosRay = -ray.z;
+  bool hit = !misses(sinRay, cosRay);
+  vec2 side = sinRay >= kNadirSine ? ray.xy / sinRay : vec2(1.0, 0.0);  // straight up: any plane will do
+  if (!hit) {  // the ray of its plane that grazes the primary sphere: the mesh reaches the horizon
+    sinRay = horizonSine;
+    cosRay = horizonCosine;
   }
-  float gamma = 0.0;
-  vec3 side = vec3(0.0);
-  if (sinRay >= kNadirSine) {
-    side = cross(across, nadir) / sinRay;
-    gamma = normalAngle(sinRay, cosRay);
-  }
+  float gamma = hit && sinRay < kNadirSine ? 0.0 : normalAngle(sinRay, cosRay);
   // s = -n cos(gamma) + k sin(gamma) (Eq. 3.12); the position r_p s - d n without d (erratum 2).
   float sinGamma, cosGamma, sinHalf, cosHalf;
   preciseSinCos(gamma, sinGamma, cosGamma);
   preciseSinCos(0.5 * gamma, sinHalf, cosHalf);
-  normals[i] = vec4(antinadir * cosGamma + side * sinGamma, 1.0);
-  positions[i] = vec4(-(altitude + 2.0 * primaryRadius * sinHalf * sinHalf) * antinadir +
-                      primaryRadius * sinGamma * side, 1.0);
+  float flag = hit ? 1.0 : 0.0;
+  normals[i] = vec4(side * sinGamma, cosGamma, flag);
+  positions[i] = vec4(primaryRadius * sinGamma * side, -(altitude + 2.0 * primaryRadius * sinHalf * sinHalf), flag);
 }

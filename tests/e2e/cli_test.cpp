@@ -259,7 +259,7 @@ TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
 TEST_F(StrataCommandTest, PluginsListsTheBuiltInTypes) {
   const CommandResult result = run({"plugins"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.icosahedral ", "output.image "});
+  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.icosahedral ", "geometry.pgm ", "output.image "});
 }
 
 TEST_F(StrataCommandTest, PluginsDescribesTheParametersOfAType) {

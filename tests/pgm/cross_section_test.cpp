@@ -194,8 +194,9 @@ TEST(PgmCrossSection, NoNaNFromTheNadirToTheTangent) {
 }
 
 // Beyond the tangent, or more than 90 degrees from the nadir (which would alias onto omega < 90 degrees),
-// the ray misses: no normal, no position.
-TEST(PgmCrossSection, RaysBeyondTheTangentOrAwayFromThePlanetMiss) {
+// the ray misses, and its point is that of the ray of its plane at the tangent: gamma0 with a secondary
+// sphere, the horizon without one.
+TEST(PgmCrossSection, RaysBeyondTheTangentOrAwayFromThePlanetMissAndGiveTheHorizon) {
   for (double altitude : {1e-3, 1.0, 1e4, 2e7}) {
     const double distance = kMars + altitude;
     const ReferenceSpheres spheres = referenceSpheres(distance, kMars, kMars + 21.2e3);
@@ -206,9 +207,15 @@ TEST(PgmCrossSection, RaysBeyondTheTangentOrAwayFromThePlanetMiss) {
                             std::numbers::pi - 0.3, std::numbers::pi}) {
       SCOPED_TRACE(rayAngle);
       const SpherePoint point = castRay(view, rayAt(nadir, rayAngle, 0.7), nadir);
+      const SpherePoint horizon = castRay(view, rayAt(nadir, tangent, 0.7), nadir);
       EXPECT_FALSE(point.hit);
-      EXPECT_EQ(point.normal, glm::dvec3(0.0));
-      EXPECT_EQ(point.position, glm::dvec3(0.0));
+      if (rayAngle < std::numbers::pi) {  // straight up the plane is any: the azimuth is not 0.7
+        EXPECT_LT(glm::length(point.normal - horizon.normal), 1e-15);
+        EXPECT_LT(glm::length(point.position - horizon.position), 1e-15 * glm::length(horizon.position));
+      }
+      const double gamma = std::acos(-glm::dot(point.normal, nadir));
+      EXPECT_NEAR(gamma, view.secondaryRadius > 0.0 ? 0.5 * std::numbers::pi - view.secondaryTangent
+                                                    : 0.5 * std::numbers::pi - tangent, 1e-7);
     }
     EXPECT_TRUE(castRay(view, rayAt(nadir, tangent * (1.0 - 1e-9), 0.7), nadir).hit);
     EXPECT_TRUE(misses(view.altitude / kMars, std::sin(tangent * (1.0 + 1e-9)), std::cos(tangent * (1.0 + 1e-9))));

@@ -1,0 +1,92 @@
+#include "grid_mesh.hpp"
+
+#include <cmath>
+
+#include "local_frame.hpp"
+
+namespace strata::pgm {
+namespace {
+
+constexpr GLuint kGroupSide = 8;  // the local size of pgm_displace.comp
+
+// Six indices per cell: two triangles over the diagonal from its lower left corner to its upper right.
+std::vector<GLuint> triangleIndices(glm::ivec2 size) {
+  std::vector<GLuint> indices;
+  indices.reserve(6 * std::size_t(size.x - 1) * std::size_t(size.y - 1));
+  for (int row = 0; row + 1 < size.y; ++row) {
+    for (int column = 0; column + 1 < size.x; ++column) {
+      const GLuint lowerLeft = GLuint(row * size.x + column), upperLeft = lowerLeft + GLuint(size.x);
+      indices.insert(indices.end(), {lowerLeft, lowerLeft + 1, upperLeft + 1, lowerLeft, upperLeft + 1, upperLeft});
+    }
+  }
+  return indices;
+}
+
+void dispatchOver(glm::ivec2 size) {
+  glDispatchCompute((GLuint(size.x) + kGroupSide - 1) / kGroupSide, (GLuint(size.y) + kGroupSide - 1) / kGroupSide, 1);
+}
+
+glm::vec2 sinCosOfLatitude(const View& view) {
+  return {float(std::sin(view.reference.y)), float(std::cos(view.reference.y))};
+}
+
+}  // namespace
+
+GridMesh::GridMesh(glm::ivec2 size) : size_(size) {
+  glCreateBuffers(1, &vertices_);
+  glNamedBufferStorage(vertices_, GLsizeiptr(size.x) * size.y * GLsizeiptr(sizeof(Vertex)), nullptr, 0);
+  const std::vector<GLuint> indices = triangleIndices(size);
+  glCreateBuffers(1, &indices_);
+  glNamedBufferStorage(indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
+  glCreateVertexArrays(1, &vertexArray_);
+  glVertexArrayElementBuffer(vertexArray_, indices_);
+}
+
+GridMesh::~GridMesh() {
+  glDeleteVertexArrays(1, &vertexArray_);
+  const GLuint buffers[] = {vertices_, indices_};
+  glDeleteBuffers(2, buffers);
+}
+
+void GridMesh::displace(const CastBuffers& cast) const {
+  cast.bind(0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, vertices_);
+  dispatchOver(size_);
+}
+
+void GridMesh::draw() const {
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices_);
+  glBindVertexArray(vertexArray_);
+  glDrawElements(GL_TRIANGLES, GLsizei(6 * cells()), GL_UNSIGNED_INT, nullptr);
+  glBindVertexArray(0);
+}
+
+std::vector<GridMesh::Vertex> GridMesh::read() const {
+  std::vector<Vertex> vertices(std::size_t(size_.x) * std::size_t(size_.y));
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(vertices_, 0, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data());
+  return vertices;
+}
+
+void useDisplacement(const ShaderProgram& program, glm::ivec2 size, const View& view, double bodyRadius,
+                     double primaryRadius) {
+  program.use();
+  program.set("gridSize", size);
+  program.set("localToPlanet", glm::mat3(glm::transpose(planetToLocal(view.reference))));
+  program.set("referenceLatitude", sinCosOfLatitude(view));
+  program.set("referenceLonlat", glm::vec2(view.reference));
+  program.set("radius", float(bodyRadius));
+  program.set("primaryOffset", float(bodyRadius - primaryRadius));
+}
+
+void useGridSurface(const ShaderProgram& program, const View& view) {
+  const glm::dmat3 localToPlanet = glm::transpose(planetToLocal(view.reference));
+  program.use();
+  program.set("localToEye", glm::mat3(view.planetToEye * localToPlanet));
+  program.set("projection", view.projection);
+  program.set("localToPlanet", glm::mat3(localToPlanet));
+  program.set("referenceLatitude", sinCosOfLatitude(view));
+}
+
+}  // namespace strata::pgm

@@ -1,0 +1,60 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include <strata/camera.hpp>
+#include <strata/gl.hpp>
+#include <strata/gl/shader_program.hpp>
+
+#include "pgm_cast.hpp"
+
+namespace strata::pgm {
+
+// The displaced grid of projective grid mapping (digest 003 section 1.6) on the GPU: one vertex per grid
+// point, made by shaders/geometry/pgm_displace.comp from the cast pass's buffers, and two triangles per
+// grid cell, drawn by pgm_grid.vert. Every ray has a point (one that misses lies on the horizon,
+// pgm_cast.comp), so the triangles are the same every frame: the diagonal from each cell's lower left to
+// its upper right corner, counter-clockwise as rows and columns run in the sampling camera's image, and so
+// as seen from the eye, whatever the camera's rotation.
+class GridMesh {
+ public:
+  explicit GridMesh(glm::ivec2 size);
+  ~GridMesh();
+  GridMesh(const GridMesh&) = delete;
+  GridMesh& operator=(const GridMesh&) = delete;
+
+  // With pgm_displace.comp in use (useDisplacement): the vertices from the cast pass's buffers.
+  void displace(const CastBuffers& cast) const;
+  // With pgm_grid.vert in use: draws the triangles.
+  void draw() const;
+
+  std::uint64_t triangles() const { return 2 * cells(); }
+
+  // What pgm_displace.comp wrote for each grid point (pgm_grid_vertex.glsl), read back: for tests.
+  struct Vertex {
+    glm::vec4 point;    // xyz: displaced, m from the eye, local frame; w: height above the body's radius
+    glm::vec4 normal;   // xyz: the sphere normal, local frame; w: 1 for a hit
+    glm::vec4 shading;  // xyz: the displaced surface's normal, planet-fixed
+  };
+  std::vector<Vertex> read() const;
+
+ private:
+  std::size_t cells() const { return std::size_t(size_.x - 1) * std::size_t(size_.y - 1); }
+
+  glm::ivec2 size_;
+  GLuint vertices_ = 0;
+  GLuint indices_ = 0;
+  GLuint vertexArray_ = 0;  // empty: the vertex shader pulls its vertices; it holds the index buffer
+};
+
+// The displacement pass's uniforms for a view (pgm_displace.comp): the local frame at View::reference, the
+// body's radius and the offset from the primary sphere down to it, R - r_p, formed in double.
+void useDisplacement(const ShaderProgram& program, glm::ivec2 size, const View& view, double bodyRadius,
+                     double primaryRadius);
+
+// The rasterisation's uniforms (pgm_grid.vert, pgm_surface_buffer.frag).
+void useGridSurface(const ShaderProgram& program, const View& view);
+
+}  // namespace strata::pgm

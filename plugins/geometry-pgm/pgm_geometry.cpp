@@ -1,0 +1,174 @@
+// geometry.pgm: spherical projective grid mapping after Mahsman's thesis (seed 003, digest 003). Each frame
+// a fixed grid of rays from a sampling camera is cast onto the reference spheres, displaced by the height
+// layer and rasterised into the same deferred texturing buffer as geometry.icosahedral, so a pipeline
+// switches generators by changing its `type`. docs/pgm.md explains the parts.
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+
+#include <strata/geometry.hpp>
+#include <strata/gl/gpu_timer.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/height_input.hpp>
+#include <strata/layer.hpp>
+#include <strata/plugin.hpp>
+
+#include "grid_mesh.hpp"
+#include "grid_size.hpp"
+#include "local_frame.hpp"
+#include "pgm_cast.hpp"
+#include "reference_spheres.hpp"
+#include "sampling_camera.hpp"
+#include "visible_radius.hpp"
+
+namespace strata::pgm {
+namespace {
+
+glm::ivec2 gridOf(const NodeSetup& setup) {
+  const std::optional<glm::ivec2> size = parseGridSize(setup.parameters.string("grid"));
+  if (!size)
+    throw Error(setup.parameters.where("grid"),
+                "grid '" + setup.parameters.string("grid") + "' is not a grid size",
+                "write columns x rows, each from " + std::to_string(kLeastGridSide) + " to " +
+                    std::to_string(kGreatestGridSide) + ", e.g. grid: 1024x1024");
+  return *size;
+}
+
+// The view as the sampling camera takes it: the symmetric frustum of View::projection on its near plane.
+ViewCamera viewCamera(const View& view) {
+  const double top = view.near * std::tan(0.5 * view.verticalFov);
+  const double right = top * double(view.width) / double(view.height);
+  return {.eye = view.eye, .planetToEye = view.planetToEye, .left = -right, .right = right, .bottom = -top,
+          .top = top, .near = view.near};
+}
+
+class PgmGeometry : public Node, public SurfaceGeometry {
+ public:
+  explicit PgmGeometry(const NodeSetup& setup)
+      : heights_(setup), radius_(setup.body->radius), grid_(gridOf(setup)), zeta_(setup.parameters.real("zeta")) {}
+
+  // The height layer has opened: where it knows its heights, they must lie within the reference spheres'.
+  void open() override { heights_.checkLayerWithin(); }
+
+  void createResources(GpuContext& gpu) override {
+    cast_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_cast.comp", gpu.shaders->expand("geometry/pgm_cast.comp")}});
+    displacement_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_displace.comp",
+                                    gpu.shaders->expand("geometry/pgm_displace.comp", heights_.substitutions())}});
+    surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/pgm_grid.vert", gpu.shaders->expand("geometry/pgm_grid.vert")},
+                              {GL_FRAGMENT_SHADER, "geometry/pgm_surface_buffer.frag",
+                               gpu.shaders->expand("geometry/pgm_surface_buffer.frag")}});
+    castBuffers_.emplace(grid_);
+    mesh_.emplace(grid_);
+    visibleRadius_.emplace(*gpu.shaders);
+    gridTimer_.emplace();
+    rasterisationTimer_.emplace();
+  }
+
+  GeometryStatistics statistics() const override {
+    return {0, std::uint64_t(grid_.x) * std::uint64_t(grid_.y), mesh_->triangles(), visibilityMs_,
+            gridTimer_->milliseconds(), rasterisationTimer_->milliseconds()};
+  }
+
+  void render(const FrameState& frame) override;
+
+  SurfaceGeometry* geometry() override { return this; }
+  const Framebuffer& gbuffer() const override { return gbuffer_; }
+
+ private:
+  void makeGrid(const View& view);
+  void rasterise(const View& view);
+
+  HeightInput heights_;
+  double radius_;
+  glm::ivec2 grid_;
+  double zeta_;
+  ShaderProgram cast_, displacement_, surface_;
+  std::optional<CastBuffers> castBuffers_;
+  std::optional<GridMesh> mesh_;
+  std::optional<VisibleRadius> visibleRadius_;
+  std::optional<GpuTimer> gridTimer_;
+  std::optional<GpuTimer> rasterisationTimer_;
+  double visibilityMs_ = 0.0;
+  Framebuffer gbuffer_;  // the deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_
+};
+
+void PgmGeometry::render(const FrameState& frame) {
+  makeGrid(frame.view);
+  rasterise(frame.view);
+  visibleRadius_->reduce(gbuffer_.color(2).id(), gbuffer_.width(), gbuffer_.height());
+}
+
+// The reference spheres and the sampling camera on the CPU, in double (digest 003 sections 1.3, 1.4), then
+// the cast and displacement passes on the GPU (sections 1.5, 1.6).
+void PgmGeometry::makeGrid(const View& view) {
+  const auto start = std::chrono::steady_clock::now();
+  const double distance = glm::length(view.eye);
+  const double primary = primaryRadius(visibleRadius_->latest(), radius_, heights_.range().lowest, distance);
+  const ReferenceSpheres spheres = referenceSpheres(distance, primary, radius_ + heights_.range().highest);
+  const CrossSection section = crossSection(distance, spheres.primary, spheres.secondary, zeta_);
+  const SamplingCamera camera = samplingCamera(viewCamera(view), spheres.primary);
+  const glm::dmat3 samplingToLocal = planetToLocal(view.reference) * glm::transpose(camera.planetToSampling);
+  visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  gridTimer_->begin();
+  useCast(cast_, camera, section, samplingToLocal, grid_);
+  castBuffers_->cast();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  useDisplacement(displacement_, grid_, view, radius_, spheres.primary);
+  TextureUnits units;
+  if (heights_.layer()) heights_.layer()->bind(displacement_, units);
+  mesh_->displace(*castBuffers_);
+  gridTimer_->end();
+}
+
+void PgmGeometry::rasterise(const View& view) {
+  if (gbuffer_.width() != view.width || gbuffer_.height() != view.height)
+    gbuffer_ = Framebuffer(view.width, view.height, {GL_RGBA32F, GL_RGBA16F, GL_R32F}, GL_DEPTH_COMPONENT32F);
+  gbuffer_.bind();
+  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
+  const float noHeight[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};  // visible_radius.hpp
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 2, noHeight);
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glEnable(GL_CULL_FACE);  // terrain facing away lies behind terrain facing the eye
+  useGridSurface(surface_, view);
+  rasterisationTimer_->begin();
+  mesh_->draw();
+  rasterisationTimer_->end();
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "geometry.pgm";
+  type.category = NodeCategory::Geometry;
+  type.summary = "Projective grid mapping: a grid of rays from the eye cast onto reference spheres, displaced and "
+                 "rasterised each frame";
+  type.inputs = {HeightInput::port()};
+  type.output = PortType::Geometry;
+  type.parameters = {
+      {.name = "grid", .type = ParameterType::String, .defaultValue = std::string("1024x1024"),
+       .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the thesis's largest, "
+              "is about a vertex per pixel at 1920x1080; a smaller grid undersamples sharp peaks)"},
+      {.name = "zeta", .type = ParameterType::Real, .defaultValue = 0.9, .minimum = 0.0, .maximum = 1.0,
+       .doc = "where rays start to turn from the primary sphere to the secondary one behind the horizon, as a "
+              "share of the angle to the primary's horizon (0.9 is the thesis's)"},
+  };
+  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
+  type.create = [](const NodeSetup& setup) { return std::make_unique<PgmGeometry>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::pgm
+
+STRATA_PLUGIN("geometry-pgm", "0.1.0", strata::pgm::registerTypes)

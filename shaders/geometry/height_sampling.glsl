@@ -1,0 +1,28 @@
+// Heights for the geometry generators' compute passes (geometry.icosahedral, geometry.pgm): the height layer
+// sampled at a point given from the reference, and the displaced surface's shading normal. The including
+// program defines STRATA_GEOMETRY_STAGE and STRATA_HEIGHT_FUNCTION, pastes the layer's GLSL before this
+// file (strata/height_input.hpp gives both) and declares the uniforms
+//   vec2 referenceLonlat  rad: the point below the eye (View::reference)
+//   float radius          m: the body's, to turn height differences into slopes
+
+// The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
+// vertex spacing.
+float heightAt(vec2 fromReference, vec3 normal, float spacing) {
+  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(spacing, 0.0), vec2(0.0, spacing),
+                                fromReference);
+  vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
+  return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
+}
+
+// The displaced surface's normal from central differences of the height over one vertex spacing.
+vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
+  vec2 lonlat = referenceLonlat + fromReference;
+  float dLon = spacing / max(cos(lonlat.y), 1e-4);
+  float eastSlope = (heightAt(fromReference + vec2(dLon, 0.0), normal, spacing) -
+                     heightAt(fromReference - vec2(dLon, 0.0), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  float northSlope = (heightAt(fromReference + vec2(0.0, spacing), normal, spacing) -
+                      heightAt(fromReference - vec2(0.0, spacing), normal, spacing)) / (2.0 * (radius + h) * spacing);
+  vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
+  vec3 north = cross(normal, east);
+  return normalize(normal - eastSlope * east - northSlope * north);
+}

@@ -1,0 +1,57 @@
+#version 450 core
+#define STRATA_GEOMETRY_STAGE
+STRATA_PROGRAM_DEFINES
+// The displacement pass of projective grid mapping (digest 003 sections 1.6, 1.7): each grid point of the
+// cast pass (pgm_cast.comp) becomes a vertex of the surface, its point of the primary sphere moved along the
+// sphere normal s to the body's radius plus the height there, V = P + (h + R - r_p) s. The height is sampled
+// at the point's longitude and latitude from the reference, formed from s in the local east-north-up frame
+// (pgm_local_frame.glsl), over a footprint of the angle to its neighbours in the grid (the digest's advice:
+// a level of detail from the grid's spacing). Everything stays in the local frame, relative to the eye.
+#include "strata/precise_trig.glsl"
+#include "strata/surface_point.glsl"
+#include "geometry/pgm_local_frame.glsl"
+#include "geometry/pgm_grid_vertex.glsl"
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(std430, binding = 0) readonly buffer Normals { vec4 normals[]; };  // the cast pass's
+layout(std430, binding = 1) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = 2) writeonly buffer Vertices { GridVertex vertices[]; };
+
+uniform ivec2 gridSize;
+uniform mat3 localToPlanet;
+uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
+uniform vec2 referenceLonlat;    // rad: the point below the eye
+uniform float radius;            // R, m
+uniform float primaryOffset;     // R - r_p, m: from the primary sphere down to the body's radius
+
+#ifdef STRATA_HAS_HEIGHT
+STRATA_HEIGHT_LAYER_GLSL
+#include "geometry/height_sampling.glsl"
+
+// The largest angle (rad) from the point's sphere normal to its neighbours' in the grid.
+float gridSpacing(ivec2 point, vec3 s) {
+  float spacing = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    ivec2 neighbour = point + ivec2(k == 0 ? 1 : (k == 1 ? -1 : 0), k == 2 ? 1 : (k == 3 ? -1 : 0));
+    if (any(lessThan(neighbour, ivec2(0))) || any(greaterThanEqual(neighbour, gridSize))) continue;
+    spacing = max(spacing, 2.0 * preciseAsin(0.5 * length(normals[neighbour.y * gridSize.x + neighbour.x].xyz - s)));
+  }
+  return spacing;
+}
+#endif
+
+void main() {
+  ivec2 point = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(point, gridSize))) return;
+  int i = point.y * gridSize.x + point.x;
+  vec3 s = normals[i].xyz, sphereNormal = normalize(localToPlanet * s);
+  float h = 0.0;
+  vec3 shading = sphereNormal;
+#ifdef STRATA_HAS_HEIGHT
+  vec2 fromReference = lonlatFromReference(s, referenceLatitude);
+  float spacing = gridSpacing(point, s);
+  h = heightAt(fromReference, sphereNormal, spacing);
+  shading = shadingNormal(h, fromReference, sphereNormal, spacing);
+#endif
+  vertices[i] = GridVertex(vec4(positions[i].xyz + (h + primaryOffset) * s, h), vec4(s, normals[i].w), vec4(shading, 0.0));
+}

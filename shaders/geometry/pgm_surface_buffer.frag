@@ -1,0 +1,27 @@
+#version 450 core
+// Writes the deferred texturing buffer (strata/geometry.hpp) for projective grid mapping, and each pixel's
+// height for the next frame's primary sphere (plugins/geometry-pgm/visible_radius.hpp). Longitude and
+// latitude come from the interpolated sphere normal, as the thesis does (digest 003 section 1.6, its
+// Fig. 3.52): interpolated longitudes would sweep through 180 degrees across a triangle that straddles the
+// meridian opposite the reference. Its local-frame form keeps float's precision near the eye.
+#include "strata/precise_trig.glsl"
+#include "geometry/pgm_local_frame.glsl"
+
+in vec3 vLocalNormal;
+in vec3 vShadingNormal;
+in float vHeight;
+
+uniform mat3 localToPlanet;
+uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
+
+layout(location = 0) out vec4 surface;  // lon, lat from View::reference; normal x, normal y
+layout(location = 1) out vec4 shading;  // shading normal xyz, coverage
+layout(location = 2) out float height;  // m above the body's radius
+
+void main() {
+  vec3 s = normalize(vLocalNormal);
+  vec3 n = localToPlanet * s;
+  surface = vec4(lonlatFromReference(s, referenceLatitude), n.x, n.y);
+  shading = vec4(normalize(vShadingNormal), 1.0);
+  height = vHeight;
+}
