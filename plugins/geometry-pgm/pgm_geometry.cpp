@@ -2,7 +2,9 @@
 // a fixed grid of rays from a sampling camera is cast onto the reference spheres, displaced by the height
 // layer and rasterised into the same deferred texturing buffer as geometry.icosahedral, so a pipeline
 // switches generators by changing its `type`. docs/pgm.md explains the parts.
+#include <algorithm>
 #include <chrono>
+#include <deque>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -78,6 +80,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   const Framebuffer& gbuffer() const override { return gbuffer_; }
 
  private:
+  std::optional<double> leastVisibleHeight(const View& view);
   void makeGrid(const View& view);
   void rasterise(const View& view);
 
@@ -91,6 +94,8 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   std::optional<VisibleRadius> visibleRadius_;
   std::optional<GpuTimer> gridTimer_;
   std::optional<GpuTimer> rasterisationTimer_;
+  using ReducedView = std::pair<std::uint64_t, View>;  // a frame's index and view
+  std::deque<ReducedView> reducedViews_;  // the frames whose reductions may be in flight
   double visibilityMs_ = 0.0;
   Framebuffer gbuffer_;  // the deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_
 };
@@ -98,7 +103,17 @@ class PgmGeometry : public Node, public SurfaceGeometry {
 void PgmGeometry::render(const FrameState& frame) {
   makeGrid(frame.view);
   rasterise(frame.view);
-  visibleRadius_->reduce(gbuffer_.color(2).id(), gbuffer_.width(), gbuffer_.height());
+  visibleRadius_->reduce(gbuffer_.color(2).id(), gbuffer_.width(), gbuffer_.height(), frame.index);
+  reducedViews_.emplace_back(frame.index, frame.view);
+  if (reducedViews_.size() > 8) reducedViews_.pop_front();  // VisibleRadius keeps 4 in flight
+}
+
+// The least height seen in an earlier frame whose view stands for this one's; none after a jump.
+std::optional<double> PgmGeometry::leastVisibleHeight(const View& view) {
+  const std::optional<double> least = visibleRadius_->latest();
+  const auto measured = std::ranges::find(reducedViews_, visibleRadius_->latestFrame(), &ReducedView::first);
+  if (!least || measured == reducedViews_.end()) return std::nullopt;
+  return sameSight(measured->second, view, radius_ + heights_.range().lowest) ? least : std::nullopt;
 }
 
 // The reference spheres and the sampling camera on the CPU, in double (digest 003 sections 1.3, 1.4), then
@@ -106,7 +121,7 @@ void PgmGeometry::render(const FrameState& frame) {
 void PgmGeometry::makeGrid(const View& view) {
   const auto start = std::chrono::steady_clock::now();
   const double distance = glm::length(view.eye);
-  const double primary = primaryRadius(visibleRadius_->latest(), radius_, heights_.range().lowest, distance);
+  const double primary = primaryRadius(leastVisibleHeight(view), radius_, heights_.range().lowest, distance);
   const ReferenceSpheres spheres = referenceSpheres(distance, primary, radius_ + heights_.range().highest);
   const CrossSection section = crossSection(distance, spheres.primary, spheres.secondary, zeta_);
   const SamplingCamera camera = samplingCamera(viewCamera(view), spheres.primary);

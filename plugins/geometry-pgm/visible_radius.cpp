@@ -1,5 +1,6 @@
 #include "visible_radius.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -48,7 +49,7 @@ VisibleRadius::~VisibleRadius() {
 // The GPU runs commands in order, so a slot still in flight can be reused: its older copy lands first and
 // the new fence covers both. The barrier makes the shader's atomics visible to the copy, and to the next
 // frame's clear.
-void VisibleRadius::reduce(GLuint heights, int width, int height) {
+void VisibleRadius::reduce(GLuint heights, int width, int height, std::uint64_t frame) {
   glClearNamedBufferSubData(least_, GL_R32UI, 0, sizeof(std::uint32_t), GL_RED_INTEGER, GL_UNSIGNED_INT,
                             &kUncovered);
   program_.use();
@@ -60,6 +61,7 @@ void VisibleRadius::reduce(GLuint heights, int width, int height) {
   glCopyNamedBufferSubData(least_, readback_, 0, GLintptr(next_ * sizeof(std::uint32_t)), sizeof(std::uint32_t));
   if (fences_[next_]) glDeleteSync(fences_[next_]);
   fences_[next_] = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  frames_[next_] = frame;
   next_ = (next_ + 1) % kSlots;
 }
 
@@ -82,6 +84,19 @@ void VisibleRadius::collect(std::size_t slot) {
   fences_[slot] = nullptr;
   const float least = fromOrderedBits(mapped_[slot]);
   latest_ = std::isinf(least) ? std::nullopt : std::optional<double>(least);
+  latestFrame_ = frames_[slot];
+}
+
+// The turn is the largest angle between the two views' axes, from the trace of the relative rotation.
+bool sameSight(const View& measured, const View& current, double minimumRadius) {
+  if (measured.width != current.width || measured.height != current.height ||
+      measured.verticalFov != current.verticalFov)
+    return false;
+  const double height = glm::length(current.eye) - minimumRadius;
+  const glm::dmat3 turn = current.planetToEye * glm::transpose(measured.planetToEye);
+  const double cosTurn = std::clamp(0.5 * (turn[0][0] + turn[1][1] + turn[2][2] - 1.0), -1.0, 1.0);
+  return glm::length(current.eye - measured.eye) < kSightMove * height &&
+         std::acos(cosTurn) < kSightTurn * current.verticalFov;
 }
 
 double primaryRadius(std::optional<double> latestHeight, double bodyRadius, double lowest, double eyeDistance) {

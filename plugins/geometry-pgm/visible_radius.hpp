@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 
+#include <strata/camera.hpp>
 #include <strata/gl.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
@@ -25,12 +26,14 @@ class VisibleRadius {
   VisibleRadius(const VisibleRadius&) = delete;
   VisibleRadius& operator=(const VisibleRadius&) = delete;
 
-  // Reduces texels [0, width) x [0, height) of the R32F texture `heights`.
-  void reduce(GLuint heights, int width, int height);
+  // Reduces texels [0, width) x [0, height) of the R32F texture `heights`, drawn for frame `frame`.
+  void reduce(GLuint heights, int width, int height, std::uint64_t frame = 0);
 
   // The least height (m) of the most recent reduction the GPU has finished; the one before while the
   // newest is still running. None before the first one finishes, or when no texel of it was covered.
   std::optional<double> latest();
+  // The frame the value latest() gave was drawn for.
+  std::uint64_t latestFrame() const { return latestFrame_; }
 
  private:
   // Frames a reduction may stay in flight: a fourth reduce() drops the oldest unread one.
@@ -43,9 +46,21 @@ class VisibleRadius {
   GLuint readback_ = 0;  // kSlots copies of it, mapped
   const std::uint32_t* mapped_ = nullptr;
   std::array<GLsync, kSlots> fences_{};
+  std::array<std::uint64_t, kSlots> frames_{};
   std::size_t next_ = 0;  // the slot the next reduce() writes: also the oldest one in flight
   std::optional<double> latest_;
+  std::uint64_t latestFrame_ = 0;
 };
+
+// Whether a least visible height measured in view `measured` may stand for view `current`: the thesis
+// uses the last frame's (digest 003 section 1.3), which holds while the view moves little from frame to
+// frame; after a jump (a new viewpoint, a turn) lower terrain may have come into view, and a primary
+// sphere above it would pull the mesh in from the screen's edges (the shrinking of section 6, Fig. 3.11).
+// Little is: the eye moved by under kSightMove of its height above the minimum sphere, the view turned by
+// under kSightTurn of its vertical field of view, and the frame's size and field of view are the same.
+constexpr double kSightMove = 0.05;
+constexpr double kSightTurn = 0.05;
+bool sameSight(const View& measured, const View& current, double minimumRadius);
 
 // The primary radius for this frame (digest 003 section 1.3, DIGEST NOTE): the body's radius plus the last
 // frame's least visible height, or plus the lowest height the body has (the minimum sphere) while there is
