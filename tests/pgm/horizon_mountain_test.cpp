@@ -1,0 +1,88 @@
+// A mountain behind the horizon rises above it (digest 003 section 6, Figs. 3.14, 3.15 and 3.22; issue 5):
+// 1 km above an Earth-sized sphere, whose horizon lies 113 km away, the view looks east along the equator
+// at an 8 km peak 150 km away, 37 km beyond the horizon, which hides only its lowest 107 m. The grid's
+// rays near the primary sphere's horizon turn onto the secondary sphere and sample the ground out to where
+// the horizon ray leaves the highest sphere, 319 km further; without the secondary sphere the mesh would end
+// at the horizon and the mountain would be cut off there, 24 pixels below its peak.
+//
+// The peak's place on the screen is exact, in double; the topmost pixel drawn in its column must lie
+// within kPeakTolerance of it, and geometry.icosahedral draws it alike.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "pgm_scenes.hpp"
+#include "rendering.hpp"
+#include "temporary_directory.hpp"
+
+namespace strata::pgm::test {
+namespace {
+
+constexpr double kEarth = 6371000.0;                          // m
+constexpr double kPeakHeight = 8000.0, kPeakWidth = 20000.0;  // m: a Gaussian of this height and 1/e radius
+const double kPeakLongitude = glm::degrees(150000.0 / kEarth);  // deg, on the equator
+constexpr int kWidth = 320, kHeight = 240;
+// Pixels: the peak is a smooth dome sampled by the grid (256 x 256 rays) and by the raster (556 m texels);
+// a row either side of the true peak's pixel is what the two samplings may move its top.
+constexpr double kPeakTolerance = 2.0;
+
+// 340 x 340 texels of 0.005 degrees (556 m) around the peak.
+void writeMountain(const std::filesystem::path& file) {
+  constexpr double west = 0.5, north = 0.85, texel = 0.005;
+  strata::test::writeFloatRaster(file, 340, 340, {west, -north, west + 340 * texel, north}, [&](int column, int row) {
+    const double lon = glm::radians(west + (column + 0.5) * texel - kPeakLongitude);
+    const double lat = glm::radians(north - (row + 0.5) * texel);
+    const double distance = kEarth * std::acos(std::cos(lat) * std::cos(lon));
+    return float(kPeakHeight * std::exp(-(distance / kPeakWidth) * (distance / kPeakWidth)));
+  });
+}
+
+std::string pipelineWith(const std::filesystem::path& mountain, const std::string& geometry) {
+  return "strata: 1\nbody: {name: Earth, radius: " + std::to_string(kEarth) +
+         "}\nnodes:\n"
+         "  relief: {type: source.gdal, path: " + mountain.string() +
+         ", kind: height}\n"
+         "  terrain: {type: " + geometry + ", height: relief, lowest: 0, highest: " + std::to_string(kPeakHeight) +
+         "}\n"
+         "  frame: {type: output.image, geometry: terrain, shading: none}\n";
+}
+
+// The topmost pixel drawn in column x, or the image's height when none is.
+int topmostDrawn(const Image& image, int x) {
+  for (int y = 0; y < image.height; ++y)
+    if (covered(image, x, y)) return y;
+  return image.height;
+}
+
+// Where a planet-fixed point lands on the screen, in pixels from the top left (pixel centres at + 0.5).
+glm::dvec2 projected(const View& view, const glm::dvec3& point) {
+  const glm::dvec3 eye = view.toEye(point);
+  const double focal = 0.5 * view.height / std::tan(0.5 * view.verticalFov);
+  return {0.5 * view.width + focal * eye.x / -eye.z, 0.5 * view.height - focal * eye.y / -eye.z};
+}
+
+TEST(PgmHorizonMountain, AMountainBehindTheHorizonIsDrawnToItsPeak) {
+  strata::test::TemporaryDirectory directory;
+  writeMountain(directory.path() / "mountain.tif");
+  const Camera camera{.lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0, .fov = 30.0};
+  auto engine = strata::test::makeEngine();
+  const View view = makeView(Body{.name = "Earth", .radius = kEarth}, camera, kWidth, kHeight);
+  const glm::dvec2 peak = projected(view, (kEarth + kPeakHeight) * unitNormal(glm::radians(kPeakLongitude), 0.0));
+  const double horizonAngle = std::acos(kEarth / (kEarth + camera.altitude));  // from the point below the eye
+  const double horizon = projected(view, kEarth * glm::dvec3(std::cos(horizonAngle), std::sin(horizonAngle), 0.0)).y;
+  ASSERT_LT(peak.y, horizon - 20.0);  // the peak stands well above the bare horizon, or the test shows nothing
+  const int column = int(peak.x);
+  for (const std::string geometry : {"geometry.pgm", "geometry.icosahedral"}) {
+    engine->load(directory.write("mountain.yaml", pipelineWith(directory.path() / "mountain.tif", geometry)));
+    const Image image = renderFrames(*engine, camera, kWidth, kHeight, 3);
+    const int top = topmostDrawn(image, column);
+    std::printf("%s: the peak's top at row %d, the true peak at %.1f, the bare horizon at %.1f\n", geometry.c_str(),
+                top, peak.y, horizon);
+    EXPECT_NEAR(top + 0.5, peak.y, kPeakTolerance) << geometry;
+  }
+}
+
+}  // namespace
+}  // namespace strata::pgm::test
