@@ -1,9 +1,12 @@
 // Surface layers land where they belong: every sampled pixel of a rendered checkerboard globe shows the
-// colour of the cell that the analytic ray-sphere intersection (in double) finds under it.
+// colour of the cell that the analytic ray-sphere intersection (in double) finds under it, whichever
+// geometry generator draws the globe.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <tuple>
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
@@ -17,14 +20,14 @@ struct CameraCase {
   double lon, lat, heading, tilt;
 };
 
-std::string checkerboardPipeline(const std::filesystem::path& raster, const CameraCase& c) {
+std::string checkerboardPipeline(const std::filesystem::path& raster, const CameraCase& c, const std::string& geometry) {
   return "strata: 1\n"
          "body: {name: Earth, radius: 6371000}\n"
          "camera: {lon: " + std::to_string(c.lon) + ", lat: " + std::to_string(c.lat) + ", altitude: 1.2e7, heading: " +
          std::to_string(c.heading) + ", tilt: " + std::to_string(c.tilt) + ", fov: 45}\n"
          "nodes:\n"
          "  cells: {type: source.gdal, path: " + raster.string() + ", kind: color}\n"
-         "  globe: {type: geometry.icosahedral}\n"
+         "  globe: {type: " + geometry + "}\n"
          "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n";
 }
 
@@ -32,13 +35,14 @@ std::string checkerboardPipeline(const std::filesystem::path& raster, const Came
 // mesh's chords (under 0.1 degree at this subdivision), so pixels within 2 degrees are not judged.
 double distanceToCellEdge(double value) { return std::abs(value - 45.0 * std::round(value / 45.0)); }
 
-class SurfaceColour : public ::testing::TestWithParam<CameraCase> {};
+class SurfaceColour : public ::testing::TestWithParam<std::tuple<CameraCase, std::string>> {};
 
 TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
   TemporaryDirectory directory;
   writeCheckerboard(directory.path() / "cells.tif");
-  const CameraCase& camera = GetParam();
-  auto pipeline = directory.write("globe.yaml", checkerboardPipeline(directory.path() / "cells.tif", camera));
+  const auto& [camera, geometry] = GetParam();
+  auto pipeline =
+      directory.write("globe.yaml", checkerboardPipeline(directory.path() / "cells.tif", camera, geometry));
   auto engine = makeEngine();
   const int width = 320, height = 240;
   Image image = renderFrame(*engine, pipeline, width, height);
@@ -78,11 +82,15 @@ TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Cameras, SurfaceColour,
-                         ::testing::Values(CameraCase{"PrimeMeridian", 0, 0, 0, 0},
-                                           CameraCase{"Antimeridian", 180, 10, 0, 0},
-                                           CameraCase{"NearTheNorthPole", 30, 70, 0, 0},
-                                           CameraCase{"TiltedAndTurned", -100, -30, 45, 25}),
-                         [](const auto& test) { return std::string(test.param.name); });
+                         ::testing::Combine(::testing::Values(CameraCase{"PrimeMeridian", 0, 0, 0, 0},
+                                                              CameraCase{"Antimeridian", 180, 10, 0, 0},
+                                                              CameraCase{"NearTheNorthPole", 30, 70, 0, 0},
+                                                              CameraCase{"TiltedAndTurned", -100, -30, 45, 25}),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm")),
+                         [](const ::testing::TestParamInfo<std::tuple<CameraCase, std::string>>& test) {
+                           const std::string& type = std::get<1>(test.param);
+                           return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);
+                         });
 
 TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
   TemporaryDirectory directory;

@@ -1,6 +1,7 @@
-// geometry.icosahedral culls by the heights `lowest` and `highest` say the terrain keeps within; a height
+// Geometry generators trust the heights `lowest` and `highest` say the terrain keeps within
+// (geometry.icosahedral culls by them, geometry.pgm builds its reference spheres from them); a height
 // layer that knows its own heights (source.procedural always, source.gdal from exact statistics or a
-// raster small enough to count) and reaches beyond them is refused at load, naming the fix.
+// raster small enough to count) and reaches beyond them is refused at load, naming the fix, by each.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -30,23 +31,36 @@ std::string loadError(const std::string& pipeline) {
   return "";
 }
 
-TEST(HeightRange, AnExaggeratedProceduralReliefNeedsTheRangeRaised) {
+class HeightRange : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(HeightRange, AnExaggeratedProceduralReliefNeedsTheRangeRaised) {
   const std::string error = loadError(pipelineWith("{type: source.procedural, kind: height, scale: 20}",
-                                                   "{type: geometry.icosahedral, height: heights}"));
+                                                   "{type: " + GetParam() + ", height: heights}"));
   EXPECT_NE(error.find("reaches from -240000 to 240000 m"), std::string::npos) << error;
   EXPECT_NE(error.find("set lowest: -240000 and highest: 240000"), std::string::npos) << error;
   EXPECT_NE(error.find("'globe'"), std::string::npos) << error;
 }
 
-TEST(HeightRange, AGdalRasterIsCountedWhenSmall) {
+TEST_P(HeightRange, AGdalRasterIsCountedWhenSmall) {
   TemporaryDirectory directory;
   writeFloatRaster(directory.path() / "tall.tif", 64, 32, {-180, -90, 180, 90},
                    [](int column, int) { return float(column * 500); });  // up to 31500 m
   const std::string tall = "{type: source.gdal, kind: height, path: " + (directory.path() / "tall.tif").string() + "}";
-  const std::string error = loadError(pipelineWith(tall, "{type: geometry.icosahedral, height: heights}"));
+  const std::string error = loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights}"));
   EXPECT_NE(error.find("reaches from 0 to 31500 m"), std::string::npos) << error;
-  EXPECT_EQ(loadError(pipelineWith(tall, "{type: geometry.icosahedral, height: heights, highest: 31500}")), "");
+  EXPECT_EQ(loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights, highest: 31500}")), "");
 }
+
+TEST_P(HeightRange, LowestAboveHighestIsRefused) {
+  const std::string error = loadError(pipelineWith("{type: source.procedural, kind: height}",
+                                                   "{type: " + GetParam() + ", height: heights, lowest: 5, highest: 1}"));
+  EXPECT_NE(error.find("lowest (5 m) lies above highest (1 m)"), std::string::npos) << error;
+}
+
+INSTANTIATE_TEST_SUITE_P(Generators, HeightRange, ::testing::Values("geometry.icosahedral", "geometry.pgm"),
+                         [](const ::testing::TestParamInfo<std::string>& type) {
+                           return type.param.substr(type.param.find('.') + 1);
+                         });
 
 }  // namespace
 }  // namespace strata::test
