@@ -105,7 +105,7 @@ void PgmGeometry::render(const FrameState& frame) {
   rasterise(frame.view);
   visibleRadius_->reduce(gbuffer_.color(2).id(), gbuffer_.width(), gbuffer_.height(), frame.index);
   reducedViews_.emplace_back(frame.index, frame.view);
-  if (reducedViews_.size() > 8) reducedViews_.pop_front();  // VisibleRadius keeps 4 in flight
+  if (reducedViews_.size() > VisibleRadius::kSlots) reducedViews_.pop_front();
 }
 
 // The least height seen in an earlier frame whose view stands for this one's; none after a jump.

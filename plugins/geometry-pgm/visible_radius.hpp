@@ -21,6 +21,9 @@ namespace strata::pgm {
 // so neither ever waits for the GPU. Make and use it on the GL thread.
 class VisibleRadius {
  public:
+  // Frames a reduction may stay in flight: a fifth reduce() drops the oldest unread one.
+  static constexpr std::size_t kSlots = 4;
+
   explicit VisibleRadius(const ShaderLibrary& library);
   ~VisibleRadius();
   VisibleRadius(const VisibleRadius&) = delete;
@@ -36,9 +39,6 @@ class VisibleRadius {
   std::uint64_t latestFrame() const { return latestFrame_; }
 
  private:
-  // Frames a reduction may stay in flight: a fourth reduce() drops the oldest unread one.
-  static constexpr std::size_t kSlots = 4;
-
   void collect(std::size_t slot);
 
   ShaderProgram program_;
