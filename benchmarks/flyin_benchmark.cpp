@@ -8,8 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -20,9 +18,9 @@
 #include <strata/gl.hpp>
 #include <strata/gl/context.hpp>
 
-namespace {
+#include "procedural_mars_pipeline.hpp"
 
-namespace fs = std::filesystem;
+namespace {
 
 using strata::icosahedral::FlyInPath;
 
@@ -41,18 +39,6 @@ FlyInPath flightToHighestPoint() {
   return best;
 }
 
-fs::path writePipeline() {
-  const fs::path file = fs::temp_directory_path() / "strata-bench-flyin.yaml";
-  std::ofstream(file) << "strata: 1\n"
-                         "body: {name: Mars, radius: " << kMarsRadius << "}\n"
-                         "nodes:\n"
-                         "  colours: {type: source.procedural, kind: color}\n"
-                         "  relief: {type: source.procedural, kind: height}\n"
-                         "  terrain: {type: geometry.icosahedral, height: relief, lowest: -12000, highest: 12000}\n"
-                         "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
-  return file;
-}
-
 double percentile(std::vector<double> values, double fraction) {
   std::ranges::sort(values);
   return values[std::min(values.size() - 1, std::size_t(fraction * double(values.size())))];
@@ -61,7 +47,7 @@ double percentile(std::vector<double> values, double fraction) {
 void BM_FlyIn(benchmark::State& state) {
   auto context = strata::createHeadlessContext(false);
   strata::Engine engine;
-  engine.load(writePipeline());
+  engine.load(strata::bench::writeProceduralMarsPipeline("strata-bench-flyin", "geometry.icosahedral"));
   const FlyInPath flight = flightToHighestPoint();
   std::vector<double> frameMs;
   double patches = 0, triangles = 0, visibility = 0, subdivision = 0, rasterisation = 0;

@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -19,11 +18,12 @@
 #include <strata/gl.hpp>
 #include <strata/gl/context.hpp>
 
+#include "procedural_mars_pipeline.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kMarsRadius = 3396190.0;
 // The first frames compile programs on use, and PGM's primary sphere comes from the previous frame's
 // heights (visible_radius.hpp), so a frame is typical only after a few.
 constexpr int kWarmUpFrames = 4;
@@ -42,20 +42,6 @@ const std::vector<Size> kStandardResolutions = {{640, 480}, {1024, 768}, {1280, 
 strata::Camera testCaseCamera(int testCase) {
   if (testCase == 1) return {.lon = 30, .lat = 25, .altitude = 8.0e6, .heading = 0, .tilt = 0, .fov = 45};
   return {.lon = 30, .lat = 25, .altitude = 2.0e4, .heading = 0, .tilt = 70, .fov = 45};
-}
-
-// Heights within +-12 km, the procedural model's amplitude, so the reference spheres are as tight as the
-// unexaggerated relief allows.
-fs::path writePipeline() {
-  const fs::path file = fs::temp_directory_path() / "strata-bench-pgm.yaml";
-  std::ofstream(file) << "strata: 1\n"
-                         "body: {name: Mars, radius: " << kMarsRadius << "}\n"
-                         "nodes:\n"
-                         "  colours: {type: source.procedural, kind: color}\n"
-                         "  relief: {type: source.procedural, kind: height}\n"
-                         "  terrain: {type: geometry.pgm, height: relief, lowest: -12000, highest: 12000}\n"
-                         "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
-  return file;
 }
 
 // One configuration: the pipeline loaded once with the grid, warmed up, then one frame per iteration,
@@ -128,7 +114,7 @@ int main(int argc, char** argv) {
   const std::string renderer = strata::currentGlInfo().renderer;
   benchmark::AddCustomContext("gpu", renderer);
   std::printf("%s; %s\n", context->description().c_str(), renderer.c_str());
-  registerBenchmarks(writePipeline());
+  registerBenchmarks(strata::bench::writeProceduralMarsPipeline("strata-bench-pgm", "geometry.pgm"));
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();
