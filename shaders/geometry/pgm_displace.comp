@@ -28,6 +28,11 @@ uniform float primaryOffset;     // R - r_p, m: from the primary sphere down to 
 STRATA_HEIGHT_LAYER_GLSL
 #include "geometry/height_sampling.glsl"
 
+// Below this the spacing is taken as this, so that the shading normal's differences never divide by zero
+// where neighbours coincide (rays that miss, drawn on the same horizon point). Far below any spacing a grid
+// has: 4096 rays across a view 1 cm above the ground are 3e-13 rad apart.
+const float kLeastSpacing = 1e-20;
+
 // The largest angle (rad) from the point's sphere normal to its neighbours' in the grid.
 float gridSpacing(ivec2 point, vec3 s) {
   float spacing = 0.0;
@@ -36,7 +41,7 @@ float gridSpacing(ivec2 point, vec3 s) {
     if (any(lessThan(neighbour, ivec2(0))) || any(greaterThanEqual(neighbour, gridSize))) continue;
     spacing = max(spacing, 2.0 * preciseAsin(0.5 * length(normals[neighbour.y * gridSize.x + neighbour.x].xyz - s)));
   }
-  return spacing;
+  return max(spacing, kLeastSpacing);
 }
 #endif
 
