@@ -171,7 +171,7 @@ NodeTypeDeclaration declaration() {
   type.parameters = {
       {.name = "grid", .type = ParameterType::String, .defaultValue = std::string("1024x1024"),
        .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the thesis's largest, "
-              "is about a vertex per pixel at 1920x1080; a smaller grid undersamples sharp peaks)"},
+              "is a ray for every two pixels at 1920x1080; a smaller grid undersamples sharp peaks)"},
       {.name = "zeta", .type = ParameterType::Real, .defaultValue = 0.9, .minimum = 0.0, .maximum = 1.0,
        .doc = "where rays start to turn from the primary sphere to the secondary one behind the horizon, as a "
               "share of the angle to the primary's horizon (0.9 is the thesis's)"},

@@ -77,10 +77,10 @@ float secondaryNormalAngle(float blend) {
 }
 
 // mix(gamma_p, gamma_s, f) with the blend f = clamp((omega - b)/(tau0 - b), 0, 1) (section 1.5, steps 5-7,
-// erratum 1).
+// erratum 1). With zeta = 1, b = tau0 and the blend is a step at the tangent: the span is kept above 0.
 float normalAngle(float sinRay, float cosRay) {
   float primary = frontNormalAngle(sinRay, cosRay);
-  float blend = clamp((preciseAtan(sinRay, cosRay) - blendStart) / (primaryTangent - blendStart), 0.0, 1.0);
+  float blend = clamp((preciseAtan(sinRay, cosRay) - blendStart) / max(primaryTangent - blendStart, 1e-30), 0.0, 1.0);
   if (blend == 0.0 || !hasSecondary) return primary;
   return primary + blend * (secondaryNormalAngle(blend) - primary);
 }

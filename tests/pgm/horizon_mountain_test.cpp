@@ -6,11 +6,13 @@
 // at the horizon and the mountain would be cut off there, 24 pixels below its peak.
 //
 // The peak's place on the screen is exact, in double; the topmost pixel drawn in its column must lie
-// within kPeakTolerance of it, and geometry.icosahedral draws it alike.
+// within kPeakTolerance of it, and geometry.icosahedral draws it alike. Without the secondary sphere
+// (zeta = 1) the same test sees the mountain cut off at the horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "pgm_scenes.hpp"
@@ -63,25 +65,51 @@ glm::dvec2 projected(const View& view, const glm::dvec3& point) {
   return {0.5 * view.width + focal * eye.x / -eye.z, 0.5 * view.height - focal * eye.y / -eye.z};
 }
 
-TEST(PgmHorizonMountain, AMountainBehindTheHorizonIsDrawnToItsPeak) {
-  strata::test::TemporaryDirectory directory;
-  writeMountain(directory.path() / "mountain.tif");
-  const Camera camera{.lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0, .fov = 30.0};
-  auto engine = strata::test::makeEngine();
-  const View view = makeView(Body{.name = "Earth", .radius = kEarth}, camera, kWidth, kHeight);
-  const glm::dvec2 peak = projected(view, (kEarth + kPeakHeight) * unitNormal(glm::radians(kPeakLongitude), 0.0));
-  const double horizonAngle = std::acos(kEarth / (kEarth + camera.altitude));  // from the point below the eye
-  const double horizon = projected(view, kEarth * glm::dvec3(std::cos(horizonAngle), std::sin(horizonAngle), 0.0)).y;
-  ASSERT_LT(peak.y, horizon - 20.0);  // the peak stands well above the bare horizon, or the test shows nothing
-  const int column = int(peak.x);
-  for (const std::string geometry : {"geometry.pgm", "geometry.icosahedral"}) {
-    engine->load(directory.write("mountain.yaml", pipelineWith(directory.path() / "mountain.tif", geometry)));
-    const Image image = renderFrames(*engine, camera, kWidth, kHeight, 3);
-    const int top = topmostDrawn(image, column);
+// Where the peak and the bare sphere's horizon land in the view, in pixels from the top.
+struct Landmarks {
+  glm::dvec2 peak;
+  double horizon;
+};
+
+Landmarks landmarksOf(const View& view, double altitude) {
+  const double horizonAngle = std::acos(kEarth / (kEarth + altitude));  // from the point below the eye
+  return {projected(view, (kEarth + kPeakHeight) * unitNormal(glm::radians(kPeakLongitude), 0.0)),
+          projected(view, kEarth * glm::dvec3(std::cos(horizonAngle), std::sin(horizonAngle), 0.0)).y};
+}
+
+class PgmHorizonMountain : public ::testing::Test {
+ protected:
+  // The topmost row drawn in the peak's column by `geometry` (its YAML after the type).
+  int topOfThePeak(const std::string& geometry) {
+    engine_->load(directory_.write("mountain.yaml", pipelineWith(directory_.path() / "mountain.tif", geometry)));
+    const int top = topmostDrawn(renderFrames(*engine_, kCamera, kWidth, kHeight, 3), int(landmarks_.peak.x));
     std::printf("%s: the peak's top at row %d, the true peak at %.1f, the bare horizon at %.1f\n", geometry.c_str(),
-                top, peak.y, horizon);
-    EXPECT_NEAR(top + 0.5, peak.y, kPeakTolerance) << geometry;
+                top, landmarks_.peak.y, landmarks_.horizon);
+    return top;
   }
+
+  static constexpr Camera kCamera{.lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0,
+                                  .fov = 30.0};
+  strata::test::TemporaryDirectory directory_;
+  std::unique_ptr<Engine> engine_ = strata::test::makeEngine();
+  Landmarks landmarks_ = landmarksOf(makeView(Body{.name = "Earth", .radius = kEarth}, kCamera, kWidth, kHeight),
+                                     kCamera.altitude);
+  void SetUp() override {
+    writeMountain(directory_.path() / "mountain.tif");
+    // The peak stands well above the bare horizon, or the test shows nothing.
+    ASSERT_LT(landmarks_.peak.y, landmarks_.horizon - 20.0);
+  }
+};
+
+TEST_F(PgmHorizonMountain, AMountainBehindTheHorizonIsDrawnToItsPeak) {
+  for (const std::string geometry : {"geometry.pgm", "geometry.icosahedral"})
+    EXPECT_NEAR(topOfThePeak(geometry) + 0.5, landmarks_.peak.y, kPeakTolerance) << geometry;
+}
+
+// With zeta = 1 the blend towards the secondary sphere never starts (b = tau0): the mesh ends at the
+// primary sphere's horizon and only the mountain's foot in front of it shows, as in the thesis's Fig. 3.14.
+TEST_F(PgmHorizonMountain, WithoutTheSecondarySphereTheMountainIsCutOff) {
+  EXPECT_GT(topOfThePeak("geometry.pgm, zeta: 1") + 0.5, landmarks_.horizon - 4.0);
 }
 
 }  // namespace
