@@ -16,6 +16,7 @@ packages=(
   libcli11-dev                                  # command-line parsing
   libimgui-dev                                  # viewer panels
   libgtest-dev libgmock-dev libbenchmark-dev    # tests and benchmarks
+  libchealpix-dev                               # HEALPix's own C library: the tests' reference for pixel indices
   xvfb xauth                                    # window tests without a display
   xplanet-images                                # the Earth image the demo drapes
 )
