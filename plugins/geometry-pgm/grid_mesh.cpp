@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "local_frame.hpp"
+#include <strata/camera.hpp>
 
 namespace strata::pgm {
 namespace {

@@ -18,9 +18,9 @@ namespace strata::pgm {
 glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, int row);
 
 // Makes the cast pass (`program`, shaders/geometry/pgm_cast.comp) current with its uniforms: the grid's
-// size, the sampling frustum, the rotation from sampling space to the local frame at the point below the
-// eye (local_frame.hpp), and the cross section's constants. Every double becomes a float here, and nothing
-// planet-sized but the primary radius goes up (digest 003 section 1.8).
+// size, the sampling frustum, the rotation from sampling space to the east-north-up frame at the point below
+// the eye (strata/camera.hpp's planetToLocal), and the cross section's constants. Every double becomes a
+// float here, and nothing planet-sized but the primary radius goes up (digest 003 section 1.8).
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
              const glm::dmat3& samplingToLocal, glm::ivec2 size);
 

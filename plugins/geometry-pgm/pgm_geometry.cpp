@@ -4,12 +4,13 @@
 // switches generators by changing its `type`. docs/pgm.md explains the parts.
 #include <algorithm>
 #include <chrono>
-#include <deque>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <memory>
 #include <optional>
 
+#include <strata/camera.hpp>
 #include <strata/geometry.hpp>
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
@@ -20,7 +21,6 @@
 
 #include "grid_mesh.hpp"
 #include "grid_size.hpp"
-#include "local_frame.hpp"
 #include "pgm_cast.hpp"
 #include "reference_spheres.hpp"
 #include "sampling_camera.hpp"

@@ -7,7 +7,7 @@
 // a grid row short of it (the thesis leaves misses unsaid, digest 003 section 1.10 item 9); with a secondary
 // sphere that point lies beyond the horizon at gamma0, where the blend ends. The pass writes the sphere
 // normal and the position from the eye, both in the east-north-up frame
-// at the point below the eye (plugins/geometry-pgm/local_frame.hpp), where the nadir is exactly (0, 0, -1):
+// at the point below the eye (strata/camera.hpp's planetToLocal), where the nadir is exactly (0, 0, -1):
 // a nadir rounded to float would shift the planet's centre sideways by d times its rounding.
 //
 // Precision (digest 003 section 1.8): nothing planet-sized is subtracted here. 1 m above Mars a float

@@ -5,11 +5,11 @@ STRATA_PROGRAM_DEFINES
 // cast pass (pgm_cast.comp) becomes a vertex of the surface, its point of the primary sphere moved along the
 // sphere normal s to the body's radius plus the height there, V = P + (h + R - r_p) s. The height is sampled
 // at the point's longitude and latitude from the reference, formed from s in the local east-north-up frame
-// (pgm_local_frame.glsl), over a footprint of the angle to its neighbours in the grid (the digest's advice:
+// (lonlat_from_reference.glsl), over a footprint of the angle to its neighbours in the grid (the digest's advice:
 // a level of detail from the grid's spacing). Everything stays in the local frame, relative to the eye.
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
-#include "geometry/pgm_local_frame.glsl"
+#include "geometry/lonlat_from_reference.glsl"
 #include "geometry/pgm_grid_vertex.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 

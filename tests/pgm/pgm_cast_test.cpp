@@ -31,11 +31,11 @@
 #include <cstdio>
 #include <vector>
 
+#include <strata/camera.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 
 #include "cross_section.hpp"
-#include "local_frame.hpp"
 #include "pgm_cast.hpp"
 #include "reference_spheres.hpp"
 #include "rendering.hpp"

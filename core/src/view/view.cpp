@@ -11,6 +11,15 @@ glm::dvec3 unitNormal(double lonRad, double latRad) {
   return {std::cos(latRad) * std::cos(lonRad), std::cos(latRad) * std::sin(lonRad), std::sin(latRad)};
 }
 
+glm::dmat3 planetToLocal(glm::dvec2 lonlat) {
+  const double sinLon = std::sin(lonlat.x), cosLon = std::cos(lonlat.x);
+  const double sinLat = std::sin(lonlat.y), cosLat = std::cos(lonlat.y);
+  const glm::dvec3 east(-sinLon, cosLon, 0.0);
+  const glm::dvec3 north(-sinLat * cosLon, -sinLat * sinLon, cosLat);
+  const glm::dvec3 up(cosLat * cosLon, cosLat * sinLon, sinLat);
+  return glm::transpose(glm::dmat3(east, north, up));
+}
+
 namespace {
 
 // Infinite far plane with reversed depth: window depth = near / distance, 1 at the near plane and 0 at

@@ -39,4 +39,10 @@ View makeView(const Body& body, const Camera& camera, int width, int height);
 // Planet-fixed unit normal at geographic longitude and latitude (radians).
 glm::dvec3 unitNormal(double lonRad, double latRad);
 
+// The rotation from planet-fixed axes to the east-north-up frame at a longitude and latitude (radians): its
+// rows are east, north and up. At View::reference it is the frame in which the point below the eye is
+// (0, 0, 1) exactly, which the geometry generators place and measure points in (see
+// shaders/geometry/lonlat_from_reference.glsl).
+glm::dmat3 planetToLocal(glm::dvec2 lonlat);
+
 }  // namespace strata

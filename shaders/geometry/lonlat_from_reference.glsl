@@ -1,5 +1,5 @@
 // Longitude and latitude from the reference (View::reference, the point below the eye) of a unit vector s
-// given in the east-north-up frame there (plugins/geometry-pgm/local_frame.hpp), without cancellation, so
+// given in the east-north-up frame there (strata/camera.hpp's planetToLocal), without cancellation, so
 // that float resolves them near the eye as finely as s's small east and north components. Latitude
 // phi0 is the reference's, given as sin and cos.
 //
