@@ -3,7 +3,9 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
 #include <strata/camera.hpp>
+#include <strata/gl/indirect_draw.hpp>
 
 #include "edge_windings.hpp"
 #include "geodesic_subdivision.hpp"
@@ -16,15 +18,6 @@ struct SeedCorner {
   glm::vec4 position;  // xyz: m on the sphere, relative to the eye, planet-fixed axes; w: the patch's level
   glm::vec4 normal;    // xyz: planet-fixed unit normal
   glm::vec4 lonlat;    // xy: rad from the frame's reference, longitude unwrapped
-};
-
-// glMultiDrawElementsIndirect's command, as OpenGL lays it out.
-struct DrawElementsIndirectCommand {
-  std::uint32_t count;
-  std::uint32_t instanceCount;
-  std::uint32_t firstIndex;
-  std::int32_t baseVertex;
-  std::uint32_t baseInstance;
 };
 
 // What one frame uploads for the visible patches (seed 000 section 3.2.4, its "seed textures"): three
