@@ -1,0 +1,70 @@
+// geometry.healpix's node selection covers what a view sees exactly once: the selected nodes never overlap,
+// and every point of the sphere of the lowest height that a pixel's ray meets, in front of the near plane,
+// lies in exactly one of them. From every view of selection_views.hpp, which prints counts and times.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <unordered_set>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "selection_views.hpp"
+
+namespace strata::healpix {
+namespace {
+
+// Where the ray from the eye through pixel (px, py) (centres at + 0.5) meets the sphere of `radius` first,
+// if it does, in front of the near plane.
+std::optional<glm::dvec3> surfaceAt(const View& view, double px, double py, double radius) {
+  const double ty = std::tan(0.5 * view.verticalFov), tx = ty * double(view.width) / double(view.height);
+  const glm::dvec3 eyeRay((2.0 * px / view.width - 1.0) * tx, (1.0 - 2.0 * py / view.height) * ty, -1.0);
+  const glm::dvec3 d = glm::normalize(glm::transpose(view.planetToEye) * eyeRay);
+  const double distance = glm::length(view.eye), b = glm::dot(view.eye, d);
+  const double c = (distance - radius) * (distance + radius), discriminant = b * b - c;
+  if (discriminant < 0.0 || b >= 0.0) return std::nullopt;
+  const double t = c / (-b + std::sqrt(discriminant));  // the nearer root, without cancellation
+  if (t / glm::length(eyeRay) < view.near) return std::nullopt;
+  return view.eye + t * d;
+}
+
+TEST(NodeSelection, NodesNeverOverlap) {
+  for (const TestView& test : testViews()) {
+    const std::vector<SelectedNode> nodes = selectAndReport(test, {});
+    std::unordered_set<NodeKey, NodeKeyHash> keys;
+    for (const SelectedNode& node : nodes) ASSERT_TRUE(keys.insert(node.key).second) << test.name;
+    for (const SelectedNode& node : nodes) {
+      for (NodeKey above = node.key; above.level > 0;) {
+        above = above.parent();
+        ASSERT_FALSE(keys.contains(above)) << test.name << ": a node and its ancestor at level " << above.level;
+      }
+    }
+  }
+}
+
+TEST(NodeSelection, EveryVisiblePointLiesInExactlyOneNode) {
+  constexpr int kColumns = 193, kRows = 109;  // every 10th pixel, the borders' centres included
+  for (const TestView& test : testViews()) {
+    const View view = test.view();
+    const std::vector<SelectedNode> nodes = selectNodes(view, kEarthRadius, test.heights, {});
+    int seen = 0;
+    for (int i = 0; i < kColumns; ++i) {
+      for (int j = 0; j < kRows; ++j) {
+        const double px = 0.5 + (kWidth - 1.0) * i / (kColumns - 1), py = 0.5 + (kHeight - 1.0) * j / (kRows - 1);
+        const auto point = surfaceAt(view, px, py, kEarthRadius + test.heights.lowest);
+        if (!point) continue;
+        ++seen;
+        const glm::dvec3 u = glm::normalize(*point);
+        const FacePoint place = facePoint({std::atan2(u.y, u.x), std::atan2(u.z, std::hypot(u.x, u.y))});
+        int holding = 0;
+        for (const SelectedNode& node : nodes) holding += node.key.holds(place);
+        ASSERT_EQ(holding, 1) << test.name << " at pixel " << px << ", " << py;
+      }
+    }
+    std::printf("%-36s %5d of %d rays meet the surface\n", test.name.c_str(), seen, kColumns * kRows);
+    EXPECT_GT(seen, 100) << test.name;
+  }
+}
+
+}  // namespace
+}  // namespace strata::healpix
