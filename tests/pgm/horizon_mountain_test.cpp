@@ -15,11 +15,10 @@
 #include <memory>
 #include <string>
 
-#include "pgm_scenes.hpp"
 #include "rendering.hpp"
 #include "temporary_directory.hpp"
 
-namespace strata::pgm::test {
+namespace strata::test {
 namespace {
 
 constexpr double kEarth = 6371000.0;                          // m
@@ -33,7 +32,7 @@ constexpr double kPeakTolerance = 2.0;
 // 340 x 340 texels of 0.005 degrees (556 m) around the peak.
 void writeMountain(const std::filesystem::path& file) {
   constexpr double west = 0.5, north = 0.85, texel = 0.005;
-  strata::test::writeFloatRaster(file, 340, 340, {west, -north, west + 340 * texel, north}, [&](int column, int row) {
+  writeFloatRaster(file, 340, 340, {west, -north, west + 340 * texel, north}, [&](int column, int row) {
     const double lon = glm::radians(west + (column + 0.5) * texel - kPeakLongitude);
     const double lat = glm::radians(north - (row + 0.5) * texel);
     const double distance = kEarth * std::acos(std::cos(lat) * std::cos(lon));
@@ -90,8 +89,8 @@ class PgmHorizonMountain : public ::testing::Test {
 
   static constexpr Camera kCamera{.lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0,
                                   .fov = 30.0};
-  strata::test::TemporaryDirectory directory_;
-  std::unique_ptr<Engine> engine_ = strata::test::makeEngine();
+  TemporaryDirectory directory_;
+  std::unique_ptr<Engine> engine_ = makeEngine();
   Landmarks landmarks_ = landmarksOf(makeView(Body{.name = "Earth", .radius = kEarth}, kCamera, kWidth, kHeight),
                                      kCamera.altitude);
   void SetUp() override {
@@ -113,4 +112,4 @@ TEST_F(PgmHorizonMountain, WithoutTheSecondarySphereTheMountainIsCutOff) {
 }
 
 }  // namespace
-}  // namespace strata::pgm::test
+}  // namespace strata::test

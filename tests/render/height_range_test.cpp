@@ -57,7 +57,7 @@ TEST_P(HeightRange, LowestAboveHighestIsRefused) {
   EXPECT_NE(error.find("lowest (5 m) lies above highest (1 m)"), std::string::npos) << error;
 }
 
-INSTANTIATE_TEST_SUITE_P(Generators, HeightRange, ::testing::Values("geometry.icosahedral", "geometry.pgm"),
+INSTANTIATE_TEST_SUITE_P(Generators, HeightRange, ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

@@ -49,7 +49,7 @@ TEST_P(Silhouette, DiscRadiusIsThatOfTheRaisedSphere) {
 // 0 m, then 300 km and 1000 km, which grow the disc by about 10 and 33 pixels.
 INSTANTIATE_TEST_SUITE_P(Heights, Silhouette,
                          ::testing::Combine(::testing::Values(0.0, 3.0e5, 1.0e6),
-                                            ::testing::Values("geometry.icosahedral", "geometry.pgm")),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
                          [](const ::testing::TestParamInfo<std::tuple<double, std::string>>& test) {
                            const std::string& type = std::get<1>(test.param);
                            return type.substr(type.find('.') + 1) + "_" + std::to_string(int(std::get<0>(test.param) / 1000)) + "km";

@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(Cameras, SurfaceColour,
                                                               CameraCase{"Antimeridian", 180, 10, 0, 0},
                                                               CameraCase{"NearTheNorthPole", 30, 70, 0, 0},
                                                               CameraCase{"TiltedAndTurned", -100, -30, 45, 25}),
-                                            ::testing::Values("geometry.icosahedral", "geometry.pgm")),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
                          [](const ::testing::TestParamInfo<std::tuple<CameraCase, std::string>>& test) {
                            const std::string& type = std::get<1>(test.param);
                            return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);

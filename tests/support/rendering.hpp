@@ -18,4 +18,11 @@ std::unique_ptr<Engine> makeEngine();
 // Loads `pipelineFile`, renders one frame and reads it back (top row first).
 Image renderFrame(Engine& engine, const std::filesystem::path& pipelineFile, int width, int height);
 
+// Renders the pipeline loaded in `engine` from `camera` for `frames` frames (the first until its pages have
+// loaded: renderComplete) and reads back the last.
+Image renderFrames(Engine& engine, const Camera& camera, int width, int height, int frames);
+
+// Whether a pixel of an output.image frame shows the body: its background is black.
+bool covered(const Image& image, int x, int y);
+
 }  // namespace strata::test

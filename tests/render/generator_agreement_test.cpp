@@ -1,21 +1,26 @@
-// The same pipeline drawn by geometry.pgm and by geometry.icosahedral agrees where both sample the surface
-// well (issue 5): procedural.yaml's Mars-sized planet, its relief exaggerated 20 times, lit, seen whole
-// from orbit, tilted from 300 km and from 5 km. The colour layer's contour lines (every 1000 m of the
+// The same pipeline drawn by geometry.pgm or geometry.healpix and by geometry.icosahedral agrees where both
+// sample the surface well (issues 5 and 6): procedural.yaml's Mars-sized planet, its relief exaggerated 20
+// times, lit, seen whole from orbit, tilted from 300 km and from 5 km. The colour layer's contour lines (every 1000 m of the
 // exaggerated height, sharp, one or two pixels wide) are computed per pixel where the mesh puts the
 // ground, so a shift of the ground shows at their edges: the comparison measures where the two meshes
 // put the surface as well as how they light it.
 //
 // Left out: pixels within two pixels of either image's silhouette, where the two meshes' edges (chords of
 // different spacing over different grids) may fall either side of a pixel's centre. Measured on llvmpipe,
-// in 8-bit levels, over the three channels (pgm against icosahedral):
-//   from orbit:    mean difference 0.94, 1.24% of pixels differ by more than kLargeDifference
-//   300 km, 50 deg:   0.39, 0.45%
-//   5 km, 70 deg:     1.32, 1.82%
+// in 8-bit levels, over the three channels, against icosahedral:
+//                    pgm                          healpix
+//   from orbit:      mean difference 0.94 levels,  2.08, 2.72%
+//                    1.24% of the pixels differ
+//                    by more than kLargeDifference
+//   300 km, 50 deg:  0.39, 0.45%                  0.34, 0.39%
+//   5 km, 70 deg:    1.32, 1.82%                  1.51, 2.06%
 // The differing pixels lie along the contour lines' edges, most on their far edges near the horizon at
-// 5 km, where the two meshes sample the distant heights differently. For scale, the pgm image against
+// 5 km, where the two meshes sample the distant heights differently (healpix's larger share from orbit is
+// not yet looked into). For scale, the pgm image against
 // itself shifted one pixel sideways: 29.9%, 2.8% and 0.74% (the lines are dense from orbit and few at
 // 5 km), so the generators agree to well under a pixel from orbit and 300 km, and to about two pixels
-// along the far lines at 5 km. The tolerances are about twice the worst measured.
+// along the far lines at 5 km. The tolerances are about twice pgm's worst; healpix's orbit view comes
+// within 20% of the mean's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,11 +28,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "pgm_scenes.hpp"
 #include "rendering.hpp"
 #include "temporary_directory.hpp"
 
-namespace strata::pgm::test {
+namespace strata::test {
 namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
@@ -56,7 +60,7 @@ bool awayFromSilhouettes(const Image& a, const Image& b, int x, int y) {
 
 struct Agreement {
   int compared = 0;
-  int darkest = 255, brightest = 0;  // of the pgm image's compared pixels: the shading's range
+  int darkest = 255, brightest = 0;  // of the tested image's compared pixels: the shading's range
   double meanDifference = 0.0;  // levels
   double largeShare = 0.0;      // of the compared pixels
 };
@@ -83,21 +87,23 @@ Agreement compare(const Image& a, const Image& b) {
   return agreement;
 }
 
-TEST(PgmGeneratorAgreement, PgmAndIcosahedralDrawTheSamePlanet) {
-  strata::test::TemporaryDirectory directory;
-  auto engine = strata::test::makeEngine();
+class GeneratorAgreement : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(GeneratorAgreement, DrawsTheSamePlanetAsTheIcosahedralGenerator) {
+  TemporaryDirectory directory;
+  auto engine = makeEngine();
   for (const Camera& camera : {Camera{.lon = 30, .lat = 25, .altitude = 8.0e6, .tilt = 0, .fov = 45},
                                Camera{.lon = 30, .lat = 25, .altitude = 3.0e5, .heading = 40, .tilt = 50, .fov = 45},
                                Camera{.lon = 30, .lat = 25, .altitude = 5.0e3, .heading = 40, .tilt = 70, .fov = 45}}) {
-    engine->load(directory.write("pgm.yaml", pipelineWith("geometry.pgm")));
-    const Image pgm = renderFrames(*engine, camera, kWidth, kHeight, 3);
+    engine->load(directory.write("tested.yaml", pipelineWith(GetParam())));
+    const Image tested = renderFrames(*engine, camera, kWidth, kHeight, 3);
     engine->load(directory.write("icosahedral.yaml", pipelineWith("geometry.icosahedral")));
     const Image icosahedral = renderFrames(*engine, camera, kWidth, kHeight, 3);
-    const Agreement agreement = compare(pgm, icosahedral);
+    const Agreement agreement = compare(tested, icosahedral);
 
-    std::printf("%8.0f m up, tilt %2.0f: %d pixels compared, shades %d to %d, mean difference %.2f levels, %.2f%% "
+    std::printf("%s, %8.0f m up, tilt %2.0f: %d pixels compared, shades %d to %d, mean difference %.2f levels, %.2f%% "
                 "differ by more than %d\n",
-                camera.altitude, camera.tilt, agreement.compared, agreement.darkest, agreement.brightest,
+                GetParam().c_str(), camera.altitude, camera.tilt, agreement.compared, agreement.darkest, agreement.brightest,
                 agreement.meanDifference, 100.0 * agreement.largeShare, kLargeDifference);
     EXPECT_GT(agreement.compared, kWidth * kHeight / 10);
     EXPECT_LT(agreement.meanDifference, kMeanTolerance);
@@ -105,5 +111,10 @@ TEST(PgmGeneratorAgreement, PgmAndIcosahedralDrawTheSamePlanet) {
   }
 }
 
+INSTANTIATE_TEST_SUITE_P(Generators, GeneratorAgreement, ::testing::Values("geometry.pgm", "geometry.healpix"),
+                         [](const ::testing::TestParamInfo<std::string>& type) {
+                           return type.param.substr(type.param.find('.') + 1);
+                         });
+
 }  // namespace
-}  // namespace strata::pgm::test
+}  // namespace strata::test

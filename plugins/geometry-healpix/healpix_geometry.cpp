@@ -1,0 +1,145 @@
+// geometry.healpix: the body tessellated as twelve HEALPix quadtrees (seed 004, digest 004). Each frame the
+// nodes the view needs are chosen on the CPU in double (node_selection.hpp), then drawn from one stitched
+// proxy grid that the vertex shader places with the HEALPix inverse and displaces by the height layer, into
+// the same deferred texturing buffer as the other generators. docs/healpix.md explains the parts.
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+
+#include <strata/geometry.hpp>
+#include <strata/gl/gpu_timer.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/height_input.hpp>
+#include <strata/layer.hpp>
+#include <strata/plugin.hpp>
+
+#include "node_buffers.hpp"
+
+namespace strata::healpix {
+namespace {
+
+int gridCellsOf(const NodeSetup& setup) {
+  const auto cells = int(setup.parameters.integer("cells"));
+  if (cells % 2 != 0)
+    throw Error(setup.parameters.where("cells"), "cells (" + std::to_string(cells) + ") is odd",
+                "give an even number: an edge next to a coarser node keeps every other vertex");
+  return cells;
+}
+
+class HealpixGeometry : public Node, public SurfaceGeometry {
+ public:
+  explicit HealpixGeometry(const NodeSetup& setup)
+      : heights_(setup),
+        radius_(setup.body->radius),
+        settings_{.threshold = setup.parameters.real("threshold"), .gridCells = gridCellsOf(setup)} {}
+
+  void open() override { heights_.checkLayerWithin(); }
+
+  void createResources(GpuContext& gpu) override {
+    surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/healpix_surface.vert",
+                               gpu.shaders->expand("geometry/healpix_surface.vert", heights_.substitutions())},
+                              {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
+                               gpu.shaders->expand("geometry/surface_buffer.frag")}});
+    buffers_.emplace(settings_.gridCells);
+    rasterisationTimer_.emplace();
+  }
+
+  void prepare(const FrameState& frame) override {
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_);
+    batch_ = batchNodes(selected, frame.view, radius_, settings_.gridCells);
+    visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  GeometryStatistics statistics() const override {
+    const std::uint64_t nodes = batch_.nodes.size(), cells = std::uint64_t(settings_.gridCells);
+    return {int(nodes), nodes * (cells + 1) * (cells + 1), nodes * 2 * cells * cells, visibilityMs_, 0.0,
+            rasterisationTimer_->milliseconds()};
+  }
+
+  void render(const FrameState& frame) override;
+
+  SurfaceGeometry* geometry() override { return this; }
+  const Framebuffer& gbuffer() const override { return gbuffer_; }
+
+ private:
+  void useSurface(const View& view);
+
+  HeightInput heights_;
+  double radius_;
+  SelectionSettings settings_;
+  NodeBatch batch_;
+  ShaderProgram surface_;
+  std::optional<NodeBuffers> buffers_;
+  std::optional<GpuTimer> rasterisationTimer_;
+  double visibilityMs_ = 0.0;
+  Framebuffer gbuffer_;
+};
+
+// The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand
+// 1 / sqrt(threshold) pixels apart, a pixel's angle times that per metre from the eye on the ground.
+void HealpixGeometry::useSurface(const View& view) {
+  const double pixelAngle = 2.0 * std::tan(0.5 * view.verticalFov) / view.height;
+  surface_.use();
+  surface_.set("gridCells", settings_.gridCells);
+  surface_.set("planetToEye", glm::mat3(view.planetToEye));
+  surface_.set("projection", view.projection);
+  surface_.set("planetToReference", glm::mat3(planetToLocal(view.reference)));
+  surface_.set("referenceLatitude", glm::vec2(std::sin(view.reference.y), std::cos(view.reference.y)));
+  surface_.set("referenceLonlat", glm::vec2(view.reference));
+  surface_.set("radius", float(radius_));
+  surface_.set("footprintPerMetre", float(pixelAngle / (std::sqrt(settings_.threshold) * radius_)));
+}
+
+void HealpixGeometry::render(const FrameState& frame) {
+  const View& view = frame.view;
+  if (gbuffer_.width() != view.width || gbuffer_.height() != view.height)
+    gbuffer_ = Framebuffer(view.width, view.height, {GL_RGBA32F, GL_RGBA16F}, GL_DEPTH_COMPONENT32F);
+  buffers_->upload(batch_);
+  gbuffer_.bind();
+  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
+  glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glEnable(GL_CULL_FACE);  // counter-clockwise in (x, y) faces outwards on every base face (stitched_grid.hpp)
+  useSurface(view);
+  TextureUnits units;
+  if (heights_.layer()) heights_.layer()->bind(surface_, units);
+  rasterisationTimer_->begin();
+  buffers_->draw();
+  rasterisationTimer_->end();
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "geometry.healpix";
+  type.category = NodeCategory::Geometry;
+  type.summary = "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size on screen, placed on the GPU";
+  type.inputs = {HeightInput::port()};
+  type.output = PortType::Geometry;
+  type.parameters = {
+      {.name = "threshold", .type = ParameterType::Real, .defaultValue = 0.2, .minimum = 0.001, .maximum = 10.0,
+       .doc = "vertices wanted per pixel: a node is drawn once its area on screen times this needs no more "
+              "vertices than its grid has (0.2 is the paper's recommendation; it measured 0.005 to 1.0)"},
+      {.name = "cells", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 2.0,
+       .maximum = 254.0,
+       .doc = "grid cells along a node's side, even (64: 4225 vertices a node, so a few hundred nodes cover a "
+              "view; the paper's 254 is its data tiles' size, 16-bit indices)"},
+  };
+  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
+  type.create = [](const NodeSetup& setup) { return std::make_unique<HealpixGeometry>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::healpix
+
+STRATA_PLUGIN("geometry-healpix", "0.1.0", strata::healpix::registerTypes)

@@ -1,0 +1,37 @@
+#include "node_batch.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "stitched_grid.hpp"
+
+namespace strata::healpix {
+namespace {
+
+GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, const glm::dmat3& planetToReference) {
+  const double size = std::ldexp(1.0, -key.level);
+  const FacePoint centre{key.face, (double(key.ix) + 0.5) * size, (double(key.iy) + 0.5) * size};
+  const glm::dvec3 unit = unitVector(centre);
+  const glm::dvec3 referenceUnit = unitNormal(view.reference.x, view.reference.y);
+  const double longitude = std::remainder(lonlat(centre).x - view.reference.x, 2.0 * std::numbers::pi);
+  return {frameAt(centre), glm::vec4(glm::vec3(radius * unit - view.eye), float(size / cells)),
+          glm::vec4(glm::vec3(planetToReference * (unit - referenceUnit)), float(longitude)),
+          glm::vec4(glm::vec3(unit), 0.0f)};
+}
+
+}  // namespace
+
+NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, double radius, int cells) {
+  const glm::dmat3 planetToReference = planetToLocal(view.reference);
+  const std::uint32_t indicesPerNode = 6u * std::uint32_t(cells) * std::uint32_t(cells);
+  NodeBatch batch;
+  batch.nodes.reserve(selected.size());
+  batch.draws.reserve(selected.size());
+  for (const SelectedNode& node : selected) {
+    batch.draws.push_back({indicesPerNode, 1, node.coarserEdges * indicesPerNode, 0, std::uint32_t(batch.nodes.size())});
+    batch.nodes.push_back(gpuNode(node.key, view, radius, cells, planetToReference));
+  }
+  return batch;
+}
+
+}  // namespace strata::healpix

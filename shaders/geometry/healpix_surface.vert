@@ -1,0 +1,68 @@
+#version 450 core
+#define STRATA_GEOMETRY_STAGE
+STRATA_PROGRAM_DEFINES
+// geometry.healpix's nodes drawn from one proxy grid (seed 004 section 3.2.4; digest 004 section 1.5): each
+// vertex is its node's centre plus a dyadic offset in the base face, placed by the HEALPix inverse taken
+// relative to the centre (healpix_offset.glsl), displaced by the height layer and projected. The centre
+// arrives from the eye and from the frame's reference, made in double on the CPU (node_batch.hpp), so the
+// GPU only adds small, precise differences (DESIGN.md, Precision). Heights are sampled over a footprint
+// that follows the vertex's distance, not its node's level, so that nodes sharing a vertex displace it alike.
+#include "strata/constants.glsl"
+#include "strata/precise_trig.glsl"
+#include "strata/surface_point.glsl"
+#include "geometry/healpix_offset.glsl"
+#include "geometry/lonlat_from_reference.glsl"
+
+struct HealpixNode {
+  HealpixFrame frame;
+  vec4 centreFromEye;        // xyz: m, planet-fixed; w: the grid cell's size in face units
+  vec4 centreFromReference;  // xyz: unit vector minus View::reference's, east-north-up there; w: its longitude
+                             // from the reference
+  vec4 centre;               // xyz: unit vector, planet-fixed
+};
+
+layout(std430, binding = 0) readonly buffer Nodes { HealpixNode nodes[]; };
+layout(location = 0) in uint nodeIndex;  // the draw's baseInstance (node_buffers.hpp)
+
+uniform int gridCells;
+uniform mat3 planetToEye;
+uniform mat4 projection;
+uniform mat3 planetToReference;  // planet-fixed to east-north-up at View::reference
+uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
+uniform vec2 referenceLonlat;    // rad: the point below the eye
+uniform float radius;            // m
+uniform float footprintPerMetre;  // rad of the sphere between vertices per metre from the eye
+
+out vec2 vLonlatFromReference;
+out vec3 vSphereNormal;
+out vec3 vShadingNormal;
+
+#ifdef STRATA_HAS_HEIGHT
+STRATA_HEIGHT_LAYER_GLSL
+#include "geometry/height_sampling.glsl"
+#endif
+
+void main() {
+  HealpixNode node = nodes[nodeIndex];
+  ivec2 lattice = ivec2(gl_VertexID % (gridCells + 1), gl_VertexID / (gridCells + 1));
+  vec2 offset = (vec2(lattice) - 0.5 * float(gridCells)) * node.centreFromEye.w;  // exact: dyadic
+  vec3 d = healpixOffset(node.frame, offset);
+  vec3 normal = normalize(node.centre.xyz + d);
+  vec3 fromReference = node.centreFromReference.xyz + planetToReference * d;
+  vec2 lonlat = lonlatFromReference(vec3(fromReference.xy, 1.0 + fromReference.z), referenceLatitude);
+  // Unwrapped to within half a turn of the node's centre, so that no triangle of the node interpolates
+  // across the meridian opposite the reference, where the longitude from it jumps by a turn.
+  lonlat.x += TWO_PI * round((node.centreFromReference.w - lonlat.x) / TWO_PI);
+  vec3 fromEye = node.centreFromEye.xyz + radius * d;
+  vec3 shading = normal;
+#ifdef STRATA_HAS_HEIGHT
+  float spacing = footprintPerMetre * length(fromEye);
+  float h = heightAt(lonlat, normal, spacing);
+  shading = shadingNormal(h, lonlat, normal, spacing);
+  fromEye += h * normal;
+#endif
+  gl_Position = projection * vec4(planetToEye * fromEye, 1.0);
+  vLonlatFromReference = lonlat;
+  vSphereNormal = normal;
+  vShadingNormal = shading;
+}
