@@ -19,6 +19,22 @@ GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, 
           glm::vec4(glm::vec3(unit), 0.0f)};
 }
 
+// The outline of a node, 4 cells vertices from corner 0 round to corner 0, each edge from its first corner.
+void appendBoundary(const NodeKey& key, const View& view, double radius, int cells,
+                    const glm::dmat3& planetToReference, std::vector<BoundaryVertex>& boundary) {
+  const glm::dvec3 referenceUnit = unitNormal(view.reference.x, view.reference.y);
+  const glm::ivec2 start[4] = {{0, 0}, {cells, 0}, {cells, cells}, {0, cells}};
+  const glm::ivec2 step[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+  for (int edge = 0; edge < 4; ++edge)
+    for (int k = 0; k < cells; ++k) {
+      const glm::dvec2 lattice(start[edge] + k * step[edge]);
+      const glm::dvec3 unit = unitVector(key.at(lattice.x / cells, lattice.y / cells));
+      boundary.push_back({glm::vec4(glm::vec3(radius * unit - view.eye), 0.0f),
+                          glm::vec4(glm::vec3(planetToReference * (unit - referenceUnit)), 0.0f),
+                          glm::vec4(glm::vec3(unit), 0.0f)});
+    }
+}
+
 }  // namespace
 
 NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, double radius, int cells) {
@@ -27,9 +43,11 @@ NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, d
   NodeBatch batch;
   batch.nodes.reserve(selected.size());
   batch.draws.reserve(selected.size());
+  batch.boundary.reserve(selected.size() * 4 * std::size_t(cells));
   for (const SelectedNode& node : selected) {
     batch.draws.push_back({indicesPerNode, 1, node.coarserEdges * indicesPerNode, 0, std::uint32_t(batch.nodes.size())});
     batch.nodes.push_back(gpuNode(node.key, view, radius, cells, planetToReference));
+    appendBoundary(node.key, view, radius, cells, planetToReference, batch.boundary);
   }
   return batch;
 }

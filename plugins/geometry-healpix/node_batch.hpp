@@ -23,11 +23,24 @@ struct GpuNode {
   glm::vec4 centre;               // xyz: unit vector of the centre, planet-fixed
 };
 
+// A vertex on a node's outline, made on the CPU in double from its exact face point. A vertex two nodes share
+// (neighbours of one level, or a coarser neighbour's vertex and a finer one's even vertex) is the same face
+// point, in the same face or across a face edge, so both get the same float values and the same heights:
+// computed in the shader relative to each node's own centre it would differ in the last bits, and a height
+// layer sampled at float positions (source.procedural: 0.4 m steps on Earth) would open a crack there.
+struct BoundaryVertex {
+  glm::vec4 fromEye;        // xyz: m, planet-fixed, the point on the body's sphere minus the eye
+  glm::vec4 fromReference;  // xyz: unit vector minus View::reference's, east-north-up there
+  glm::vec4 normal;         // xyz: unit vector, planet-fixed
+};
+
 // What a frame uploads: a node and a draw of the proxy grid each, the draw's index section chosen by the
-// node's coarser edges (stitched_grid.hpp) and its baseInstance naming the node.
+// node's coarser edges (stitched_grid.hpp) and its baseInstance naming the node; and each node's 4 cells
+// outline vertices, edge by edge from corner e towards corner e + 1 (healpix_node.hpp's numbering).
 struct NodeBatch {
   std::vector<GpuNode> nodes;
   std::vector<DrawElementsIndirectCommand> draws;
+  std::vector<BoundaryVertex> boundary;
 };
 
 NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, double radius, int cells);

@@ -5,8 +5,8 @@
 
 namespace strata::healpix {
 
-// The GPU side of the nodes: the stitched proxy grid's indices (uploaded once), and each frame's nodes and
-// draws. Each draw is one instance whose baseInstance names its node: an instanced vertex attribute (divisor
+// The GPU side of the nodes: the stitched proxy grid's indices (uploaded once), and each frame's nodes,
+// their outline vertices and their draws. Each draw is one instance whose baseInstance names its node: an instanced vertex attribute (divisor
 // 1) reads it from a buffer of 0, 1, 2, ..., which GL 4.5 offsets by baseInstance (gl_DrawID needs 4.6).
 class NodeBuffers {
  public:
@@ -21,8 +21,10 @@ class NodeBuffers {
   void draw() const;
 
  private:
-  enum Buffer { kIndices, kNodes, kDraws, kNodeNumbers, kBufferCount };
+  enum Buffer { kIndices, kNodes, kDraws, kNodeNumbers, kBoundary, kBufferCount };
   void reserve(std::size_t nodes);
+
+  int cells_;
 
   std::size_t capacity_ = 0;
   std::size_t nodes_ = 0;

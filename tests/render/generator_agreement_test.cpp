@@ -96,7 +96,8 @@ TEST_P(GeneratorAgreement, DrawsTheSamePlanetAsTheIcosahedralGenerator) {
                                Camera{.lon = 30, .lat = 25, .altitude = 3.0e5, .heading = 40, .tilt = 50, .fov = 45},
                                Camera{.lon = 30, .lat = 25, .altitude = 5.0e3, .heading = 40, .tilt = 70, .fov = 45}}) {
     engine->load(directory.write("tested.yaml", pipelineWith(GetParam())));
-    const Image tested = renderFrames(*engine, camera, kWidth, kHeight, 3);
+    // pgm's third frame has its primary sphere from the least visible height; the others need one frame.
+    const Image tested = renderFrames(*engine, camera, kWidth, kHeight, GetParam() == "geometry.pgm" ? 3 : 1);
     engine->load(directory.write("icosahedral.yaml", pipelineWith("geometry.icosahedral")));
     const Image icosahedral = renderFrames(*engine, camera, kWidth, kHeight, 3);
     const Agreement agreement = compare(tested, icosahedral);
