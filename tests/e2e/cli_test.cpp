@@ -259,7 +259,8 @@ TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
 TEST_F(StrataCommandTest, PluginsListsTheBuiltInTypes) {
   const CommandResult result = run({"plugins"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.icosahedral ", "geometry.pgm ", "output.image "});
+  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.healpix ", "geometry.icosahedral ", "geometry.pgm ",
+                                       "output.image "});
 }
 
 TEST_F(StrataCommandTest, PluginsDescribesTheParametersOfAType) {
