@@ -105,14 +105,16 @@ void HealpixGeometry::render(const FrameState& frame) {
   glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  glEnable(GL_CULL_FACE);  // counter-clockwise in (x, y) faces outwards on every base face (stitched_grid.hpp)
+  // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
+  // enters the ground is nearly edge-on, and the rasteriser's rounding may call it back-facing; culled, it
+  // left the pixel to the back faces behind it and so to the sky (one pixel 2 m up, 88 degrees, Coverage).
+  // The nodes beyond the horizon are culled already, so few back faces reach the rasteriser.
   useSurface(view);
   TextureUnits units;
   if (heights_.layer()) heights_.layer()->bind(surface_, units);
   rasterisationTimer_->begin();
   buffers_->draw();
   rasterisationTimer_->end();
-  glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
 }
 

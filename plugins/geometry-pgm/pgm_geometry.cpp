@@ -151,12 +151,13 @@ void PgmGeometry::rasterise(const View& view) {
   glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  glEnable(GL_CULL_FACE);  // terrain facing away lies behind terrain facing the eye
+  // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
+  // enters the ground is nearly edge-on, and the rasteriser's rounding may call it back-facing; culled, it
+  // would leave the pixel to the sky (geometry.healpix lost a pixel so, 2 m up and tilted 88 degrees).
   useGridSurface(surface_, view);
   rasterisationTimer_->begin();
   mesh_->draw();
   rasterisationTimer_->end();
-  glDisable(GL_CULL_FACE);
   glDisable(GL_DEPTH_TEST);
 }
 
