@@ -40,8 +40,7 @@ const std::vector<Size> kStandardResolutions = {{640, 480}, {1024, 768}, {1280, 
 // Test case 1 (Fig. 6.1): the whole planet, straight down from 8,000 km. Test case 2 (Fig. 6.2): near the
 // planet at a steep angle, 20 km up, tilted 70 degrees toward the horizon.
 strata::Camera testCaseCamera(int testCase) {
-  if (testCase == 1) return {.lon = 30, .lat = 25, .altitude = 8.0e6, .heading = 0, .tilt = 0, .fov = 45};
-  return {.lon = 30, .lat = 25, .altitude = 2.0e4, .heading = 0, .tilt = 70, .fov = 45};
+  return testCase == 1 ? strata::bench::wholeMarsView() : strata::bench::nearMarsView();
 }
 
 // One configuration: the pipeline loaded once with the grid, warmed up, then one frame per iteration,
