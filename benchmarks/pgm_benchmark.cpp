@@ -7,7 +7,6 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -16,8 +15,8 @@
 
 #include <strata/engine.hpp>
 #include <strata/gl.hpp>
-#include <strata/gl/context.hpp>
 
+#include "headless_main.hpp"
 #include "procedural_mars_pipeline.hpp"
 
 namespace {
@@ -108,15 +107,7 @@ void registerBenchmarks(const fs::path& pipeline) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // One context for every configuration: each loads its own engine on it.
-  const auto context = strata::createHeadlessContext(false);
-  const std::string renderer = strata::currentGlInfo().renderer;
-  benchmark::AddCustomContext("gpu", renderer);
-  std::printf("%s; %s\n", context->description().c_str(), renderer.c_str());
-  registerBenchmarks(strata::bench::writeProceduralMarsPipeline("strata-bench-pgm", "geometry.pgm"));
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return strata::bench::runHeadless(argc, argv, [] {
+    registerBenchmarks(strata::bench::writeProceduralMarsPipeline("strata-bench-pgm", "geometry.pgm"));
+  });
 }
