@@ -10,7 +10,7 @@ namespace strata::healpix {
 // and c = x - y of the face point, a = s - 1 is 0 where the face's equatorial zone meets its polar cap.
 struct HealpixFrame {
   glm::vec4 zone;      // x: +1 north face, -1 south face, 0 equatorial face; y: a; z: c; w: ring number nr
-  glm::vec4 position;  // x: z; y: sin(colatitude); z: longitude phi in [0, 2 pi] (rad); w: 0
+  glm::vec4 position;  // x: z; y: sin(colatitude); z: longitude phi (rad), as strata/healpix.hpp's spherical; w: 0
 };
 
 HealpixFrame frameAt(const FacePoint& reference);

@@ -8,21 +8,25 @@
 namespace strata::healpix {
 namespace {
 
-GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, const glm::dmat3& planetToReference) {
+// The frame's reference point (View::reference) and the rotation to its east-north-up frame.
+struct Reference {
+  glm::dvec3 unit;
+  glm::dmat3 planetToLocal;
+};
+
+GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, const Reference& reference) {
   const double size = std::ldexp(1.0, -key.level);
   const FacePoint centre{key.face, (double(key.ix) + 0.5) * size, (double(key.iy) + 0.5) * size};
   const glm::dvec3 unit = unitVector(centre);
-  const glm::dvec3 referenceUnit = unitNormal(view.reference.x, view.reference.y);
   const double longitude = std::remainder(lonlat(centre).x - view.reference.x, 2.0 * std::numbers::pi);
   return {frameAt(centre), glm::vec4(glm::vec3(radius * unit - view.eye), float(size / cells)),
-          glm::vec4(glm::vec3(planetToReference * (unit - referenceUnit)), float(longitude)),
+          glm::vec4(glm::vec3(reference.planetToLocal * (unit - reference.unit)), float(longitude)),
           glm::vec4(glm::vec3(unit), 0.0f)};
 }
 
 // The outline of a node, 4 cells vertices from corner 0 round to corner 0, each edge from its first corner.
-void appendBoundary(const NodeKey& key, const View& view, double radius, int cells,
-                    const glm::dmat3& planetToReference, std::vector<BoundaryVertex>& boundary) {
-  const glm::dvec3 referenceUnit = unitNormal(view.reference.x, view.reference.y);
+void appendBoundary(const NodeKey& key, const View& view, double radius, int cells, const Reference& reference,
+                    std::vector<BoundaryVertex>& boundary) {
   const glm::ivec2 start[4] = {{0, 0}, {cells, 0}, {cells, cells}, {0, cells}};
   const glm::ivec2 step[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
   for (int edge = 0; edge < 4; ++edge)
@@ -30,7 +34,7 @@ void appendBoundary(const NodeKey& key, const View& view, double radius, int cel
       const glm::dvec2 lattice(start[edge] + k * step[edge]);
       const glm::dvec3 unit = unitVector(key.at(lattice.x / cells, lattice.y / cells));
       boundary.push_back({glm::vec4(glm::vec3(radius * unit - view.eye), 0.0f),
-                          glm::vec4(glm::vec3(planetToReference * (unit - referenceUnit)), 0.0f),
+                          glm::vec4(glm::vec3(reference.planetToLocal * (unit - reference.unit)), 0.0f),
                           glm::vec4(glm::vec3(unit), 0.0f)});
     }
 }
@@ -38,7 +42,7 @@ void appendBoundary(const NodeKey& key, const View& view, double radius, int cel
 }  // namespace
 
 NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, double radius, int cells) {
-  const glm::dmat3 planetToReference = planetToLocal(view.reference);
+  const Reference reference{unitNormal(view.reference.x, view.reference.y), planetToLocal(view.reference)};
   const std::uint32_t indicesPerNode = 6u * std::uint32_t(cells) * std::uint32_t(cells);
   NodeBatch batch;
   batch.nodes.reserve(selected.size());
@@ -46,8 +50,8 @@ NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, d
   batch.boundary.reserve(selected.size() * 4 * std::size_t(cells));
   for (const SelectedNode& node : selected) {
     batch.draws.push_back({indicesPerNode, 1, node.coarserEdges * indicesPerNode, 0, std::uint32_t(batch.nodes.size())});
-    batch.nodes.push_back(gpuNode(node.key, view, radius, cells, planetToReference));
-    appendBoundary(node.key, view, radius, cells, planetToReference, batch.boundary);
+    batch.nodes.push_back(gpuNode(node.key, view, radius, cells, reference));
+    appendBoundary(node.key, view, radius, cells, reference, batch.boundary);
   }
   return batch;
 }

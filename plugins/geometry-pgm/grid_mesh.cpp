@@ -62,13 +62,6 @@ void GridMesh::draw() const {
   glBindVertexArray(0);
 }
 
-std::vector<GridMesh::Vertex> GridMesh::read() const {
-  std::vector<Vertex> vertices(std::size_t(size_.x) * std::size_t(size_.y));
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(vertices_, 0, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data());
-  return vertices;
-}
-
 void useDisplacement(const ShaderProgram& program, glm::ivec2 size, const View& view, double bodyRadius,
                      double primaryRadius) {
   program.use();

@@ -1,6 +1,5 @@
 #pragma once
 #include <cstdint>
-#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -32,13 +31,12 @@ class GridMesh {
 
   std::uint64_t triangles() const { return 2 * cells(); }
 
-  // What pgm_displace.comp wrote for each grid point (pgm_grid_vertex.glsl), read back: for tests.
+  // What pgm_displace.comp writes for each grid point (pgm_grid_vertex.glsl).
   struct Vertex {
     glm::vec4 point;    // xyz: displaced, m from the eye, local frame; w: height above the body's radius
     glm::vec4 normal;   // xyz: the sphere normal, local frame; w: 1 for a hit
     glm::vec4 shading;  // xyz: the displaced surface's normal, planet-fixed
   };
-  std::vector<Vertex> read() const;
 
  private:
   std::size_t cells() const { return std::size_t(size_.x - 1) * std::size_t(size_.y - 1); }

@@ -216,13 +216,11 @@ FacePixel fromRing(std::int64_t nside, std::int64_t pixel) {
   return {face, descending % nside, nside - 1 - ascending % nside};
 }
 
+}  // namespace
+
 // The inverse of digest 004 section 1.2: the ring coordinate jr (face widths from the north pole) gives z,
 // in the caps through t = nr^2 / 3 = 1 - |z| so that sin(colatitude) = sqrt(t (2 - t)) keeps its precision.
-struct Spherical {
-  double z, sinColatitude, longitude;
-};
-
-Spherical spherical(const FacePoint& point) {
+SphericalPoint spherical(const FacePoint& point) {
   const double jr = kSouthCornerRing[static_cast<std::size_t>(point.face)] - point.x - point.y;
   const double centre = kCentreLongitude[static_cast<std::size_t>(point.face)];
   const double capRing = jr < 1.0 ? jr : 4.0 - jr;
@@ -235,17 +233,15 @@ Spherical spherical(const FacePoint& point) {
   return {jr < 1.0 ? 1.0 - t : t - 1.0, std::sqrt(t * (2.0 - t)), longitude};
 }
 
-}  // namespace
-
 FacePoint facePoint(glm::dvec2 lonlat) { return toFacePoint(edgeLines(lonlat)); }
 
 glm::dvec3 unitVector(const FacePoint& point) {
-  const Spherical s = spherical(point);
+  const SphericalPoint s = spherical(point);
   return {s.sinColatitude * std::cos(s.longitude), s.sinColatitude * std::sin(s.longitude), s.z};
 }
 
 glm::dvec2 lonlat(const FacePoint& point) {
-  const Spherical s = spherical(point);
+  const SphericalPoint s = spherical(point);
   double lon = s.longitude;
   if (lon > kPi) lon -= kTwoPi;
   if (lon <= -kPi) lon += kTwoPi;

@@ -27,6 +27,13 @@ struct FacePoint {
 
 // The face point of a longitude (any real) and latitude (in [-pi/2, pi/2]).
 FacePoint facePoint(glm::dvec2 lonlat);
+// A face point as the inverse of digest 004 section 1.2 gives it: z = sin(latitude), sin(colatitude) (formed
+// from the ring number in the caps, so that it keeps its precision up to the poles) and the longitude phi =
+// (pi / 4) (jpll + (x - y) / nr), not wrapped (at a pole, the face centre's).
+struct SphericalPoint {
+  double z, sinColatitude, longitude;
+};
+SphericalPoint spherical(const FacePoint& point);
 // The unit vector of a face point, accurate to rounding up to the poles.
 glm::dvec3 unitVector(const FacePoint& point);
 // The longitude, in (-pi, pi], and latitude of a face point; at a pole the longitude of the face's centre.
