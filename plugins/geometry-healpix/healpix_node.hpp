@@ -45,7 +45,7 @@ struct NodeKeyHash {
 NodeKey nodeAt(const FacePoint& point, int level);
 
 // A point just beyond the middle of edge `edge`, a 64th of the node's size outward, in whichever face holds
-// it: the place to look for the neighbour across that edge (docs/healpix.md, plan 3). Across a base-face
+// it: the place to look for the neighbour across that edge (docs/healpix.md, "Selection"). Across a base-face
 // boundary the step is taken on the sphere, mirroring a point as far inside through the edge's midpoint.
 // Neighbours at one level meet edge to edge across face boundaries too, so a neighbour of any coarser
 // level holds the point.

@@ -205,7 +205,7 @@ class VisitedTree {
   }
 
   // Splits drawn nodes two or more levels coarser than a drawn neighbour until none is (digest 004 section
-  // 2 leaves these cracks open; docs/healpix.md, plan 3). Each drawn node looks across its edges for coarser
+  // 2 leaves these cracks open; docs/healpix.md, "Selection"). Each drawn node looks across its edges for coarser
   // ones; a split's drawn children look in turn, so the splits ripple outward as far as they must.
   void balance() {
     std::vector<NodeKey> pending = drawn_;

@@ -1,6 +1,6 @@
 #pragma once
-// The CPU half of geometry.healpix's traversal (digest 004 sections 1.4 and 2; docs/healpix.md, plan 2 and
-// 3): which nodes of the twelve quadtrees a view draws, in double.
+// The CPU half of geometry.healpix's traversal (digest 004 sections 1.4 and 2; docs/healpix.md,
+// "Selection"): which nodes of the twelve quadtrees a view draws, in double.
 #include <array>
 #include <vector>
 
