@@ -18,6 +18,8 @@ class GdalPageSource : public PageSource {
  public:
   // `dataset` was opened and checked (checkRaster); it serves the first read.
   GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind);
+  // The same, paged as `pyramid` says (a pyramid of the raster's size that may stop early).
+  GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, PagePyramid pyramid);
   ~GdalPageSource() override;
 
   const PagePyramid& pyramid() const override { return pyramid_; }

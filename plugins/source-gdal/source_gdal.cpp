@@ -12,6 +12,8 @@
 
 #include "gdal_page_source.hpp"
 #include "georeferencing.hpp"
+#include "healpix_page_source.hpp"
+#include "healpix_pyramid_file.hpp"
 #include "raster_reading.hpp"
 #include "value_range.hpp"
 
@@ -27,19 +29,20 @@ class GdalSource : public Node {
 
   void open() override {
     const SourceLocation where = parameters_.where("path");
-    const std::string path = parameters_.path("path").string();
-    CPLErrorReset();
-    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-    if (!dataset)
-      throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
-                  "check the path, and that `gdalinfo " + path + "` reads it");
+    std::unique_ptr<GDALDataset> dataset = openDataset(where);
+    checkRaster(*dataset, kind_, where);
+    if (kind_ != LayerKind::Color)
+      if (const std::optional<ValueRange> raw = exactRawRange(*dataset)) layer_.setRawRange(*raw);
+    if (std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where)) {
+      refusePlacement("a HEALPix pyramid");
+      georeference_ = std::move(healpix->georeference);
+      source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, healpix->nside);
+      return;
+    }
     georeference_ = georeferenceOf(*dataset, plugins_,
                                    {parameters_.string("projection"), parameters_.where("projection"),
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
-    checkRaster(*dataset, kind_, where);
     warnWithoutOverviews(*dataset);
-    if (kind_ != LayerKind::Color)
-      if (const std::optional<ValueRange> raw = exactRawRange(*dataset)) layer_.setRawRange(*raw);
     source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_);
   }
 
@@ -48,6 +51,26 @@ class GdalSource : public Node {
   Layer* layer() override { return &layer_; }
 
  private:
+  std::unique_ptr<GDALDataset> openDataset(const SourceLocation& where) const {
+    const std::string path = parameters_.path("path").string();
+    CPLErrorReset();
+    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    if (!dataset)
+      throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
+                  "check the path, and that `gdalinfo " + path + "` reads it");
+    return dataset;
+  }
+
+  // A file that places itself (a HEALPix pyramid) takes no `projection` or `extent`.
+  void refusePlacement(const std::string& what) const {
+    const bool projection = !parameters_.string("projection").empty(), extent = !parameters_.reals("extent").empty();
+    if (!projection && !extent) return;
+    const std::string name = projection ? "projection" : "extent";
+    throw Error(parameters_.where(name),
+                "'" + parameters_.path("path").string() + "' is " + what + ", which says where its texels lie",
+                "remove `" + name + "`");
+  }
+
   static LayerKind kindOf(const NodeSetup& setup) {
     LayerKind kind = LayerKind::Color;
     parseLayerKind(setup.parameters.string("kind"), kind);  // the declaration's choices are all valid kinds

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <strata/healpix_pyramid.hpp>
+
 #include "paging/page_assembly.hpp"
 
 namespace strata {
@@ -50,7 +52,27 @@ struct Slot {
   }
 };
 
-Slot assembled(const PositionSource& source, PageKey key, bool wrapX) {
+// Twelve HEALPix faces side by side (strata/healpix_pyramid.hpp), whose texels say where they are.
+class FaceStripSource final : public PositionSource {
+ public:
+  explicit FaceStripSource(int nside)
+      : PositionSource(12 * nside, nside), nside_(nside), pyramid_(healpix::stripPyramid(nside)) {}
+  const PagePyramid& pyramid() const override { return pyramid_; }
+  LevelWindow gridOf(const PageKey& key) const override {
+    const int side = nside_ >> key.level;
+    return {key.level, key.column * kPagePayload / side * side, 0, side, side};
+  }
+  std::optional<glm::ivec2> texelBeside(const PageKey& key, glm::ivec2 texel) const override {
+    const int side = nside_ >> key.level;
+    return healpix::texelAcross(side, key.column * kPagePayload / side, texel);
+  }
+
+ private:
+  int nside_;
+  PagePyramid pyramid_;
+};
+
+Slot assembled(const PageSource& source, PageKey key, bool wrapX) {
   Slot slot;
   paging::assemblePage(source, key, wrapX, slot.bytes);
   return slot;
@@ -62,6 +84,24 @@ TEST(PageAssembly, TheBorderHoldsTheNeighboursEdgeTexels) {
   EXPECT_EQ(slot.at(1, 1), (std::array{512, 512}));       // the payload's first texel
   EXPECT_EQ(slot.at(0, 0), (std::array{511, 511}));       // the north-west neighbour's corner
   EXPECT_EQ(slot.at(513, 513), (std::array{1024, 1024}));  // the south-east neighbour's corner
+}
+
+// Beyond a face's edge the border holds the neighbouring face's texels across that edge on the sphere;
+// beyond a page's edge inside the face, the face's own.
+TEST(PageAssembly, BordersAcrossHealpixFaceEdgesComeFromTheNeighbouringFace) {
+  const FaceStripSource source(1024);
+  for (const PageKey key : {PageKey{0, 2, 0}, PageKey{0, 13, 1}, PageKey{1, 1, 0}, PageKey{1, 11, 0}}) {
+    const Slot slot = assembled(source, key, false);
+    const LevelWindow face = source.gridOf(key);
+    for (int j = 0; j < kPageSide; ++j)
+      for (int i = 0; i < kPageSide; ++i) {
+        const glm::ivec2 at(key.column * kPagePayload + i - 1, key.row * kPagePayload + j - 1);
+        const bool inside = at.x >= face.x && at.x < face.x + face.width && at.y >= 0 && at.y < face.height;
+        const glm::ivec2 expected = inside ? at : healpix::texelAcross(face.width, face.x / face.width, at);
+        ASSERT_EQ(slot.at(i, j), (std::array{expected.x, expected.y}))
+            << "level " << key.level << " page " << key.column << ", " << key.row << " slot texel " << i << ", " << j;
+      }
+  }
 }
 
 TEST(PageAssembly, EdgesOfTheLevelAreClampedWithoutWrap) {

@@ -21,6 +21,7 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <random>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -29,6 +30,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/gl/texture.hpp>
+#include <strata/healpix_pyramid.hpp>
 
 #include "projection_cases.hpp"
 #include "rendering.hpp"
@@ -172,6 +174,36 @@ TEST(GlslLongitudeWrap, RastersFrom0To360Degrees) {
       ASSERT_LE(glm::length(glsl - expected), glslTolerance(*projection, lonlat, glsl))
           << terms << " at " << glm::degrees(lonlat.x) << ", " << glm::degrees(lonlat.y);
     }
+  }
+}
+
+// The strip of a HEALPix pyramid (strata/healpix_pyramid.hpp), on a sphere and an ellipsoid, against its
+// C++ form over random places, leaving out those within kEdgeMargin of a face's edge, which float rounding
+// may put on the other face. Tolerance as above, in strip units (a face is one unit across).
+TEST(GlslHealpixStrip, MatchesTheStripProjection) {
+  headlessContext();
+  for (const Ellipsoid& figure : {kMars, Ellipsoid{6378137.0, 298.257223563}}) {
+    const auto projection = healpix::stripProjection(makeProjection("+proj=healpix", figure));
+    std::mt19937_64 random(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<glm::vec2> lonlats;
+    for (int i = 0; i < 100000; ++i)
+      lonlats.push_back(floatLonlat({std::numbers::pi * (2.0 * unit(random) - 1.0), std::asin(2.0 * unit(random) - 1.0)}));
+    const std::vector<glm::vec3> results = GlslProjection(*projection).evaluate(lonlats);
+    double worstShare = 0.0;
+    int compared = 0;
+    for (std::size_t i = 0; i < lonlats.size(); ++i) {
+      const glm::dvec2 lonlat(lonlats[i]), expected = *projection->forward(lonlat);
+      const double x = expected.x - std::floor(expected.x);
+      if (std::min({x, 1.0 - x, expected.y, 1.0 - expected.y}) < kEdgeMargin) continue;
+      const glm::dvec2 glsl(results[i]);
+      worstShare = std::max(worstShare, glm::length(glsl - expected) / glslTolerance(*projection, lonlat, glsl));
+      ++compared;
+    }
+    std::cout << "HEALPix strip GLSL, a = " << figure.semiMajorAxis << ": worst error / tolerance " << worstShare
+              << " (" << compared << " samples)\n";
+    EXPECT_LE(worstShare, 1.0);
+    EXPECT_GT(compared, 99000);
   }
 }
 

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cstdint>
 
 #include <strata/page_pyramid.hpp>
@@ -6,6 +7,10 @@ namespace strata {
 
 PagePyramid::PagePyramid(int width, int height) : width_(width), height_(height), levels_(1) {
   while (levelWidth(levels_ - 1) > kPagePayload || levelHeight(levels_ - 1) > kPagePayload) ++levels_;
+}
+
+PagePyramid::PagePyramid(int width, int height, int mostLevels) : PagePyramid(width, height) {
+  levels_ = std::clamp(mostLevels, 1, levels_);
 }
 
 int PagePyramid::levelWidth(int level) const {

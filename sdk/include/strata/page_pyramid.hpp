@@ -29,6 +29,8 @@ class PagePyramid {
  public:
   PagePyramid() = default;
   PagePyramid(int width, int height);
+  // The same, stopping after `mostLevels` levels (at least 1) where the pyramid would go on.
+  PagePyramid(int width, int height, int mostLevels);
 
   int width() const { return width_; }
   int height() const { return height_; }

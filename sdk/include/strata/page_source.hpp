@@ -1,7 +1,10 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
+
+#include <glm/vec2.hpp>
 
 #include <strata/page_pyramid.hpp>
 
@@ -38,6 +41,14 @@ class PageSource {
   // (window.width x window.height texels). Called from several loader threads at once. Throws
   // std::exception on a read error: the cache reports it once and keeps the coarser page in place.
   virtual void read(const LevelWindow& window, std::span<std::byte> texels) const = 0;
+
+  // A pyramid whose levels are several grids side by side (the twelve faces of a HEALPix pyramid,
+  // strata/healpix_pyramid.hpp) says which grid page `key` lies on, and which level texel lies on the body
+  // next to a texel one beyond that grid's edge: the cache fills the page's border from there, so that
+  // filtering runs on across the edge. By default a level is one grid, and beyond its edges the border
+  // repeats the edge (or wraps round, for a raster around the body).
+  virtual LevelWindow gridOf(const PageKey& key) const;
+  virtual std::optional<glm::ivec2> texelBeside(const PageKey& key, glm::ivec2 texel) const;
 };
 
 }  // namespace strata

@@ -1,0 +1,61 @@
+#include "healpix_pyramid_file.hpp"
+
+#include <bit>
+#include <charconv>
+#include <string>
+
+#include <strata/crs.hpp>
+#include <strata/healpix_pyramid.hpp>
+
+namespace strata::gdal {
+namespace {
+
+constexpr std::int64_t kMostNside = std::int64_t{1} << 26;  // 12 nside columns must fit an int
+
+std::string item(GDALDataset& dataset, const char* name) {
+  const char* value = dataset.GetMetadataItem(name);
+  return value ? value : "";
+}
+
+[[noreturn]] void fail(GDALDataset& dataset, const SourceLocation& where, const std::string& problem) {
+  throw Error(where, "'" + std::string(dataset.GetDescription()) + "' is marked as a HEALPix pyramid, but " + problem,
+              "write it again with `strata tile INPUT OUTPUT --to healpix`");
+}
+
+std::int64_t nsideOf(GDALDataset& dataset, const SourceLocation& where) {
+  const std::string text = item(dataset, healpix::kNsideItem);
+  std::int64_t nside = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), nside);
+  if (error != std::errc() || end != text.data() + text.size() || nside < healpix::kLeastNside ||
+      nside > kMostNside || !std::has_single_bit(std::uint64_t(nside)))
+    fail(dataset, where, std::string(healpix::kNsideItem) + " '" + text + "' is not a power of two from 512 to 2^26");
+  if (dataset.GetRasterXSize() != 12 * nside || dataset.GetRasterYSize() != nside)
+    fail(dataset, where, "it is " + std::to_string(dataset.GetRasterXSize()) + "x" +
+                             std::to_string(dataset.GetRasterYSize()) + " texels, not 12 faces of nside " +
+                             std::to_string(nside) + " side by side");
+  return nside;
+}
+
+// The planar HEALPix projection of the body, with no central meridian or false origin.
+std::shared_ptr<const Projection> planeOf(GDALDataset& dataset, const PluginRegistry& plugins,
+                                          const SourceLocation& where) {
+  std::shared_ptr<const Projection> plane = projectionOfCrs(plugins, item(dataset, healpix::kFigureItem), where);
+  const std::optional<glm::dvec2> origin = plane->forward({0.0, 0.0});
+  if (plane->type() != "healpix" || !origin || *origin != glm::dvec2(0.0))
+    fail(dataset, where, std::string(healpix::kFigureItem) + " is not a plain +proj=healpix");
+  return plane;
+}
+
+}  // namespace
+
+std::optional<HealpixPyramidFile> healpixPyramidOf(GDALDataset& dataset, const PluginRegistry& plugins,
+                                                   const SourceLocation& where) {
+  if (!dataset.GetMetadataItem(healpix::kNsideItem)) return std::nullopt;
+  const std::int64_t nside = nsideOf(dataset, where);
+  if (item(dataset, healpix::kOrderingItem) != "NESTED")
+    fail(dataset, where, std::string(healpix::kOrderingItem) + " is not NESTED");
+  return HealpixPyramidFile{
+      nside, {healpix::stripProjection(planeOf(dataset, plugins, where)), healpix::stripGeotransform(nside)}};
+}
+
+}  // namespace strata::gdal

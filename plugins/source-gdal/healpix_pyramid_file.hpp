@@ -1,0 +1,24 @@
+#pragma once
+#include <cstdint>
+#include <optional>
+
+#include <gdal_priv.h>
+
+#include <strata/error.hpp>
+#include <strata/plugin_registry.hpp>
+#include <strata/raster_georeference.hpp>
+
+namespace strata::gdal {
+
+// A HEALPix pyramid as its metadata describes it (strata/healpix_pyramid.hpp).
+struct HealpixPyramidFile {
+  std::int64_t nside = 0;
+  RasterGeoreference georeference;  // the strip's projection and geotransform
+};
+
+// What `dataset` says of itself as a HEALPix pyramid; empty for any other raster. Throws strata::Error at
+// `where` for a file that says it is one but whose size or metadata do not agree.
+std::optional<HealpixPyramidFile> healpixPyramidOf(GDALDataset& dataset, const PluginRegistry& plugins,
+                                                   const SourceLocation& where);
+
+}  // namespace strata::gdal

@@ -1,0 +1,56 @@
+#pragma once
+// The HEALPix pyramid that `strata tile --to healpix` writes and source.gdal pages from (issue 6; digest 004
+// section 1.1: twelve base faces, each a quadtree of tiles, NESTED numbering). One Cloud Optimized GeoTIFF
+// holds the twelve faces side by side, face f in columns [f nside, (f + 1) nside), each an nside x nside grid
+// of HEALPix pixels: face f's texel (column, row) is the NESTED pixel f nside^2 + interleave(column,
+// nside - 1 - row) of the HEALPix library at that nside (column bits in the even positions), and holds the
+// value at that pixel's centre. Its 512x512 tiles are pages of the page cache; the one-sample overlap of the
+// paper's tiles is the pages' border, which the cache fills from the neighbouring face on the sphere (see
+// texelAcross), so that filtering is seamless across face edges.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <glm/vec2.hpp>
+
+#include <strata/page_pyramid.hpp>
+#include <strata/projection.hpp>
+
+namespace strata::healpix {
+
+// Metadata items (GDAL's default domain) that mark a file as a HEALPix pyramid and say how to read it.
+inline constexpr const char* kNsideItem = "STRATA_HEALPIX_NSIDE";        // a power of two, at least kLeastNside
+inline constexpr const char* kFigureItem = "STRATA_HEALPIX_CRS";         // "+proj=healpix" and the body's figure
+inline constexpr const char* kOrderingItem = "STRATA_HEALPIX_ORDERING";  // "NESTED"
+
+// The least nside written: a face of one page, so that no page holds texels of two faces.
+inline constexpr std::int64_t kLeastNside = kPagePayload;
+
+// Map coordinates of the strip: x = face + the face point's x, y = the face point's y (see FacePoint), so
+// that the strip's geotransform is (0, 1 / nside, 0, 1, 0, -1 / nside).
+std::array<double, 6> stripGeotransform(std::int64_t nside);
+
+// The strip's pages: levels halve the faces down to faces of one page (kLeastNside), never beyond, so that
+// a page lies on one face at every level.
+PagePyramid stripPyramid(std::int64_t nside);
+
+// For texel `texel` of a strip level whose faces are `side` texels across, lying one texel beyond an edge or
+// a corner of face `face` (column or row -1 or `side` in face texels), the strip texel of the neighbouring
+// face that lies there on the sphere. Across a corner where three faces meet, one of the two faces beside
+// the corner's diagonal.
+glm::ivec2 texelAcross(int side, int face, glm::ivec2 texel);
+
+// Longitude and latitude (radians) to strip map coordinates, and back, through `plane`: the planar HEALPix
+// projection of the body (the CRS of kFigureItem, "+proj=healpix" with no central meridian or false origin),
+// which on an ellipsoid goes through the authalic sphere as PROJ's does. At a whole x, where face f's x = 1
+// edge meets face f + 1's x = 0 edge in the strip though not on the sphere, inverse() takes face f + 1's.
+std::unique_ptr<Projection> stripProjection(std::shared_ptr<const Projection> plane);
+
+// For writing face `face` with GDAL's warper: the central meridian (degrees) of the planar HEALPix CRS
+// "+proj=healpix +lon_0=..." in which the face lies whole, and the face's rotated geotransform there, for
+// nside texels across, in metres of the authalic radius `radius` (Projection::glslMapScale of the plane).
+double faceCentralMeridian(int face);
+std::array<double, 6> facePlaneGeotransform(int face, std::int64_t nside, double radius);
+
+}  // namespace strata::healpix
