@@ -28,8 +28,13 @@ void tile(TilingRequest request) {
   plugins.loadDirectories(defaultPluginDirectories());  // projections from plugins count as registered
   request.progress = terminalProgress();
   const TilingResult result = tileRaster(plugins, request);
-  std::printf("strata: wrote %s (%dx%d, %d overviews, %s%s)\n", request.output.c_str(), result.width, result.height,
-              result.overviews, result.reprojected ? "reprojected to " : "", result.crs.c_str());
+  if (result.nside != 0)
+    std::printf("strata: wrote %s (%dx%d, %d overviews, a HEALPix pyramid of nside %lld (NESTED) on %s)\n",
+                request.output.c_str(), result.width, result.height, result.overviews,
+                static_cast<long long>(result.nside), result.crs.c_str());
+  else
+    std::printf("strata: wrote %s (%dx%d, %d overviews, %s%s)\n", request.output.c_str(), result.width, result.height,
+                result.overviews, result.reprojected ? "reprojected to " : "", result.crs.c_str());
 }
 
 }  // namespace
@@ -41,8 +46,12 @@ void addTileCommand(CLI::App& app, int& exitCode) {
   command->add_option("input", request->input, "the raster to tile")->required();
   command->add_option("output", request->output, "the .tif to write")->required();
   command->add_option("--to", request->target,
-                      "reproject into: equirectangular, polar-north, polar-south, healpix, or a CRS (PROJ string, "
-                      "EPSG:code, WKT); default: keep a CRS Strata samples directly, else the best-suited projection");
+                      "reproject into: equirectangular, polar-north, polar-south, a CRS (PROJ string, EPSG:code, WKT), "
+                      "or healpix: a HEALPix pyramid (NESTED faces side by side; the plane is +proj=healpix); default: "
+                      "keep a CRS Strata samples directly, else the best-suited projection");
+  command->add_option("--nside", request->nside,
+                      "with --to healpix: the faces' resolution, a power of two from 512; default: the least whose "
+                      "texels are no larger than the input's");
   command->add_flag("--overwrite", request->overwrite, "replace the output if it exists");
   command->callback([request, &exitCode] { exitCode = reportingErrors([&] { tile(*request); }); });
 }

@@ -1,14 +1,22 @@
 // End-to-end tests of `strata tile`: rasters in and out through GDAL, checked for the pyramid's layout
-// (512x512 tiles, overviews), the CRS chosen, values kept bit for bit, and errors that say what to do.
+// (512x512 tiles, overviews), the CRS chosen, values kept bit for bit, the HEALPix pyramid's faces, and
+// errors that say what to do.
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
 #include <array>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <numbers>
+#include <random>
 #include <string>
 #include <vector>
+
+#include <strata/healpix.hpp>
+#include <strata/healpix_pyramid.hpp>
 
 #include "strata_command.hpp"
 #include "test_rasters.hpp"
@@ -116,6 +124,229 @@ TEST_F(TileCommand, BadInputsSayWhatIsWrongAndWhatToDo) {
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_TRUE(contains(result.err, "polar-south")) << "the names are listed: " << result.err;
   EXPECT_FALSE(fs::exists(file("c.tif")));
+}
+
+constexpr double kDegree = std::numbers::pi / 180.0;  // radians
+
+// A smooth field on Mars (metres) of longitude and latitude in radians.
+double marsField(double lon, double lat) {
+  return 1000.0 * std::sin(lat) + 500.0 * std::cos(lat) * std::cos(lon - 0.3);
+}
+
+// Bilinear interpolation of a grid of spacing h = 0.5 degrees errs by at most h^2 / 8 (max |f_lonlon| +
+// max |f_latlat|) = (pi / 360)^2 / 8 (500 + 1118) m = 0.0154 m for marsField; Float32 values below 1500 m
+// add at most 1e-4 m. (Up to the poles and across the antimeridian too: strata tile interpolates across them.)
+constexpr double kBilinearTolerance = 0.0155;
+
+// A Float32 longitude/latitude raster on Mars's sphere, `width` x `height` texels of half a degree from
+// (west, north) in degrees, holding marsField at texel centres; no nodata.
+void writeMarsField(const fs::path& file, double west, double north, int width, int height) {
+  writeRasterFile(file,
+                  {"+proj=longlat +R=3396190", {west, 0.5, 0.0, north, 0.0, -0.5}, width, height, 1, GDT_Float32, {}});
+  std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(file.c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
+  ASSERT_TRUE(dataset);
+  std::vector<float> values(std::size_t(width) * std::size_t(height));
+  for (int row = 0; row < height; ++row)
+    for (int column = 0; column < width; ++column)
+      values[std::size_t(row) * width + column] =
+          float(marsField((west + 0.5 * (column + 0.5)) * kDegree, (north - 0.5 * (row + 0.5)) * kDegree));
+  ASSERT_EQ(dataset->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, width, height, values.data(), width, height,
+                                                GDT_Float32, 0, 0),
+            CE_None);
+}
+
+// A texel of a HEALPix pyramid's strip: face, and column and row in the face.
+struct StripTexel {
+  int face, column, row;
+};
+
+// The NESTED pixel a texel holds (strata/healpix_pyramid.hpp): f nside^2 + the bits of the column (even
+// positions) and of nside - 1 - row (odd positions) interleaved.
+std::int64_t nestedPixelOf(std::int64_t nside, StripTexel texel) {
+  const std::int64_t ix = texel.column, iy = nside - 1 - texel.row;
+  std::int64_t bits = 0;
+  for (int bit = 0; bit < 31; ++bit) bits |= ((ix >> bit) & 1) << (2 * bit) | ((iy >> bit) & 1) << (2 * bit + 1);
+  return texel.face * nside * nside + bits;
+}
+
+// The texel holding NESTED pixel `pixel`: the inverse of nestedPixelOf.
+StripTexel stripTexelOf(std::int64_t nside, std::int64_t pixel) {
+  const std::int64_t bits = pixel % (nside * nside);
+  std::int64_t ix = 0, iy = 0;
+  for (int bit = 0; bit < 31; ++bit) {
+    ix |= ((bits >> (2 * bit)) & 1) << bit;
+    iy |= ((bits >> (2 * bit + 1)) & 1) << bit;
+  }
+  return {int(pixel / (nside * nside)), int(ix), int(nside - 1 - iy)};
+}
+
+// A band of a HEALPix pyramid read whole, with its mask (0 where the page cache reads coverage 0).
+struct Strip {
+  std::int64_t nside = 0;
+  std::vector<float> values;
+  std::vector<unsigned char> mask;
+  float at(StripTexel t) const {
+    return values[std::size_t(t.row) * std::size_t(12 * nside) + std::size_t(t.face * nside + t.column)];
+  }
+  bool covered(StripTexel t) const {
+    return mask[std::size_t(t.row) * std::size_t(12 * nside) + std::size_t(t.face * nside + t.column)] != 0;
+  }
+};
+
+Strip readStrip(GDALDataset& dataset, std::int64_t nside) {
+  Strip strip{nside, std::vector<float>(std::size_t(12 * nside * nside)),
+              std::vector<unsigned char>(std::size_t(12 * nside * nside))};
+  GDALRasterBand& band = *dataset.GetRasterBand(1);
+  const int width = int(12 * nside), height = int(nside);
+  EXPECT_EQ(band.RasterIO(GF_Read, 0, 0, width, height, strip.values.data(), width, height, GDT_Float32, 0, 0),
+            CE_None);
+  EXPECT_EQ(
+      band.GetMaskBand()->RasterIO(GF_Read, 0, 0, width, height, strip.mask.data(), width, height, GDT_Byte, 0, 0),
+      CE_None);
+  return strip;
+}
+
+// Texels to check: `count` at random over the strip, and those of places next to both poles and along
+// both sides of the antimeridian.
+std::vector<StripTexel> texelsToCheck(std::int64_t nside, int count) {
+  std::mt19937 random(20261123);
+  std::uniform_int_distribution<std::int64_t> pixel(0, 12 * nside * nside - 1);
+  std::vector<StripTexel> texels;
+  for (int i = 0; i < count; ++i) texels.push_back(stripTexelOf(nside, pixel(random)));
+  for (int face = 0; face < 4; ++face) {
+    texels.push_back({face, int(nside) - 1, 0});      // the north pole is faces 0-3's northern corner
+    texels.push_back({face + 8, 0, int(nside) - 1});  // the south pole faces 8-11's southern corner
+  }
+  for (double lat = -89.9; lat < 90.0; lat += 0.7)
+    for (const double lon : {179.97, -179.97, 179.8, -179.8})
+      texels.push_back(stripTexelOf(nside, healpix::nestedPixel(nside, glm::dvec2(lon, lat) * kDegree)));
+  for (int column = 0; column < nside; column += 7)  // face 6's centres on the antimeridian itself
+    texels.push_back({6, column, int(nside) - 1 - column});
+  return texels;
+}
+
+TEST_F(TileCommand, WritesAHealpixPyramidOfTheTwelveFacesSideBySide) {
+  writeMarsField(file("mars.tif"), -180.0, 90.0, 720, 360);
+  const CommandResult result =
+      run({"tile", file("mars.tif").string(), file("healpix.tif").string(), "--to", "healpix"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "HEALPix pyramid of nside 512 (NESTED)")) << result.out;
+  EXPECT_EQ(result.err, "") << "nothing but the summary when not on a terminal";
+  auto out = openRaster(file("healpix.tif"));
+  ASSERT_TRUE(out);
+  ASSERT_EQ(out->GetRasterXSize(), 6144) << "half-degree texels need the least nside, 512";
+  ASSERT_EQ(out->GetRasterYSize(), 512);
+  int blockWidth = 0, blockHeight = 0;
+  out->GetRasterBand(1)->GetBlockSize(&blockWidth, &blockHeight);
+  EXPECT_EQ(blockWidth, 512);
+  EXPECT_EQ(blockHeight, 512);
+  EXPECT_EQ(out->GetRasterBand(1)->GetRasterDataType(), GDT_Float32);
+  EXPECT_STREQ(out->GetMetadataItem(healpix::kNsideItem), "512");
+  EXPECT_STREQ(out->GetMetadataItem(healpix::kFigureItem), "+proj=healpix +R=3396190");
+  EXPECT_STREQ(out->GetMetadataItem(healpix::kOrderingItem), "NESTED");
+  EXPECT_EQ(out->GetSpatialRef(), nullptr);
+  std::array<double, 6> geotransform{};
+  ASSERT_EQ(out->GetGeoTransform(geotransform.data()), CE_None);
+  EXPECT_EQ(geotransform, healpix::stripGeotransform(512));
+  const Strip strip = readStrip(*out, 512);
+  std::array<int, 12> checkedPerFace{};
+  for (const StripTexel texel : texelsToCheck(512, 3000)) {
+    const glm::dvec2 centre = healpix::nestedPixelCentre(512, nestedPixelOf(512, texel));
+    ASSERT_TRUE(strip.covered(texel)) << "face " << texel.face << " column " << texel.column << " row " << texel.row;
+    EXPECT_NEAR(strip.at(texel), marsField(centre.x, centre.y), kBilinearTolerance)
+        << "face " << texel.face << " column " << texel.column << " row " << texel.row << " at longitude "
+        << centre.x / kDegree << ", latitude " << centre.y / kDegree;
+    ++checkedPerFace[texel.face];
+  }
+  for (int face = 0; face < 12; ++face) EXPECT_GT(checkedPerFace[face], 100) << "face " << face;
+}
+
+TEST_F(TileCommand, AHealpixPyramidMarksWhereTheInputHasNoData) {
+  // 60 x 40 degrees of a Float32 field, without nodata: NaN marks the rest.
+  writeMarsField(file("region.tif"), -20.0, 30.0, 120, 80);
+  CommandResult result =
+      run({"tile", file("region.tif").string(), file("region-healpix.tif").string(), "--to", "healpix"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  auto tiled = openRaster(file("region-healpix.tif"));
+  ASSERT_TRUE(tiled);
+  ASSERT_EQ(tiled->GetRasterXSize(), 6144);
+  const Strip strip = readStrip(*tiled, 512);
+  int inside = 0, outside = 0;
+  for (const StripTexel texel : texelsToCheck(512, 20000)) {
+    const glm::dvec2 c = healpix::nestedPixelCentre(512, nestedPixelOf(512, texel)) / kDegree;
+    if (c.x > -20.0 && c.x < 40.0 && c.y > -10.0 && c.y < 30.0) {
+      if (c.x < -19.75 || c.x > 39.75 || c.y < -9.75 || c.y > 29.75) continue;  // beyond the outer texel centres
+      ++inside;
+      ASSERT_TRUE(strip.covered(texel)) << "longitude " << c.x << ", latitude " << c.y;
+      EXPECT_NEAR(strip.at(texel), marsField(c.x * kDegree, c.y * kDegree), kBilinearTolerance);
+    } else {
+      ++outside;
+      ASSERT_FALSE(strip.covered(texel)) << "longitude " << c.x << ", latitude " << c.y;
+      EXPECT_TRUE(std::isnan(strip.at(texel))) << "not a height of 0 but no data";
+    }
+  }
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(outside, 10000);
+
+  // Integers keep their type with its most negative value as nodata; colour gains an alpha band.
+  const StripTexel covered = stripTexelOf(512, healpix::nestedPixel(512, glm::dvec2(10.0, 10.0) * kDegree));
+  const StripTexel missing = stripTexelOf(512, healpix::nestedPixel(512, glm::dvec2(100.0, -60.0) * kDegree));
+  writeRasterFile(file("int16.tif"),
+                  {"+proj=longlat +R=3396190", {-20.0, 0.5, 0.0, 30.0, 0.0, -0.5}, 120, 80, 1, GDT_Int16, {}});
+  writeRasterFile(file("rgb.tif"),
+                  {"+proj=longlat +R=3396190", {-20.0, 0.5, 0.0, 30.0, 0.0, -0.5}, 120, 80, 3, GDT_Byte, {}});
+  for (const std::string name : {"int16", "rgb"}) {
+    result = run({"tile", file(name + ".tif").string(), file(name + "-healpix.tif").string(), "--to", "healpix"});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    auto pyramid = openRaster(file(name + "-healpix.tif"));
+    ASSERT_TRUE(pyramid);
+    const Strip coverage = readStrip(*pyramid, 512);
+    EXPECT_TRUE(coverage.covered(covered)) << name;
+    EXPECT_FALSE(coverage.covered(missing)) << name;
+  }
+  auto int16 = openRaster(file("int16-healpix.tif"));
+  int hasNodata = 0;
+  EXPECT_EQ(int16->GetRasterBand(1)->GetNoDataValue(&hasNodata), -32768.0);
+  EXPECT_EQ(int16->GetRasterBand(1)->GetRasterDataType(), GDT_Int16);
+  auto rgb = openRaster(file("rgb-healpix.tif"));
+  ASSERT_EQ(rgb->GetRasterCount(), 4);
+  EXPECT_EQ(rgb->GetRasterBand(4)->GetColorInterpretation(), GCI_AlphaBand);
+  EXPECT_EQ(rgb->GetRasterBand(1)->GetRasterDataType(), GDT_Byte);
+}
+
+TEST_F(TileCommand, AHealpixPyramidsNsideIsAPowerOfTwoFrom512) {
+  writeMarsField(file("mars.tif"), -180.0, 90.0, 720, 360);
+  for (const auto& [nside, says] : {std::pair{"1000", "not a power of two"}, {"256", "below 512"}}) {
+    const CommandResult result =
+        run({"tile", file("mars.tif").string(), file("refused.tif").string(), "--to", "healpix", "--nside", nside});
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_TRUE(contains(result.err, std::string("nside ") + nside + " is " + says) && contains(result.err, "1024"))
+        << result.err;
+    EXPECT_FALSE(fs::exists(file("refused.tif")));
+  }
+  CommandResult result = run({"tile", file("mars.tif").string(), file("plane.tif").string(), "--nside", "1024"});
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "--to healpix")) << "--nside is only for the pyramid: " << result.err;
+  result = run({"tile", file("mars.tif").string(), file("fine.tif").string(), "--to", "healpix", "--nside", "1024"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  auto out = openRaster(file("fine.tif"));
+  ASSERT_TRUE(out);
+  EXPECT_EQ(out->GetRasterXSize(), 12288);
+  EXPECT_EQ(out->GetRasterYSize(), 1024);
+  EXPECT_STREQ(out->GetMetadataItem(healpix::kNsideItem), "1024");
+  EXPECT_FALSE(fs::exists(file("fine.tif.strip.tif"))) << "the temporary strip is removed";
+}
+
+TEST_F(TileCommand, TheHealpixPlaneIsACrsLikeAnyOther) {
+  writeRasterFile(file("in.tif"), {"EPSG:4326", {-180.0, 0.5, 0.0, 60.0, 0.0, -0.5}, 720, 240});
+  const CommandResult result =
+      run({"tile", file("in.tif").string(), file("plane.tif").string(), "--to", "+proj=healpix"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "reprojected to +proj=healpix")) << result.out;
+  auto out = openRaster(file("plane.tif"));
+  ASSERT_TRUE(out);
+  EXPECT_EQ(projName(*out), "+proj=healpix");
+  EXPECT_EQ(out->GetMetadataItem(healpix::kNsideItem), nullptr);
 }
 
 }  // namespace

@@ -1,20 +1,20 @@
 // strata tile: any GDAL raster to the Cloud Optimized GeoTIFF pyramid the page cache reads.
 #include <cpl_conv.h>
 #include <gdal_priv.h>
-#include <gdal_utils.h>
 
 #include <memory>
-#include <vector>
 
 #include <strata/crs.hpp>
 #include <strata/tiling.hpp>
 
+#include "tiling/cog_writing.hpp"
+#include "tiling/healpix_tiling.hpp"
 #include "tiling/tile_target.hpp"
 
 namespace strata {
 namespace {
 
-using Dataset = std::unique_ptr<GDALDataset>;
+using tiling::Dataset;
 
 Dataset openInput(const std::filesystem::path& file, const SourceLocation& where) {
   CPLErrorReset();
@@ -37,49 +37,6 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
                 "convert to 8/16/32-bit integers or floats: gdal_translate -ot Float32");
 }
 
-// GDAL's command-line style options for the COG driver.
-std::vector<std::string> translateArguments(const std::string& targetCrs) {
-  std::vector<std::string> arguments{"-of", "COG",
-      "-co", "BLOCKSIZE=512",          // the page size of seed 000 section 4.3.1
-      "-co", "COMPRESS=DEFLATE",       // lossless: heights must come back bit for bit
-      "-co", "OVERVIEWS=IGNORE_EXISTING",
-      "-co", "RESAMPLING=AVERAGE",     // overviews are the mean of what they cover, as the GPU's mips are
-      "-co", "NUM_THREADS=ALL_CPUS",   // compression on every core
-      "-co", "BIGTIFF=IF_SAFER"};
-  if (!targetCrs.empty()) {
-    arguments.insert(arguments.end(), {"-co", "TARGET_SRS=" + targetCrs, "-co", "WARP_RESAMPLING=BILINEAR"});
-  }
-  return arguments;
-}
-
-int progressThunk(double fraction, const char*, void* data) {
-  (*static_cast<std::function<void(double)>*>(data))(fraction);
-  return 1;
-}
-
-Dataset translate(GDALDataset& input, const TilingRequest& request, const std::string& targetCrs,
-                  const SourceLocation& where) {
-  std::vector<std::string> arguments = translateArguments(targetCrs);
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  std::unique_ptr<GDALTranslateOptions, void (*)(GDALTranslateOptions*)> options(
-      GDALTranslateOptionsNew(argv.data(), nullptr), GDALTranslateOptionsFree);
-  std::function<void(double)> progress = request.progress;
-  if (progress) GDALTranslateOptionsSetProgress(options.get(), progressThunk, &progress);
-  // The warper's own threads (the COG driver warps before it tiles).
-  const std::string previousThreads = CPLGetThreadLocalConfigOption("GDAL_NUM_THREADS", "");
-  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", "ALL_CPUS");
-  CPLErrorReset();
-  Dataset output(GDALDataset::FromHandle(
-      GDALTranslate(request.output.c_str(), GDALDataset::ToHandle(&input), options.get(), nullptr)));
-  CPLSetThreadLocalConfigOption("GDAL_NUM_THREADS", previousThreads.empty() ? nullptr : previousThreads.c_str());
-  if (!output)
-    throw Error(where, "GDAL could not write '" + request.output.string() + "': " + CPLGetLastErrorMsg(),
-                "check that the output's folder exists and is writable, and that the disk has room");
-  return output;
-}
-
 }  // namespace
 
 TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& request) {
@@ -93,9 +50,13 @@ TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& requ
   if (!crs || input->GetGeoTransform(geotransform.data()) != CE_None)
     throw Error(where, "'" + request.input.string() + "' has no CRS or no geotransform, so where it lies is unknown",
                 "assign them: gdal_translate -a_srs <CRS> -a_ullr ulx uly lrx lry in.tif out.tif");
+  if (request.target == tiling::kHealpixPyramid) return tiling::tileHealpix(plugins, *input, request);
+  if (request.nside != 0)
+    throw Error({"--nside"}, "--nside is the resolution of a HEALPix pyramid, but the target is not one",
+                "add --to " + std::string(tiling::kHealpixPyramid) + ", or leave --nside out");
   const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input->GetRasterXSize(),
                                                 input->GetRasterYSize(), request.target, {"--to"});
-  Dataset output = translate(*input, request, target, where);
+  Dataset output = tiling::writeCog(*input, request.output, target, request.progress, where);
   return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(),
           output->GetRasterYSize(), output->GetRasterBand(1)->GetOverviewCount()};
 }

@@ -14,13 +14,12 @@ namespace strata::tiling {
 namespace {
 
 // The built-in projections by name, on the raster's ellipsoid. The polar ones are true to scale at the
-// pole, where a cap's data is densest.
+// pole, where a cap's data is densest. kHealpixPyramid is no projection but a layout, which tileRaster writes.
 std::optional<std::string> namedTarget(const std::string& name, const OGRSpatialReference& crs) {
-  const std::string figure = ellipsoidTerms(Ellipsoid{crs.GetSemiMajor(), crs.GetInvFlattening()});
+  const std::string figure = figureTerms(crs);
   if (name == "equirectangular") return "+proj=longlat" + figure;
   if (name == "polar-north") return "+proj=stere +lat_0=90 +lat_ts=90" + figure;
   if (name == "polar-south") return "+proj=stere +lat_0=-90 +lat_ts=-90" + figure;
-  if (name == "healpix") return "+proj=healpix" + figure;
   return std::nullopt;
 }
 
@@ -33,12 +32,6 @@ bool isRegistered(const PluginRegistry& plugins, const OGRSpatialReference& crs)
   }
 }
 
-using Transformation = std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation*)>;
-
-Transformation transformation(const OGRSpatialReference& from, const OGRSpatialReference& to) {
-  return Transformation(OGRCreateCoordinateTransformation(&from, &to), OGRCoordinateTransformation::DestroyCT);
-}
-
 struct Coverage {
   double south = 90.0, north = -90.0;
   bool northPole = false, southPole = false;
@@ -46,13 +39,8 @@ struct Coverage {
 
 // The latitudes a raster covers, from a grid of points over it, and whether a pole lies on it.
 Coverage coverageOf(const OGRSpatialReference& crs, const double t[6], int width, int height) {
-  OGRSpatialReference geographic;
-  geographic.CopyGeogCSFrom(&crs);
-  geographic.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  OGRSpatialReference source(crs);
-  source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   Coverage coverage;
-  auto toGeographic = transformation(source, geographic);
+  const Transformation toGeographic = geographicTransformation(crs);
   if (!toGeographic) return coverage;
   constexpr int kSamples = 33;  // per side; enough to find the extremes of any smooth projection's edges
   for (int i = 0; i < kSamples; ++i)
@@ -62,7 +50,7 @@ Coverage coverageOf(const OGRSpatialReference& crs, const double t[6], int width
       coverage.south = std::min(coverage.south, y);
       coverage.north = std::max(coverage.north, y);
     }
-  auto toSource = transformation(geographic, source);
+  const Transformation toSource(toGeographic->GetInverse(), OGRCoordinateTransformation::DestroyCT);
   for (const double poleLatitude : {90.0, -90.0}) {
     double x = 0.0, y = poleLatitude;
     if (!toSource || !toSource->Transform(1, &x, &y)) continue;
@@ -75,13 +63,27 @@ Coverage coverageOf(const OGRSpatialReference& crs, const double t[6], int width
 
 }  // namespace
 
+Transformation geographicTransformation(const OGRSpatialReference& crs) {
+  OGRSpatialReference geographic;
+  geographic.CopyGeogCSFrom(&crs);
+  geographic.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  OGRSpatialReference source(crs);
+  source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
+  return Transformation(OGRCreateCoordinateTransformation(&source, &geographic), OGRCoordinateTransformation::DestroyCT);
+}
+
+std::string figureTerms(const OGRSpatialReference& crs) {
+  return ellipsoidTerms(Ellipsoid{crs.GetSemiMajor(), crs.GetInvFlattening()});
+}
+
 std::string tileTarget(const PluginRegistry& plugins, const OGRSpatialReference& crs, const double geotransform[6],
                        int width, int height, const std::string& target, const SourceLocation& where) {
   if (!target.empty()) {
     if (auto named = namedTarget(target, crs)) return *named;
     if (target.find_first_of("+:[") == std::string::npos)
       throw Error(where, "'" + target + "' is neither a projection name nor a CRS",
-                  "name one of equirectangular, polar-north, polar-south, healpix, or give a PROJ string or EPSG:code");
+                  "name one of equirectangular, polar-north, polar-south, " + std::string(kHealpixPyramid) +
+                      " (a HEALPix pyramid), or give a PROJ string or EPSG:code");
     projectionOfCrs(plugins, target, where);  // a CRS given by hand must be one the cache can sample
     return target;
   }

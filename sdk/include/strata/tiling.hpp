@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -14,20 +15,24 @@ struct TilingRequest {
   std::filesystem::path input;   // any raster GDAL opens: 1 to 4 bands of 8/16/32-bit integers or floats
   std::filesystem::path output;  // the Cloud Optimized GeoTIFF to write
   // Empty: keep the input's CRS when it is a registered projection, else reproject into the best-suited
-  // one. Otherwise a projection name (equirectangular, polar-north, polar-south, healpix) or any CRS GDAL
-  // reads (WKT, PROJ string, EPSG:code), used as given.
+  // one. Otherwise a projection name (equirectangular, polar-north, polar-south), any CRS GDAL reads (WKT,
+  // PROJ string, EPSG:code), used as given, or "healpix": the HEALPix pyramid of strata/healpix_pyramid.hpp.
   std::string target;
   bool overwrite = false;  // without it an existing output is an error: nothing a user wrote is replaced
   // Called with the fraction done; empty: quiet.
   std::function<void(double)> progress;
+  // The HEALPix pyramid's nside: a power of two from healpix::kLeastNside to 2^26. 0: the least whose
+  // texels are no larger than the input's finest.
+  std::int64_t nside = 0;
 };
 
 struct TilingResult {
-  std::string crs;  // the output's CRS as a PROJ string
+  std::string crs;  // the output's CRS as a PROJ string; a HEALPix pyramid's figure (healpix::kFigureItem)
   bool reprojected = false;
   int width = 0;
   int height = 0;
   int overviews = 0;
+  std::int64_t nside = 0;  // of a HEALPix pyramid; 0 for any other output
 };
 
 // Writes the on-disk pyramid the page cache reads: a Cloud Optimized GeoTIFF with 512x512 internal tiles,
