@@ -261,6 +261,22 @@ TEST_F(TileCommand, WritesAHealpixPyramidOfTheTwelveFacesSideBySide) {
   for (int face = 0; face < 12; ++face) EXPECT_GT(checkedPerFace[face], 100) << "face " << face;
 }
 
+TEST_F(TileCommand, AHealpixPyramidOfAGlobeFromLongitude0IsTheSameAsFromMinus180) {
+  writeMarsField(file("west.tif"), -180.0, 90.0, 720, 360);
+  writeMarsField(file("east.tif"), 0.0, 90.0, 720, 360);
+  for (const std::string name : {"west", "east"}) {
+    const CommandResult result =
+        run({"tile", file(name + ".tif").string(), file(name + "-healpix.tif").string(), "--to", "healpix"});
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+  }
+  auto west = openRaster(file("west-healpix.tif"));
+  auto east = openRaster(file("east-healpix.tif"));
+  ASSERT_TRUE(west && east);
+  const Strip fromWest = readStrip(*west, 512), fromEast = readStrip(*east, 512);
+  EXPECT_EQ(fromWest.mask, fromEast.mask);
+  EXPECT_EQ(fromWest.values, fromEast.values) << "the same texels at the same places";
+}
+
 TEST_F(TileCommand, AHealpixPyramidMarksWhereTheInputHasNoData) {
   // 60 x 40 degrees of a Float32 field, without nodata: NaN marks the rest.
   writeMarsField(file("region.tif"), -20.0, 30.0, 120, 80);
