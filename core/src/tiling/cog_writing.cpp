@@ -14,7 +14,7 @@ std::vector<std::string> translateArguments(const std::string& targetCrs) {
       "-co", "OVERVIEWS=IGNORE_EXISTING",
       "-co", "RESAMPLING=AVERAGE",     // overviews are the mean of what they cover, as the GPU's mips are
       "-co", "NUM_THREADS=ALL_CPUS",   // compression on every core
-      "-co", "BIGTIFF=IF_SAFER"};
+      "-co", "BIGTIFF=IF_SAFER", "-co", "SPARSE_OK=TRUE"};
   if (!targetCrs.empty()) {
     arguments.insert(arguments.end(), {"-co", "TARGET_SRS=" + targetCrs, "-co", "WARP_RESAMPLING=BILINEAR"});
   }

@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <numbers>
 #include <vector>
 
@@ -235,7 +236,8 @@ void warp(GDALDataset& input, GDALDataset& window, const Pyramid& pyramid, const
 
 Dataset createStrip(const std::filesystem::path& file, const Pyramid& pyramid, const SourceLocation& where) {
   CPLStringList options;
-  for (const char* option : {"TILED=YES", "COMPRESS=DEFLATE", "ZLEVEL=1", "BIGTIFF=YES"}) options.AddString(option);
+  for (const char* option : {"TILED=YES", "COMPRESS=DEFLATE", "ZLEVEL=1", "BIGTIFF=YES", "SPARSE_OK=TRUE"})
+    options.AddString(option);
   options.SetNameValue("BLOCKXSIZE", std::to_string(kStripTile).c_str());
   options.SetNameValue("BLOCKYSIZE", std::to_string(kStripTile).c_str());
   if (pyramid.samples.alpha) options.SetNameValue("ALPHA", "YES");
@@ -256,6 +258,19 @@ Dataset createStrip(const std::filesystem::path& file, const Pyramid& pyramid, c
   return strip;
 }
 
+// Whether the warp reached any texel of the window `chunk` holds: whether its coverage band (the alpha band,
+// else band 1) holds anything but "missing".
+bool reached(const Chunk& chunk, std::size_t texels, const Samples& samples) {
+  const std::size_t size = std::size_t(GDALGetDataTypeSizeBytes(samples.type));
+  const double missingValue = samples.alpha ? 0.0 : samples.nodata.front();
+  std::vector<std::byte> missing(size);
+  GDALCopyWords64(&missingValue, GDT_Float64, 0, missing.data(), samples.type, 0, 1);
+  const std::byte* band = chunk.texels.data() + (samples.alpha ? std::size_t(samples.bands - 1) * texels * size : 0);
+  for (std::size_t texel = 0; texel < texels; ++texel)
+    if (std::memcmp(band + texel * size, missing.data(), size) != 0) return true;
+  return false;
+}
+
 void writeFaces(GDALDataset& input, GDALDataset& strip, const Pyramid& pyramid,
                 const std::function<void(double)>& progress, const SourceLocation& where) {
   Chunk chunk = chunkFor(pyramid);
@@ -265,7 +280,10 @@ void writeFaces(GDALDataset& input, GDALDataset& strip, const Pyramid& pyramid,
       const int rows = std::min(chunk.rows, side - row);
       warp(input, *faceWindow(pyramid, face, row, rows, chunk), pyramid, where);
       CPLErrorReset();
-      if (strip.RasterIO(GF_Write, face * side, row, side, rows, chunk.texels.data(), side, rows, pyramid.samples.type,
+      // The strip is sparse: what is not written reads as missing, which spares compressing and writing the
+      // empty faces of an input that covers a small part of the sphere.
+      if (reached(chunk, std::size_t(side) * std::size_t(rows), pyramid.samples) &&
+          strip.RasterIO(GF_Write, face * side, row, side, rows, chunk.texels.data(), side, rows, pyramid.samples.type,
                          pyramid.samples.bands, nullptr, 0, 0, 0, nullptr) != CE_None)
         throw Error(
             where,
