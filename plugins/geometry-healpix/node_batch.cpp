@@ -14,6 +14,8 @@ struct Reference {
   glm::dmat3 planetToLocal;
 };
 
+glm::vec4 facePointOf(const FacePoint& point) { return {float(point.face), float(point.x), float(point.y), 0.0f}; }
+
 GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, const Reference& reference) {
   const double size = std::ldexp(1.0, -key.level);
   const FacePoint centre{key.face, (double(key.ix) + 0.5) * size, (double(key.iy) + 0.5) * size};
@@ -21,7 +23,7 @@ GpuNode gpuNode(const NodeKey& key, const View& view, double radius, int cells, 
   const double longitude = std::remainder(lonlat(centre).x - view.reference.x, 2.0 * std::numbers::pi);
   return {frameAt(centre), glm::vec4(glm::vec3(radius * unit - view.eye), float(size / cells)),
           glm::vec4(glm::vec3(reference.planetToLocal * (unit - reference.unit)), float(longitude)),
-          glm::vec4(glm::vec3(unit), 0.0f)};
+          glm::vec4(glm::vec3(unit), 0.0f), facePointOf(key.at(0.0, 0.0))};
 }
 
 // The outline of a node, 4 cells vertices from corner 0 round to corner 0, each edge from its first corner.
@@ -32,10 +34,11 @@ void appendBoundary(const NodeKey& key, const View& view, double radius, int cel
   for (int edge = 0; edge < 4; ++edge)
     for (int k = 0; k < cells; ++k) {
       const glm::dvec2 lattice(start[edge] + k * step[edge]);
-      const glm::dvec3 unit = unitVector(key.at(lattice.x / cells, lattice.y / cells));
+      const FacePoint point = key.at(lattice.x / cells, lattice.y / cells);
+      const glm::dvec3 unit = unitVector(point);
       boundary.push_back({glm::vec4(glm::vec3(radius * unit - view.eye), 0.0f),
                           glm::vec4(glm::vec3(reference.planetToLocal * (unit - reference.unit)), 0.0f),
-                          glm::vec4(glm::vec3(unit), 0.0f)});
+                          glm::vec4(glm::vec3(unit), 0.0f), facePointOf(point)});
     }
 }
 

@@ -21,6 +21,8 @@ struct GpuNode {
   glm::vec4 centreFromReference;  // xyz: unit vector of the centre minus View::reference's, east-north-up
                                   // there; w: the centre's longitude from the reference, in [-pi, pi]
   glm::vec4 centre;               // xyz: unit vector of the centre, planet-fixed
+  glm::vec4 corner;               // x: the face; y, z: the face point of the node's corner 0, where heights
+                                  // are sampled by face point (Layer::faceSamplingFunction); w: 0
 };
 
 // A vertex on a node's outline, made on the CPU in double from its exact face point. A vertex two nodes share
@@ -32,6 +34,7 @@ struct BoundaryVertex {
   glm::vec4 fromEye;        // xyz: m, planet-fixed, the point on the body's sphere minus the eye
   glm::vec4 fromReference;  // xyz: unit vector minus View::reference's, east-north-up there
   glm::vec4 normal;         // xyz: unit vector, planet-fixed
+  glm::vec4 facePoint;      // x: the node's face; y, z: the face point (exact: dyadic)
 };
 
 // What a frame uploads: a node and a draw of the proxy grid each, the draw's index section chosen by the

@@ -20,12 +20,14 @@ struct HealpixNode {
   vec4 centreFromReference;  // xyz: unit vector minus View::reference's, east-north-up there; w: its longitude
                              // from the reference
   vec4 centre;               // xyz: unit vector, planet-fixed
+  vec4 corner;               // x: face; yz: corner 0's face point
 };
 
 struct BoundaryVertex {
   vec4 fromEye;        // xyz: m, planet-fixed
   vec4 fromReference;  // xyz: unit vector minus View::reference's, east-north-up there
   vec4 normal;         // xyz: unit vector, planet-fixed
+  vec4 facePoint;      // x: face; yz: face point
 };
 
 layout(std430, binding = 0) readonly buffer Nodes { HealpixNode nodes[]; };
@@ -66,11 +68,13 @@ void main() {
   ivec2 lattice = ivec2(gl_VertexID % (gridCells + 1), gl_VertexID / (gridCells + 1));
   int onOutline = boundaryIndex(lattice);
   vec3 fromEye, fromReference, normal;
+  vec3 facePoint = vec3(node.corner.x, node.corner.yz + vec2(lattice) * node.centreFromEye.w);
   if (onOutline >= 0) {
     BoundaryVertex vertex = boundary[int(nodeIndex) * 4 * gridCells + onOutline];
     fromEye = vertex.fromEye.xyz;
     fromReference = vertex.fromReference.xyz;
     normal = vertex.normal.xyz;
+    facePoint = vertex.facePoint.xyz;
   } else {
     vec2 offset = (vec2(lattice) - 0.5 * float(gridCells)) * node.centreFromEye.w;  // exact: dyadic
     vec3 d = healpixOffset(node.frame, offset);
@@ -82,7 +86,11 @@ void main() {
   vec3 shading = normal;
 #ifdef STRATA_HAS_HEIGHT
   float spacing = footprintPerMetre * length(fromEye);
+#ifdef STRATA_HEIGHT_FACE_FUNCTION
+  float h = heightAtFacePoint(facePoint, spacing);  // the layer's texels are the faces: no projection
+#else
   float h = heightAt(lonlat, normal, spacing);
+#endif
   shading = shadingNormal(h, lonlat, normal, spacing);
   fromEye += h * normal;
 #endif

@@ -1,6 +1,7 @@
 // Heights for the geometry generators' compute passes (geometry.icosahedral, geometry.pgm): the height layer
 // sampled at a point given from the reference, and the displaced surface's shading normal. The including
-// program defines STRATA_GEOMETRY_STAGE and STRATA_HEIGHT_FUNCTION, pastes the layer's GLSL before this
+// program defines STRATA_GEOMETRY_STAGE and STRATA_HEIGHT_FUNCTION (and STRATA_HEIGHT_FACE_FUNCTION where the
+// layer's texels are HEALPix faces), pastes the layer's GLSL before this
 // file (strata/height_input.hpp gives both) and declares the uniforms
 //   vec2 referenceLonlat  rad: the point below the eye (View::reference)
 //   float radius          m: the body's, to turn height differences into slopes
@@ -13,6 +14,16 @@ float heightAt(vec2 fromReference, vec3 normal, float spacing) {
   vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
   return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
 }
+
+#ifdef STRATA_HEIGHT_FACE_FUNCTION
+// The height at a HEALPix face point (face, x, y) of a layer whose texels are the faces
+// (Layer::faceSamplingFunction), over a footprint of `spacing` rad: a face is sqrt(pi / 3) rad across, on
+// average.
+float heightAtFacePoint(vec3 point, float spacing) {
+  vec4 sampled = STRATA_HEIGHT_FACE_FUNCTION(point, spacing / sqrt(PI / 3.0));
+  return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
+}
+#endif
 
 // The displaced surface's normal from central differences of the height over one vertex spacing.
 vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {

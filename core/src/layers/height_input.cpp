@@ -66,8 +66,10 @@ void HeightInput::checkLayerWithin() const {
 
 std::map<std::string, std::string> HeightInput::substitutions() const {
   if (!layer_) return {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}};
+  const std::string byFace = layer_->faceSamplingFunction();
   return {{"STRATA_PROGRAM_DEFINES",
-           "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + layer_->samplingFunction()},
+           "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + layer_->samplingFunction() +
+               (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace)},
           {"STRATA_HEIGHT_LAYER_GLSL", layer_->glsl()}};
 }
 

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/healpix_pyramid.hpp>
 #include <strata/projected_raster_layer.hpp>
 
 namespace strata {
@@ -55,6 +56,7 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
   const bool colour = isColour(kind_);
   const std::string value = colour ? "vec4(t.rgb / t.a, t.a)"
                                    : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
+  const std::string coverage = colour ? "t.a" : "t.g";
   return "#include \"strata/projected_raster.glsl\"\n"
          "#include \"" + projection.glslInclude() + "\"\n"
          "uniform vec4 " + p + "_projectionA;\n"
@@ -71,14 +73,32 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
          "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
          "}\n"
+         "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
          "  bool repeatX = " + p + "_repeatX;\n"
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
          "  vec2 uv = at.xy, stepX = " + p + "_step(at, p.lonlat, p.lonlatDx), stepY = " + p + "_step(at, p.lonlat, p.lonlatDy);\n"
-         "  vec4 t = " + filtered + ";\n"
-         "  if (" + (colour ? "t.a" : "t.g") + " <= 0.0) return vec4(0.0);\n"
-         "  return " + value + ";\n"
+         "  return " + p + "_value(" + filtered + ");\n"
+         "}\n" +
+         (faceSamplingFunction().empty() ? "" : faceSamplingGlsl(filtered));
+}
+
+std::string ProjectedRasterLayer::faceSamplingFunction() const {
+  const bool faces = georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType;
+  return faces ? prefix_ + "_face" : "";
+}
+
+// The strip's map coordinates are (face + x, y) of the face point: texture coordinates follow with no
+// projection, and a footprint in face units is one in map units.
+std::string ProjectedRasterLayer::faceSamplingGlsl(const std::string& filtered) const {
+  const std::string& p = prefix_;
+  return "vec4 " + p + "_face(vec3 point, float footprint) {\n"
+         "  vec2 uv = vec2(point.x + min(point.y, kHealpixStripLastX), point.z) * " + p + "_mapToTexture.xz + " + p +
+         "_mapToTexture.yw;\n"
+         "  vec2 stepX = vec2(footprint * " + p + "_mapToTexture.x, 0.0), stepY = vec2(0.0, footprint * " + p + "_mapToTexture.z);\n"
+         "  bool repeatX = false;\n"
+         "  return " + p + "_value(" + filtered + ");\n"
          "}\n";
 }
 

@@ -15,7 +15,7 @@ class StripProjection final : public Projection {
   explicit StripProjection(std::shared_ptr<const Projection> plane)
       : plane_(std::move(plane)), radius_(plane_->glslMapScale()) {}
 
-  std::string type() const override { return "healpix-faces"; }
+  std::string type() const override { return kStripProjectionType; }
   // The plane's: the strip is not a CRS PROJ knows, but its faces are the plane's.
   std::string projString() const override { return plane_->projString(); }
 

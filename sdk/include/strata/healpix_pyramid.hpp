@@ -41,6 +41,9 @@ PagePyramid stripPyramid(std::int64_t nside);
 // the corner's diagonal.
 glm::ivec2 texelAcross(int side, int face, glm::ivec2 texel);
 
+// The type() of the strip's projection.
+inline constexpr const char* kStripProjectionType = "healpix-faces";
+
 // Longitude and latitude (radians) to strip map coordinates, and back, through `plane`: the planar HEALPix
 // projection of the body (the CRS of kFigureItem, "+proj=healpix" with no central meridian or false origin),
 // which on an ellipsoid goes through the authalic sphere as PROJ's does. At a whole x, where face f's x = 1

@@ -40,7 +40,8 @@ class HeightInput {
   void checkLayerWithin() const;
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
-  // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer) and STRATA_HEIGHT_LAYER_GLSL.
+  // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when
+  // it can be sampled by HEALPix face point: Layer::faceSamplingFunction) and STRATA_HEIGHT_LAYER_GLSL.
   std::map<std::string, std::string> substitutions() const;
 
  private:

@@ -33,6 +33,12 @@ class Layer {
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
+  // Layers whose texels are the faces of a HEALPix pyramid (strata/healpix_pyramid.hpp) can also be sampled
+  // by face point, with no projection on the way (geometry.healpix does so):
+  //   vec4 <faceSamplingFunction()>(vec3 point, float footprint)
+  // point = (face, x, y) as healpix::FacePoint has them, footprint = the face-point distance to the next
+  // sample; it returns what samplingFunction() returns. Empty for other layers.
+  virtual std::string faceSamplingFunction() const { return {}; }
 };
 
 // Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.
