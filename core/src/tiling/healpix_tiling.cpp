@@ -73,9 +73,9 @@ std::vector<double> declaredNodata(GDALDataset& input) {
   return nodata;
 }
 
-// The input's alpha band or nodata where it has them; otherwise NaN for floats, an added alpha band for three
-// colour bands (any value of them may be a real colour), and for other integers the least value of a signed
-// type (as -32768 for heights) or the greatest of an unsigned one (0 is as often a real value).
+// The input's alpha band, or else its nodata, where it has them; otherwise NaN for floats, an added alpha
+// band for three colour bands (any value of them may be a real colour), and for other integers the least
+// value of a signed type (as -32768 for heights) or the greatest of an unsigned one (0 is as often real).
 Samples samplesOf(GDALDataset& input) {
   Samples samples;
   GDALRasterBand& first = *input.GetRasterBand(1);
@@ -83,8 +83,9 @@ Samples samplesOf(GDALDataset& input) {
   samples.bands = input.GetRasterCount();
   samples.rgb = samples.bands >= 3 && first.GetColorInterpretation() == GCI_RedBand;
   samples.alpha = input.GetRasterBand(samples.bands)->GetColorInterpretation() == GCI_AlphaBand;
+  if (samples.alpha) return samples;  // the warper reads the input's nodata too, and writes alpha 0 for it
   samples.nodata = declaredNodata(input);
-  if (samples.alpha || !samples.nodata.empty()) return samples;
+  if (!samples.nodata.empty()) return samples;
   if (GDALDataTypeIsFloating(samples.type)) {
     samples.nodata.assign(std::size_t(samples.bands), std::nan(""));
   } else if (samples.bands == 3) {
@@ -171,12 +172,21 @@ void markMissing(GDALDataset& dataset, const Samples& samples) {
   if (samples.alpha) dataset.GetRasterBand(samples.bands)->SetColorInterpretation(GCI_AlphaBand);
 }
 
-// Every texel "not covered" (nodata, or alpha 0) before a warp: GDAL's warper skips the parts of a window
-// that no input texel reaches (SKIP_NOSOURCE, which saves most of the work for a regional input) without
+// The value of a band's texels that the input does not cover: its nodata, or 0 (alpha 0) without.
+double missingValue(const Samples& samples, int band) {
+  return samples.nodata.empty() ? 0.0 : samples.nodata[std::size_t(band)];
+}
+
+// Every texel of `chunk` "not covered", before a warp: GDAL's warper skips the parts of a window that no
+// input texel reaches (SKIP_NOSOURCE, which saves most of the work for a regional input) without
 // initialising them.
-void clearWindow(GDALDataset& window, const Samples& samples) {
-  for (int band = 1; band <= samples.bands; ++band)
-    window.GetRasterBand(band)->Fill(samples.nodata.empty() ? 0.0 : samples.nodata[std::size_t(band) - 1]);
+void clearChunk(Chunk& chunk, std::size_t texels, const Samples& samples) {
+  const std::size_t size = std::size_t(GDALGetDataTypeSizeBytes(samples.type));
+  for (int band = 0; band < samples.bands; ++band) {
+    const double missing = missingValue(samples, band);
+    GDALCopyWords64(&missing, GDT_Float64, 0, chunk.texels.data() + std::size_t(band) * texels * size, samples.type,
+                    int(size), GPtrDiff_t(texels));
+  }
 }
 
 // A MEM dataset over `chunk`'s texels for rows [row, row + rows) of face `face`, in the plane centred on the
@@ -195,7 +205,6 @@ Dataset faceWindow(const Pyramid& pyramid, int face, int row, int rows, Chunk& c
     window->AddBand(pyramid.samples.type, options.List());
   }
   markMissing(*window, pyramid.samples);
-  clearWindow(*window, pyramid.samples);
   OGRSpatialReference plane;
   plane.SetFromUserInput((pyramid.figure + term("lon_0", healpix::faceCentralMeridian(face))).c_str());
   window->SetSpatialRef(&plane);
@@ -262,10 +271,11 @@ Dataset createStrip(const std::filesystem::path& file, const Pyramid& pyramid, c
 // else band 1) holds anything but "missing".
 bool reached(const Chunk& chunk, std::size_t texels, const Samples& samples) {
   const std::size_t size = std::size_t(GDALGetDataTypeSizeBytes(samples.type));
-  const double missingValue = samples.alpha ? 0.0 : samples.nodata.front();
+  const int coverage = samples.alpha ? samples.bands - 1 : 0;
+  const double missingTexel = missingValue(samples, coverage);
   std::vector<std::byte> missing(size);
-  GDALCopyWords64(&missingValue, GDT_Float64, 0, missing.data(), samples.type, 0, 1);
-  const std::byte* band = chunk.texels.data() + (samples.alpha ? std::size_t(samples.bands - 1) * texels * size : 0);
+  GDALCopyWords64(&missingTexel, GDT_Float64, 0, missing.data(), samples.type, 0, 1);
+  const std::byte* band = chunk.texels.data() + std::size_t(coverage) * texels * size;
   for (std::size_t texel = 0; texel < texels; ++texel)
     if (std::memcmp(band + texel * size, missing.data(), size) != 0) return true;
   return false;
@@ -278,6 +288,7 @@ void writeFaces(GDALDataset& input, GDALDataset& strip, const Pyramid& pyramid,
   for (int face = 0; face < 12; ++face)
     for (int row = 0; row < side; row += chunk.rows) {
       const int rows = std::min(chunk.rows, side - row);
+      clearChunk(chunk, std::size_t(side) * std::size_t(rows), pyramid.samples);
       warp(input, *faceWindow(pyramid, face, row, rows, chunk), pyramid, where);
       CPLErrorReset();
       // The strip is sparse: what is not written reads as missing, which spares compressing and writing the
