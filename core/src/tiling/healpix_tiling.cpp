@@ -157,7 +157,8 @@ struct Chunk {
   std::vector<std::byte> texels;
 };
 
-// Whole rows of strip tiles where they fit, so that no compressed tile of the strip is written twice.
+// Rows of a face of about kChunkTexels texels together, whole rows of strip tiles where they fit, so that
+// no compressed tile of the strip is written twice.
 Chunk chunkFor(const Pyramid& pyramid) {
   const std::int64_t rows = std::clamp<std::int64_t>(kChunkTexels / pyramid.nside, 1, pyramid.nside);
   const std::int64_t whole = rows >= kStripTile ? rows / kStripTile * kStripTile : rows;
