@@ -10,7 +10,6 @@
 namespace strata::gdal {
 namespace {
 
-constexpr std::int64_t kMostNside = std::int64_t{1} << 26;  // 12 nside columns must fit an int
 
 std::string item(GDALDataset& dataset, const char* name) {
   const char* value = dataset.GetMetadataItem(name);
@@ -27,7 +26,7 @@ std::int64_t nsideOf(GDALDataset& dataset, const SourceLocation& where) {
   std::int64_t nside = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), nside);
   if (error != std::errc() || end != text.data() + text.size() || nside < healpix::kLeastNside ||
-      nside > kMostNside || !std::has_single_bit(std::uint64_t(nside)))
+      nside > healpix::kMostNside || !std::has_single_bit(std::uint64_t(nside)))
     fail(dataset, where, std::string(healpix::kNsideItem) + " '" + text + "' is not a power of two from 512 to 2^26");
   if (dataset.GetRasterXSize() != 12 * nside || dataset.GetRasterYSize() != nside)
     fail(dataset, where, "it is " + std::to_string(dataset.GetRasterXSize()) + "x" +

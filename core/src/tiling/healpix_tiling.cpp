@@ -28,8 +28,6 @@
 namespace strata::tiling {
 namespace {
 
-// The most: the strip's 12 nside columns fit an int with a factor of two to spare.
-constexpr std::int64_t kMostNside = std::int64_t{1} << 26;
 constexpr std::int64_t kChunkTexels = std::int64_t{64} << 20;  // what one warp holds in memory, at most
 constexpr int kStripTile = 512;                                // the temporary strip's tiles, as the COG's
 constexpr double kFacesShare = 0.6;                            // of the progress; the COG has the rest
@@ -105,7 +103,7 @@ std::int64_t checkedNside(std::int64_t nside) {
     problem = "is not a power of two";
   else if (nside < healpix::kLeastNside)
     problem = "is below " + std::to_string(healpix::kLeastNside) + ", the least: a face must fill a whole page";
-  else if (nside > kMostNside)
+  else if (nside > healpix::kMostNside)
     problem = "is above 2^26, the most: 12 nside texels across must fit GDAL's 32-bit sizes, with room to spare";
   if (problem.empty()) return nside;
   throw Error({"--nside"}, "nside " + std::to_string(nside) + " " + problem,
@@ -144,7 +142,7 @@ double centreTexelMetres(GDALDataset& input, const SourceLocation& where) {
 // The least nside whose face texels are no larger than `inputTexel` (m).
 std::int64_t automaticNside(double inputTexel, double radius, const SourceLocation& where) {
   std::int64_t nside = healpix::kLeastNside;
-  while (faceTexelMetres(radius, nside) > inputTexel && nside < kMostNside) nside *= 2;
+  while (faceTexelMetres(radius, nside) > inputTexel && nside < healpix::kMostNside) nside *= 2;
   if (faceTexelMetres(radius, nside) > inputTexel)
     throw Error(where, "its texels (" + std::to_string(inputTexel) + " m) are finer than the finest HEALPix pyramid's",
                 "choose a coarser resolution: --nside N, a power of two up to 2^26");

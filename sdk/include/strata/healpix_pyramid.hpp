@@ -26,6 +26,8 @@ inline constexpr const char* kOrderingItem = "STRATA_HEALPIX_ORDERING";  // "NES
 
 // The least nside written: a face of one page, so that no page holds texels of two faces.
 inline constexpr std::int64_t kLeastNside = kPagePayload;
+// The greatest: 12 nside columns fit an int, with room to spare.
+inline constexpr std::int64_t kMostNside = std::int64_t{1} << 26;
 
 // Map coordinates of the strip: x = face + the face point's x, y = the face point's y (see FacePoint), so
 // that the strip's geotransform is (0, 1 / nside, 0, 1, 0, -1 / nside).
