@@ -48,7 +48,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_);
+    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_, nodeHeights());
     batch_ = batchNodes(selected, frame.view, radius_, settings_.gridCells);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
@@ -66,6 +66,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 
  private:
   void useSurface(const View& view);
+  NodeHeights nodeHeights() const;
 
   HeightInput heights_;
   double radius_;
@@ -77,6 +78,17 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   double visibilityMs_ = 0.0;
   Framebuffer gbuffer_;
 };
+
+// The height layer's bounds over each node, where it knows them (a HEALPix pyramid's pages' true ranges).
+NodeHeights HealpixGeometry::nodeHeights() const {
+  const Layer* layer = heights_.layer();
+  if (!layer || layer->faceSamplingFunction().empty()) return {};
+  return [layer](const NodeKey& key) -> std::optional<HeightRange> {
+    const std::optional<ValueRange> values = layer->faceNodeValues(key.face, key.level, key.ix, key.iy);
+    if (!values) return std::nullopt;
+    return HeightRange{values->least, values->greatest};
+  };
+}
 
 // The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand
 // 1 / sqrt(threshold) pixels apart, a pixel's angle times that per metre from the eye on the ground.

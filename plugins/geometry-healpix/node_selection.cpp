@@ -72,15 +72,16 @@ double polygonArea(const std::vector<glm::dvec2>& polygon) {
 
 }  // namespace
 
-ShellView::ShellView(const View& view, double radius, HeightRange heights)
+ShellView::ShellView(const View& view, double radius, HeightRange heights, NodeHeights nodeHeights)
     : eye_(view.eye),
       planetToEye_(view.planetToEye),
       near_(view.near),
       focal_(0.5 * double(view.height) / std::tan(0.5 * view.verticalFov)),
       halfScreen_(0.5 * double(view.width), 0.5 * double(view.height)),
       pixelsPerSteradian_(focal_ * focal_ * std::pow(1.0 + glm::dot(halfScreen_, halfScreen_) / (focal_ * focal_), 1.5)),
-      innerRadius_(radius + heights.lowest),
-      outerRadius_(radius + heights.highest) {
+      radius_(radius),
+      heights_(heights),
+      nodeHeights_(std::move(nodeHeights)) {
   const double ty = std::tan(0.5 * view.verticalFov), tx = ty * double(view.width) / double(std::max(1, view.height));
   // Eye space looks down -z: a point is inside when |x| <= tx (-z), |y| <= ty (-z) and -z >= near.
   const std::array<glm::dvec3, 5> eyeNormals{glm::dvec3(1, 0, -tx), glm::dvec3(-1, 0, -tx), glm::dvec3(0, 1, -ty),
@@ -96,8 +97,11 @@ NodeShell ShellView::shellOf(const NodeKey& key) const {
   NodeShell shell;
   const std::array<glm::dvec3, 8> boundary = boundarySamples(key);
   shell.cone = coneAround(unitVector(key.centre()), boundary);
-  shell.innerRadius = innerRadius_;
-  shell.outerRadius = outerRadius_;
+  const std::optional<HeightRange> known = nodeHeights_ ? nodeHeights_(key) : std::nullopt;
+  const HeightRange heights = known.value_or(heights_);
+  const double innerRadius = radius_ + heights.lowest, outerRadius = radius_ + heights.highest;
+  shell.innerRadius = innerRadius;
+  shell.outerRadius = outerRadius;
   const glm::dvec3& n = shell.cone.axis;
   // Tangent axes along the node's x direction (south and west corners to east and north), so that the box
   // fits the node's sides rather than its diagonals.
@@ -107,10 +111,10 @@ NodeShell ShellView::shellOf(const NodeKey& key) const {
   // and clipped to the cone, which holds the node with that margin.
   const double angle = std::min(shell.cone.halfAngle, 0.5 * std::numbers::pi);
   const double sampledSine = std::sin(angle / kConeMargin), coneSine = std::sin(angle);
-  const double widen = (kConeMargin - 1.0) * sampledSine * outerRadius_, clip = coneSine * outerRadius_;
+  const double widen = (kConeMargin - 1.0) * sampledSine * outerRadius, clip = coneSine * outerRadius;
   glm::dvec2 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
   for (const glm::dvec3& u : boundary) {
-    for (const double r : {innerRadius_, outerRadius_}) {
+    for (const double r : {innerRadius, outerRadius}) {
       const glm::dvec2 t(r * glm::dot(u, t1), r * glm::dot(u, t2));
       low = glm::min(low, t);
       high = glm::max(high, t);
@@ -119,7 +123,7 @@ NodeShell ShellView::shellOf(const NodeKey& key) const {
   low = glm::max(low - widen, glm::dvec2(-clip));
   high = glm::min(high + widen, glm::dvec2(clip));
   const double cosine = std::cos(angle);
-  const std::array<double, 2> depths{std::min(innerRadius_ * cosine, outerRadius_ * cosine), outerRadius_};
+  const std::array<double, 2> depths{std::min(innerRadius * cosine, outerRadius * cosine), outerRadius};
   for (std::size_t i = 0; i < 8; ++i) {
     const double a = depths[i & 1], u = (i & 2) ? high.x : low.x, v = (i & 4) ? high.y : low.y;
     shell.box[i] = a * n + u * t1 + v * t2;
@@ -134,9 +138,10 @@ bool ShellView::culled(const NodeShell& shell) const {
     // A micrometre of slack for the rounding of dot(normal, eye) at planet scale (1e-9 m).
     if (farthest - glm::dot(plane.normal, eye_) + plane.offset < -1e-6) return true;
   }
-  const double distance = glm::length(eye_);
-  if (distance <= shell.innerRadius) return false;
-  const double horizon = tangentAngle(shell.innerRadius, distance) + tangentAngle(shell.innerRadius, shell.outerRadius);
+  // The body hides what lies behind it down to its lowest height anywhere, not the node's.
+  const double distance = glm::length(eye_), lowest = radius_ + heights_.lowest;
+  if (distance <= lowest) return false;
+  const double horizon = tangentAngle(lowest, distance) + tangentAngle(lowest, std::max(shell.outerRadius, lowest));
   return angleBetween(shell.cone.axis, eye_ / distance) - shell.cone.halfAngle > horizon;
 }
 
@@ -265,8 +270,8 @@ class VisitedTree {
 }  // namespace
 
 std::vector<SelectedNode> selectNodes(const View& view, double radius, HeightRange heights,
-                                      const SelectionSettings& settings) {
-  const ShellView shells(view, radius, heights);
+                                      const SelectionSettings& settings, const NodeHeights& nodeHeights) {
+  const ShellView shells(view, radius, heights, nodeHeights);
   VisitedTree tree(shells, settings);
   for (int face = 0; face < 12; ++face) tree.traverse(NodeKey{face, 0, 0, 0});
   tree.balance();

@@ -1,4 +1,6 @@
 #pragma once
+#include <functional>
+#include <optional>
 // The CPU half of geometry.healpix's traversal (digest 004 sections 1.4 and 2; docs/healpix.md,
 // "Selection"): which nodes of the twelve quadtrees a view draws, in double.
 #include <array>
@@ -40,15 +42,20 @@ struct NodeShell {
   std::array<glm::dvec3, 8> box;                // corners, m
 };
 
+// The heights over one node where they are known more closely than the body's range (a HEALPix pyramid's
+// pages' true ranges, Layer::faceNodeValues; the paper's per-node boxes, digest 004 section 2); empty: the
+// body's range.
+using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&)>;
+
 // One view's tests of node shells. Culling is exact for the cone's shell, so never removes what the cone
 // holds; the area is the paper's, the projection of a bounding box (digest 004 section 2).
 class ShellView {
  public:
-  ShellView(const View& view, double radius, HeightRange heights);
+  ShellView(const View& view, double radius, HeightRange heights, NodeHeights nodeHeights = {});
 
   NodeShell shellOf(const NodeKey& key) const;
   // Whether the shell lies wholly outside one plane of the frustum (far plane at infinity) or wholly behind
-  // the body, taken as the sphere of the lowest height: a point at radius r is hidden when its angle from
+  // the body, taken as the sphere of the body's lowest height: a point at radius r is hidden when its angle from
   // the eye's direction exceeds acos(r_low / |eye|) + acos(r_low / r) (the tangent rays).
   bool culled(const NodeShell& shell) const;
   // A bound on the pixels the node's terrain covers (digest 004 section 2), the lesser of two:
@@ -77,7 +84,9 @@ class ShellView {
   double near_, focal_;  // focal length in pixels
   glm::dvec2 halfScreen_;  // pixels
   double pixelsPerSteradian_;  // at the screen's corners, the most
-  double innerRadius_, outerRadius_;
+  double radius_;
+  HeightRange heights_;
+  NodeHeights nodeHeights_;
   std::array<Plane, 5> planes_;
 };
 
@@ -87,6 +96,6 @@ class ShellView {
 // neighbours are split until drawn neighbours differ by at most one level, across face edges too, keeping
 // only the visible children of a split node; last the coarser edges are marked. Depth first from face 0.
 std::vector<SelectedNode> selectNodes(const View& view, double radius, HeightRange heights,
-                                      const SelectionSettings& settings);
+                                      const SelectionSettings& settings, const NodeHeights& nodeHeights = {});
 
 }  // namespace strata::healpix

@@ -53,8 +53,12 @@ std::optional<HealpixPyramidFile> healpixPyramidOf(GDALDataset& dataset, const P
   const std::int64_t nside = nsideOf(dataset, where);
   if (item(dataset, healpix::kOrderingItem) != "NESTED")
     fail(dataset, where, std::string(healpix::kOrderingItem) + " is not NESTED");
+  std::optional<healpix::PageRanges> ranges = healpix::PageRanges::fromMetadata(
+      nside, [&](const std::string& name) { return dataset.GetMetadataItem(name.c_str()); });
   return HealpixPyramidFile{
-      nside, {healpix::stripProjection(planeOf(dataset, plugins, where)), healpix::stripGeotransform(nside)}};
+      nside,
+      {healpix::stripProjection(planeOf(dataset, plugins, where)), healpix::stripGeotransform(nside)},
+      ranges ? std::make_shared<const healpix::PageRanges>(std::move(*ranges)) : nullptr};
 }
 
 }  // namespace strata::gdal

@@ -1,10 +1,12 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
+#include <strata/healpix_pyramid.hpp>
 #include <strata/plugin_registry.hpp>
 #include <strata/raster_georeference.hpp>
 
@@ -14,6 +16,7 @@ namespace strata::gdal {
 struct HealpixPyramidFile {
   std::int64_t nside = 0;
   RasterGeoreference georeference;  // the strip's projection and geotransform
+  std::shared_ptr<const healpix::PageRanges> ranges;  // the pages' true ranges, where the file holds them
 };
 
 // What `dataset` says of itself as a HEALPix pyramid; empty for any other raster. Throws strata::Error at

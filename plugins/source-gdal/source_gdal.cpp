@@ -36,6 +36,7 @@ class GdalSource : public Node {
     if (std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where)) {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
+      layer_.setPageRanges(std::move(healpix->ranges));
       source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, healpix->nside);
       return;
     }

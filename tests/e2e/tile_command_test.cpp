@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -259,6 +261,48 @@ TEST_F(TileCommand, WritesAHealpixPyramidOfTheTwelveFacesSideBySide) {
     ++checkedPerFace[texel.face];
   }
   for (int face = 0; face < 12; ++face) EXPECT_GT(checkedPerFace[face], 100) << "face " << face;
+}
+
+// One-channel pyramids carry their pages' true ranges (healpix::PageRanges): every node's holds the texels of
+// the page it lies in, and knows where there is no data.
+TEST_F(TileCommand, AHealpixPyramidOfHeightsCarriesItsPagesTrueRanges) {
+  writeMarsField(file("mars.tif"), -180.0, 90.0, 720, 360);
+  writeMarsField(file("region.tif"), -20.0, 30.0, 120, 80);
+  for (const std::string name : {"mars", "region"})
+    ASSERT_EQ(run({"tile", file(name + ".tif").string(), file(name + "-healpix.tif").string(), "--to", "healpix",
+                   "--nside", "1024"})
+                  .exitCode,
+              0);
+  auto tiled = openRaster(file("mars-healpix.tif"));
+  const auto item = [&](GDALDataset& dataset) {
+    return [&dataset](const std::string& name) { return dataset.GetMetadataItem(name.c_str()); };
+  };
+  const std::optional<healpix::PageRanges> ranges = healpix::PageRanges::fromMetadata(1024, item(*tiled));
+  ASSERT_TRUE(ranges);
+  const Strip strip = readStrip(*tiled, 1024);
+  const auto [least, greatest] = std::ranges::minmax(strip.values);
+  double widths = 0.0;
+  for (int face = 0; face < 12; ++face)
+    for (int iy = 0; iy < 2; ++iy)
+      for (int ix = 0; ix < 2; ++ix) {
+        const healpix::PageRanges::Range range = ranges->overNode(face, 1, ix, iy);  // one level-0 page
+        EXPECT_FALSE(range.uncovered);
+        for (int row = (1 - iy) * 512; row < (2 - iy) * 512; ++row)
+          for (int column = ix * 512; column < (ix + 1) * 512; ++column) {
+            const float value = strip.at({face, column, row});
+            ASSERT_TRUE(value >= range.least && value <= range.greatest) << "face " << face << " node " << ix << ", " << iy;
+          }
+        widths += range.greatest - range.least;
+      }
+  EXPECT_LT(widths / 48.0, 0.8 * (greatest - least)) << "a node's range is its neighbourhood's, not the planet's";
+
+  auto region = openRaster(file("region-healpix.tif"));
+  const std::optional<healpix::PageRanges> regional = healpix::PageRanges::fromMetadata(1024, item(*region));
+  ASSERT_TRUE(regional);
+  const healpix::PageRanges::Range far = regional->overNode(10, 3, 2, 2);  // around longitude 225, latitude -42
+  EXPECT_TRUE(far.uncovered);
+  EXPECT_GT(far.least, far.greatest) << "no data at all there";
+  EXPECT_TRUE(regional->overNode(4, 0, 0, 0).uncovered);  // the region lies in face 4 but does not fill it
 }
 
 TEST_F(TileCommand, AHealpixPyramidOfAGlobeFromLongitude0IsTheSameAsFromMinus180) {

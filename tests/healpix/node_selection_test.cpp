@@ -66,5 +66,35 @@ TEST(NodeSelection, EveryVisiblePointLiesInExactlyOneNode) {
   }
 }
 
+// Per-node heights (a HEALPix pyramid's page ranges, Layer::faceNodeValues) in place of one global range: 5 km
+// above ground whose heights reach +-240 km somewhere (procedural.yaml's relief exaggerated 20 times) but lie
+// within +-2 km here, the shells near the eye shrink from columns 480 km tall to 4 km, and far fewer nodes
+// are drawn; every ray that meets the ground still lands in exactly one node.
+TEST(NodeSelection, PerNodeHeightsRefineOnlyWhatTheViewNeeds) {
+  const HeightRange global{-240000.0, 240000.0}, local{-2000.0, 2000.0};
+  const View view = makeView(Body{"Earth", kEarthRadius}, {20.0, 30.0, 5000.0, 60.0, 70.0, 45.0}, kWidth, kHeight);
+  const std::vector<SelectedNode> coarse = selectNodes(view, kEarthRadius, global, {});
+  const NodeHeights known = [&](const NodeKey&) -> std::optional<HeightRange> { return local; };
+  const std::vector<SelectedNode> fine = selectNodes(view, kEarthRadius, global, {}, known);
+  std::printf("5 km up, heights +-240 km: %zu nodes; known to lie within +-2 km: %zu nodes\n", coarse.size(), fine.size());
+  EXPECT_LT(fine.size() * 4, coarse.size());
+  const NodeHeights unknown = [](const NodeKey&) -> std::optional<HeightRange> { return std::nullopt; };
+  EXPECT_EQ(selectNodes(view, kEarthRadius, global, {}, unknown).size(), coarse.size());
+  int seen = 0;
+  for (int i = 0; i < 97; ++i)
+    for (int j = 0; j < 55; ++j) {
+      const auto point = surfaceAt(view, 0.5 + (kWidth - 1.0) * i / 96.0, 0.5 + (kHeight - 1.0) * j / 54.0,
+                                   kEarthRadius + local.lowest);
+      if (!point) continue;
+      ++seen;
+      const glm::dvec3 u = glm::normalize(*point);
+      const FacePoint place = facePoint({std::atan2(u.y, u.x), std::atan2(u.z, std::hypot(u.x, u.y))});
+      int holding = 0;
+      for (const SelectedNode& node : fine) holding += node.key.holds(place);
+      ASSERT_EQ(holding, 1) << "ray " << i << ", " << j;
+    }
+  EXPECT_GT(seen, 1000);
+}
+
 }  // namespace
 }  // namespace strata::healpix

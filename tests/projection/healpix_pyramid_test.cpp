@@ -7,7 +7,9 @@
 
 #include <chealpix.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
 
@@ -131,6 +133,80 @@ TEST(HealpixPyramid, TexelsAcrossFaceEdgesAreTheNeighbouringPixels) {
           }
           ASSERT_TRUE(returns) << "side " << side << " face " << face << " texel " << inside.x << ", " << inside.y;
         }
+  }
+}
+
+// Page ranges of a pyramid of `nside` whose level-0 page i holds the single value i, page 5 some texels of no data.
+std::vector<PageRanges::Range> numberedPages(std::int64_t nside) {
+  const std::int64_t pages = 12 * (nside / 512) * (nside / 512);
+  std::vector<PageRanges::Range> finest;
+  for (std::int64_t i = 0; i < pages; ++i) finest.push_back({float(i), float(i), i == 5});
+  return finest;
+}
+
+bool holds(const PageRanges::Range& range, float value) { return range.least <= value && value <= range.greatest; }
+
+// The unit vector of the centre of level-0 page (column, row) of a pyramid of nside 1024 (two pages a face side).
+glm::dvec3 pageCentre(glm::ivec2 page) {
+  const int face = page.x / 2;
+  return unitVector({face, (page.x - 2 * face + 0.5) / 2.0, 1.0 - (page.y + 0.5) / 2.0});
+}
+
+// Each level-0 page holds its centre's angle from one page's centre: that page's node ranges hold the angles of
+// it and its eight neighbours (across face edges too), and none of the pages far away.
+TEST(HealpixPageRanges, BoundANodesPageAndItsNeighbours) {
+  for (int face = 0; face < 12; ++face) {
+    const glm::ivec2 page(face * 2 + 1, 0);  // x high, y high in the face
+    std::vector<PageRanges::Range> finest;
+    for (int row = 0; row < 2; ++row)
+      for (int column = 0; column < 24; ++column) {
+        const float angle = float(std::acos(std::clamp(glm::dot(pageCentre({column, row}), pageCentre(page)), -1.0, 1.0)));
+        finest.push_back({angle, angle, false});
+      }
+    const PageRanges ranges(1024, finest);
+    for (int level : {1, 4}) {
+      const std::int64_t last = (std::int64_t{1} << level) - 1;
+      const PageRanges::Range range = ranges.overNode(face, level, last, last);
+      const auto angleOf = [&](glm::ivec2 p) { return finest[std::size_t(p.y * 24 + p.x)].least; };
+      for (const glm::ivec2 neighbour : {page, page - glm::ivec2(1, 0), page + glm::ivec2(0, 1), page - glm::ivec2(1, -1)})
+        EXPECT_TRUE(holds(range, angleOf(neighbour))) << "face " << face;
+      for (const glm::ivec2 beyond : {page + glm::ivec2(1, 0), page - glm::ivec2(0, 1), page + glm::ivec2(1, -1)})
+        EXPECT_TRUE(holds(range, angleOf(texelAcross(2, face, beyond)))) << "face " << face;
+      EXPECT_LT(range.greatest, 1.3f) << "face " << face;  // a page is about half a radian across
+    }
+  }
+}
+
+// Face 0's whole-face node holds its own four pages, and knows of the texels of no data on face 2's page 5,
+// which touches it at the pole.
+TEST(HealpixPageRanges, AFaceHoldsItsPagesAndWhatTouchesIt) {
+  const PageRanges ranges(1024, numberedPages(1024));
+  const PageRanges::Range whole = ranges.overNode(0, 0, 0, 0);
+  for (const float value : {0.0f, 1.0f, 24.0f, 25.0f}) EXPECT_TRUE(holds(whole, value));
+  EXPECT_TRUE(whole.uncovered);
+  EXPECT_FALSE(ranges.overNode(8, 0, 0, 0).uncovered);  // face 8 lies far from page 5
+}
+
+TEST(HealpixPageRanges, SurviveTheFilesMetadata) {
+  for (const std::int64_t nside : {std::int64_t{1024}, std::int64_t{512} << 7}) {
+    const PageRanges ranges(nside, numberedPages(nside));
+    std::map<std::string, std::string> items;
+    for (const auto& [name, value] : ranges.metadataItems()) items[name] = value;
+    EXPECT_EQ(items.size(), nside == 1024 ? 2u : 7u) << "levels with at most kMostStoredPages pages";
+    const std::optional<PageRanges> read = PageRanges::fromMetadata(nside, [&](const std::string& name) {
+      return items.contains(name) ? items.at(name).c_str() : nullptr;
+    });
+    ASSERT_TRUE(read);
+    for (int level = 0; level < 10; ++level)
+      for (const std::int64_t i : {std::int64_t{0}, (std::int64_t{1} << level) - 1}) {
+        const PageRanges::Range a = ranges.overNode(7, level, i, 0), b = read->overNode(7, level, i, 0);
+        ASSERT_EQ(a.least, b.least);
+        ASSERT_EQ(a.greatest, b.greatest);
+        ASSERT_EQ(a.uncovered, b.uncovered);
+      }
+    EXPECT_FALSE(PageRanges::fromMetadata(2 * nside, [&](const std::string& name) {
+      return items.contains(name) ? items.at(name).c_str() : nullptr;
+    })) << "ranges of another nside";
   }
 }
 

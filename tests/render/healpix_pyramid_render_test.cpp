@@ -1,24 +1,24 @@
 // A HEALPix pyramid (strata/healpix_pyramid.hpp) read by every generator (issue 6): heights of one smooth
-// field, once in a pyramid of nside 512 (values at the NESTED pixels' centres) and once in a global
-// longitude/latitude raster of 4096 x 2048, give the same planet. geometry.icosahedral and geometry.pgm read
-// the pyramid through the strip's projection; geometry.healpix reads it by face point, with no projection
-// (Layer::faceSamplingFunction). Views: the whole planet; a face corner where three faces meet (lon 0, lat
-// asin(2/3)) from 300 km and 20 km, tilted; the north pole, where four do, from 300 km: pages meet across
-// face edges there. The field is exaggerated 20 times, as in generator_agreement_test.cpp, and the colour
-// layer is the test checkerboard, whose cell edges show where each mesh puts the ground.
+// field in a global longitude/latitude raster of 4096 x 2048, and in the pyramid of nside 512 that `strata
+// tile --to healpix` makes of it, give the same planet. geometry.icosahedral and geometry.pgm read the
+// pyramid through the strip's projection; geometry.healpix reads it by face point, with no projection
+// (Layer::faceSamplingFunction), and bounds its nodes by the pyramid's page ranges (Layer::faceNodeValues).
+// Views: the whole planet; a face corner where three faces meet (lon 0, lat asin(2/3)) from 300 km and 20 km,
+// tilted; the north pole, where four do, from 300 km: pages meet across face edges there. The field is
+// exaggerated 20 times, as in generator_agreement_test.cpp, and the colour layer is the test checkerboard,
+// whose cell edges show where each mesh puts the ground.
 //
-// Both rasters sample the field about as finely (0.115 and 0.088 degrees) and its shortest wavelength is
-// over 40 degrees, so bilinear interpolation of either departs from it by under 1e-5 of its amplitude: the
-// images should differ only where the meshes' vertices fall differently on the slopes, and near the pole,
-// where the longitude/latitude raster's texels narrow to slivers. Measured on llvmpipe, in 8-bit levels over
-// the three channels: mean differences 0.00 to 0.01 levels and at most 0.01% of the pixels beyond 16, except
-// over the pole: 0.33 to 0.66 levels, 0.43 to 0.90%; no pixel covered in one image only. Tolerances: a mean
-// of 1 level, 1.5% beyond 16, and the outline of the planet and its mountains (pixels covered in one image
-// only) moved at no more than 10 pixels; none emptied inside the planet, as a crack along a face edge would
-// be. Halving the heights geometry.healpix reads by face point empties 15 pixels and moves the outline.
+// Both rasters sample the field about as finely (0.088 and 0.115 degrees) and its shortest wavelength is
+// over 40 degrees: the images should differ only where the meshes' vertices fall differently on the slopes,
+// where the raster's coarser levels (the pyramid has one) are sampled, and near the pole, where the
+// raster's texels narrow to slivers. Measured on llvmpipe, in 8-bit levels over the three channels: mean
+// differences 0.01 to 0.08 levels and at most 0.01% of the pixels beyond 16, except over the pole: 0.33 to
+// 0.65 levels, 0.42 to 0.90%; the outline (pixels covered in one image only) moved at no more than 6 pixels,
+// all geometry.healpix's, on the limb. Tolerances: a mean of 1 level, 1.5% beyond 16, the outline moved at
+// no more than 10 pixels, and no pixel emptied inside the planet, as a crack along a face edge would be:
+// sampled 2^-19 of a face inside the edge, as the strip's projection does, geometry.healpix left one over
+// the pole, where the field changes fastest across the faces' edges.
 #include <gtest/gtest.h>
-
-#include <gdal_priv.h>
 
 #include <cmath>
 #include <cstdio>
@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/healpix.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin_registry.hpp>
+#include <strata/tiling.hpp>
 
 #include "rendering.hpp"
 #include "temporary_directory.hpp"
@@ -48,27 +48,10 @@ double field(double lon, double lat) {
   return 4000.0 * std::sin(3.0 * lon + 1.0) * std::cos(2.0 * lat) + 1500.0 * std::sin(7.0 * lon) * std::sin(5.0 * lat + 0.3);
 }
 
-void writePyramid(const std::filesystem::path& file) {
-  GDALAllRegister();
-  const char* options[] = {"TILED=YES", "BLOCKXSIZE=512", "BLOCKYSIZE=512", "COMPRESS=DEFLATE", nullptr};
-  std::unique_ptr<GDALDataset> dataset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      file.c_str(), 12 * kNside, kNside, 1, GDT_Float32, const_cast<char**>(options)));
-  std::array<double, 6> geotransform = healpix::stripGeotransform(kNside);
-  dataset->SetGeoTransform(geotransform.data());
-  dataset->SetMetadataItem(healpix::kNsideItem, std::to_string(kNside).c_str());
-  dataset->SetMetadataItem(healpix::kFigureItem, "+proj=healpix +R=3396190");
-  dataset->SetMetadataItem(healpix::kOrderingItem, "NESTED");
-  std::vector<float> row(12 * kNside);
-  for (int y = 0; y < kNside; ++y) {
-    for (int x = 0; x < 12 * kNside; ++x) {
-      const int face = x / kNside;
-      const glm::dvec2 lonlat = healpix::lonlat({face, (x - face * kNside + 0.5) / kNside, 1.0 - (y + 0.5) / kNside});
-      row[std::size_t(x)] = float(field(lonlat.x, lonlat.y));
-    }
-    if (dataset->GetRasterBand(1)->RasterIO(GF_Write, 0, y, 12 * kNside, 1, row.data(), 12 * kNside, 1, GDT_Float32,
-                                            0, 0) != CE_None)
-      throw std::runtime_error("cannot write " + file.string());
-  }
+// The pyramid `strata tile --to healpix` makes of the raster, with its pages' true ranges.
+void tilePyramid(const std::filesystem::path& raster, const std::filesystem::path& pyramid) {
+  const PluginRegistry plugins;
+  tileRaster(plugins, {.input = raster, .output = pyramid, .target = "healpix", .nside = kNside});
 }
 
 void writeLongitudeLatitude(const std::filesystem::path& file) {
@@ -129,8 +112,8 @@ class HealpixPyramidHeights : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(HealpixPyramidHeights, GiveThePlanetTheLongitudeLatitudeRasterGives) {
   TemporaryDirectory directory;
-  writePyramid(directory.path() / "pyramid.tif");
   writeLongitudeLatitude(directory.path() / "raster.tif");
+  tilePyramid(directory.path() / "raster.tif", directory.path() / "pyramid.tif");
   writeCheckerboard(directory.path() / "checkerboard.tif");
   auto engine = makeEngine();
   const double corner = std::asin(2.0 / 3.0) * 180.0 / std::numbers::pi;
@@ -142,13 +125,16 @@ TEST_P(HealpixPyramidHeights, GiveThePlanetTheLongitudeLatitudeRasterGives) {
     // pgm's third frame has its primary sphere from the least visible height; the others need one frame.
     const int frames = GetParam() == "geometry.pgm" ? 3 : 1;
     const Image pyramid = renderFrames(*engine, camera, kWidth, kHeight, frames);
+    const int pyramidNodes = engine->geometryStatistics().patches;
     engine->load(directory.write("raster.yaml", pipeline(GetParam(), directory.path() / "raster.tif")));
     const Image raster = renderFrames(*engine, camera, kWidth, kHeight, frames);
+    const int rasterNodes = engine->geometryStatistics().patches;
     const Comparison comparison = compare(pyramid, raster);
     std::printf("%s at %.0f, %.1f, %8.0f m up: %d pixels compared, mean difference %.2f levels, %.2f%% differ by "
-                "more than %d, %d emptied, outline moved at %d\n",
+                "more than %d, %d emptied, outline moved at %d; %d nodes or patches, %d from the raster\n",
                 GetParam().c_str(), camera.lon, camera.lat, camera.altitude, comparison.compared,
-                comparison.meanDifference, 100.0 * comparison.largeShare, kLargeDifference, comparison.emptied, comparison.outlineMoved);
+                comparison.meanDifference, 100.0 * comparison.largeShare, kLargeDifference, comparison.emptied,
+                comparison.outlineMoved, pyramidNodes, rasterNodes);
     EXPECT_GT(comparison.compared, kWidth * kHeight / 10);
     EXPECT_LT(comparison.meanDifference, kMeanTolerance);
     EXPECT_LT(comparison.largeShare, kLargeTolerance);

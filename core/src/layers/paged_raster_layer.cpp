@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <strata/gl/shader_program.hpp>
 #include <strata/paged_raster_layer.hpp>
 
@@ -22,7 +24,32 @@ std::string PagedRasterLayer::glsl() const {
                       "uniform int " + p + "_levels;\n"
                       "uniform ivec2 " + p + "_size;\n",
                       "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p +
-                          "_indexBase, " + p + "_levels, " + p + "_size, uv, stepX, stepY, repeatX)");
+                          "_indexBase, " + p + "_levels, " + p + "_size, uv, stepX, stepY, repeatX)") +
+         (onHealpixFaces() ? faceSamplingGlsl() : "");
+}
+
+std::string PagedRasterLayer::faceSamplingFunction() const { return onHealpixFaces() ? prefix() + "_face" : ""; }
+
+// Texel positions straight from the face point, in level-0 texels of the strip (nside = its height): exact for
+// the dyadic face points geometry.healpix makes, so that two nodes sharing a vertex on a face edge, each in its
+// own face, filter the same texels with the same weights (its own edge texel and the border's, half and half).
+std::string PagedRasterLayer::faceSamplingGlsl() const {
+  const std::string& p = prefix();
+  return "vec4 " + p + "_face(vec3 point, float footprint) {\n"
+         "  float nside = float(" + p + "_size.y);\n"
+         "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
+         "  return " + p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + p +
+         "_indexBase, " + p + "_levels, " + p + "_size, texel, footprint * nside, int(point.x)));\n"
+         "}\n";
+}
+
+std::optional<ValueRange> PagedRasterLayer::faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const {
+  if (!pageRanges_) return std::nullopt;
+  const healpix::PageRanges::Range raw = pageRanges_->overNode(face, level, ix, iy);
+  if (raw.least > raw.greatest) return ValueRange{};  // no data at all: the sphere
+  ValueRange values = transformed(raw.least, raw.greatest);
+  if (raw.uncovered) values = {std::min(values.least, 0.0), std::max(values.greatest, 0.0)};
+  return values;
 }
 
 void PagedRasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {

@@ -38,7 +38,11 @@ void ProjectedRasterLayer::setValueTransform(double scale, double offset) {
 
 std::optional<ValueRange> ProjectedRasterLayer::valueRange() const {
   if (!rawRange_ || isColour(kind_)) return std::nullopt;
-  const double a = rawRange_->least * scale_ + offset_, b = rawRange_->greatest * scale_ + offset_;
+  return transformed(rawRange_->least, rawRange_->greatest);
+}
+
+ValueRange ProjectedRasterLayer::transformed(double rawLeast, double rawGreatest) const {
+  const double a = rawLeast * scale_ + offset_, b = rawGreatest * scale_ + offset_;
   return ValueRange{std::min(a, b), std::max(a, b)};  // a negative scale turns the range over
 }
 
@@ -80,26 +84,11 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
          "  vec2 uv = at.xy, stepX = " + p + "_step(at, p.lonlat, p.lonlatDx), stepY = " + p + "_step(at, p.lonlat, p.lonlatDy);\n"
          "  return " + p + "_value(" + filtered + ");\n"
-         "}\n" +
-         (faceSamplingFunction().empty() ? "" : faceSamplingGlsl(filtered));
-}
-
-std::string ProjectedRasterLayer::faceSamplingFunction() const {
-  const bool faces = georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType;
-  return faces ? prefix_ + "_face" : "";
-}
-
-// The strip's map coordinates are (face + x, y) of the face point: texture coordinates follow with no
-// projection, and a footprint in face units is one in map units.
-std::string ProjectedRasterLayer::faceSamplingGlsl(const std::string& filtered) const {
-  const std::string& p = prefix_;
-  return "vec4 " + p + "_face(vec3 point, float footprint) {\n"
-         "  vec2 uv = vec2(point.x + min(point.y, kHealpixStripLastX), point.z) * " + p + "_mapToTexture.xz + " + p +
-         "_mapToTexture.yw;\n"
-         "  vec2 stepX = vec2(footprint * " + p + "_mapToTexture.x, 0.0), stepY = vec2(0.0, footprint * " + p + "_mapToTexture.z);\n"
-         "  bool repeatX = false;\n"
-         "  return " + p + "_value(" + filtered + ");\n"
          "}\n";
+}
+
+bool ProjectedRasterLayer::onHealpixFaces() const {
+  return georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType;
 }
 
 void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {

@@ -23,6 +23,7 @@
 #include "projection/projection_terms.hpp"
 #include "tiling/cog_writing.hpp"
 #include "tiling/globe_wrapping.hpp"
+#include "tiling/page_range_scan.hpp"
 #include "tiling/tile_target.hpp"
 
 namespace strata::tiling {
@@ -326,6 +327,10 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   Dataset faces = createStrip(strip.path, pyramid, where);
   const Dataset wrapped = wrapAroundGlobe(input);
   writeFaces(wrapped ? *wrapped : input, *faces, pyramid, request.progress, where);
+  // One-channel pyramids (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes.
+  if (pyramid.samples.bands == 1)
+    for (const auto& [name, value] : scanPageRanges(*faces, nside).metadataItems())
+      faces->SetMetadataItem(name.c_str(), value.c_str());
   std::function<void(double)> progress;
   if (request.progress)
     progress = [&](double fraction) { request.progress(kFacesShare + (1.0 - kFacesShare) * fraction); };

@@ -9,8 +9,12 @@
 // texelAcross), so that filtering is seamless across face edges.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
@@ -57,5 +61,44 @@ std::unique_ptr<Projection> stripProjection(std::shared_ptr<const Projection> pl
 // nside texels across, in metres of the authalic radius `radius` (Projection::glslMapScale of the plane).
 double faceCentralMeridian(int face);
 std::array<double, 6> facePlaneGeotransform(int face, std::int64_t nside, double radius);
+
+// True least and greatest values of a one-channel HEALPix pyramid per page, which `strata tile` computes at full
+// resolution and stores in the file, so that geometry.healpix bounds each node's heights by its data rather than
+// by one global range (digest 004 section 2: the paper's per-node boxes). Overview pages hold averages, whose
+// range lies inside their texels' rather than around it, so the ranges cannot come from the overviews.
+class PageRanges {
+ public:
+  struct Range {
+    float least = 0.0f;     // raw values (before a layer's scale and offset); least > greatest: none held
+    float greatest = 0.0f;
+    bool uncovered = false;  // some texel holds no data
+  };
+
+  // From the ranges of the pages of level 0, row-major over the strip (12 nside / 512 a row): each level's
+  // range of a page is widened to its eight neighbours' on the sphere (across face edges too), so that it
+  // bounds whatever filtering reads for points of the page (bilinear reads one texel beyond it, a coarser
+  // level's texels average a little beyond it).
+  PageRanges(std::int64_t nside, const std::vector<Range>& finest);
+
+  // The items that store the ranges in the file's metadata: those of the levels with at most kMostStoredPages
+  // pages, finer ones being bounded by their ancestors'. And the ranges read back from them (`item` gives an
+  // item's value, or null); empty when the file has none, or they do not fit its nside.
+  std::vector<std::pair<std::string, std::string>> metadataItems() const;
+  static std::optional<PageRanges> fromMetadata(std::int64_t nside,
+                                                const std::function<const char*(const std::string&)>& item);
+
+  // The widened range of the finest stored page holding node (level, ix, iy) of face `face`'s quadtree (2^level
+  // nodes a side, ix along x, iy along y, as geometry.healpix numbers them).
+  Range overNode(int face, int level, std::int64_t ix, std::int64_t iy) const;
+
+  static constexpr std::size_t kMostStoredPages = 12 * 64 * 64;  // 576 KiB of metadata at most
+
+ private:
+  PageRanges() = default;
+
+  std::int64_t nside_ = 0;
+  std::vector<std::vector<Range>> levels_;  // by level of the pyramid, finest stored first; widened
+  int finestStored_ = 0;                    // the pyramid level of levels_[0]
+};
 
 }  // namespace strata::healpix

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <optional>
 #include <string>
 
@@ -39,6 +40,14 @@ class Layer {
   // point = (face, x, y) as healpix::FacePoint has them, footprint = the face-point distance to the next
   // sample; it returns what samplingFunction() returns. Empty for other layers.
   virtual std::string faceSamplingFunction() const { return {}; }
+  // Such layers may also bound their values over node (level, ix, iy) of base face `face`'s quadtree (2^level
+  // nodes a side, ix along x, iy along y, as geometry.healpix numbers them): bounds of whatever sampling reads
+  // for its points, 0 included where some of it holds no data (generators take the sphere there). Empty
+  // where the layer does not know them.
+  virtual std::optional<ValueRange> faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const {
+    (void)face, (void)level, (void)ix, (void)iy;
+    return std::nullopt;
+  }
 };
 
 // Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.

@@ -2,6 +2,7 @@
 #include <memory>
 #include <string>
 
+#include <strata/healpix_pyramid.hpp>
 #include <strata/page_cache.hpp>
 #include <strata/projected_raster_layer.hpp>
 
@@ -20,11 +21,20 @@ class PagedRasterLayer : public ProjectedRasterLayer {
   void attach(PageCache& cache, std::shared_ptr<const PageSource> source, RasterGeoreference georeference);
 
   std::string glsl() const override;
+  // On a HEALPix pyramid's faces: sampled by face point, with no projection (see Layer).
+  std::string faceSamplingFunction() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
 
+  // A HEALPix pyramid's pages' true ranges (strata/healpix_pyramid.hpp), which faceNodeValues() reads.
+  void setPageRanges(std::shared_ptr<const healpix::PageRanges> ranges) { pageRanges_ = std::move(ranges); }
+  std::optional<ValueRange> faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const override;
+
  private:
+  std::string faceSamplingGlsl() const;
+
   PageCache* cache_ = nullptr;
   PagedLayerPlacement placement_;
+  std::shared_ptr<const healpix::PageRanges> pageRanges_;
 };
 
 }  // namespace strata

@@ -27,26 +27,26 @@ class ProjectedRasterLayer : public Layer {
 
   LayerKind kind() const override { return kind_; }
   std::string samplingFunction() const override { return prefix_; }
-  std::string faceSamplingFunction() const override;
 
  protected:
   // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.
   void place(RasterGeoreference georeference, int width, int height);
   // The layer's GLSL: the projection's, then `declarations` (the layer's textures and uniforms), then
-  // the sampling function (and the face sampling function, on a HEALPix pyramid's faces). It evaluates
-  // `filtered`, a GLSL expression of vec2 uv (texture coordinates), stepX, stepY (their change to the next
-  // sample) and bool repeatX, giving the filtered texel: value x coverage and coverage (.rgb and .a for
-  // colour kinds, .r and .g for the others).
+  // the sampling function. It evaluates `filtered`, a GLSL expression of vec2 uv (texture coordinates),
+  // stepX, stepY (their change to the next sample) and bool repeatX, giving the filtered texel: value x
+  // coverage and coverage (.rgb and .a for colour kinds, .r and .g for the others), which
+  // <prefix>_value(vec4) turns into what the sampling function returns.
   std::string samplingGlsl(const std::string& declarations, const std::string& filtered) const;
   // Sets the uniforms samplingGlsl() declares.
   void bindSampling(ShaderProgram& program) const;
   const std::string& prefix() const { return prefix_; }
+  // Raw values, least and greatest, as the layer returns them (after scale and offset).
+  ValueRange transformed(double rawLeast, double rawGreatest) const;
+  // Whether the raster is a HEALPix pyramid's strip of faces (strata/healpix_pyramid.hpp).
+  bool onHealpixFaces() const;
   bool repeatX() const { return repeatX_; }
 
  private:
-  // The face sampling function (Layer::faceSamplingFunction), evaluating `filtered` as samplingGlsl() does.
-  std::string faceSamplingGlsl(const std::string& filtered) const;
-
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
   double scale_ = 1.0;

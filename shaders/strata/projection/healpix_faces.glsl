@@ -4,9 +4,12 @@
 // an ascending and a descending one cross.
 #include "strata/projection/healpix.glsl"
 
-// The greatest face point x the strip is sampled at. Face f's x = 1 edge is strip x = f + 1, where face f + 1's
-// texels begin (the page cache picks a page by flooring), so points on it are taken 2^-19 of a face inside:
-// enough that f + x and the texture coordinate made from it stay below f + 1 in float, for f up to 11.
+// The greatest face point x a longitude/latitude is mapped to. Face f's x = 1 edge is strip x = f + 1, where
+// face f + 1's texels begin (the page cache picks a page by flooring), so points on it are taken 2^-19 of a
+// face inside: enough that f + x and the texture coordinate made from it stay below f + 1 in float, for f up
+// to 11. Two vertices that share a longitude/latitude share the shift; sampling by face point
+// (Layer::faceSamplingFunction), where a vertex on a face edge is a point of either face, keeps to the face's
+// pages instead (paged_texture.glsl, pageRange).
 const float kHealpixStripLastX = 1.0 - 1.0 / 524288.0;
 
 // a and b as healpix() takes them (central meridian 0, no false origin).
