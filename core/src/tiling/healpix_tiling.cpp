@@ -112,7 +112,8 @@ std::int64_t checkedNside(std::int64_t nside) {
                   " (e.g. 1024 or 4096), or leave --nside out to match the input's texels");
 }
 
-// The haversine distance between places i and j of x (longitudes) and y (latitudes), in degrees, on a sphere.
+// The haversine distance (m) between places i and j of x (longitudes) and y (latitudes), in degrees, on a
+// sphere of `radius`.
 double greatCircle(const double x[], const double y[], int i, int j, double radius) {
   const double dLat = (y[j] - y[i]) * kDegree, dLon = (x[j] - x[i]) * kDegree;
   const double h = std::pow(std::sin(dLat / 2.0), 2.0) +
