@@ -321,6 +321,21 @@ TEST_F(TileCommand, AHealpixPyramidOfAGlobeFromLongitude0IsTheSameAsFromMinus180
   EXPECT_EQ(fromWest.values, fromEast.values) << "the same texels at the same places";
 }
 
+// A grid of texel centres (as EGM96's: the first column centred on -180, rows on the poles) starts half a
+// texel west of the antimeridian: the pyramid is covered all round the globe all the same.
+TEST_F(TileCommand, AHealpixPyramidOfAGridOfTexelCentresIsCoveredAcrossTheAntimeridian) {
+  writeMarsField(file("centres.tif"), -180.25, 90.25, 720, 361);
+  ASSERT_EQ(run({"tile", file("centres.tif").string(), file("centres-healpix.tif").string(), "--to", "healpix"}).exitCode,
+            0);
+  auto tiled = openRaster(file("centres-healpix.tif"));
+  const Strip strip = readStrip(*tiled, 512);
+  for (const StripTexel texel : texelsToCheck(512, 3000)) {
+    const glm::dvec2 centre = healpix::nestedPixelCentre(512, nestedPixelOf(512, texel));
+    ASSERT_TRUE(strip.covered(texel)) << "longitude " << centre.x / kDegree << ", latitude " << centre.y / kDegree;
+    EXPECT_NEAR(strip.at(texel), marsField(centre.x, centre.y), kBilinearTolerance);
+  }
+}
+
 TEST_F(TileCommand, AHealpixPyramidMarksWhereTheInputHasNoData) {
   // 60 x 40 degrees of a Float32 field, without nodata: NaN marks the rest.
   writeMarsField(file("region.tif"), -20.0, 30.0, 120, 80);

@@ -35,17 +35,17 @@ Dataset wrapAroundGlobe(GDALDataset& input) {
       t[5] >= 0.0 || !near(crs->GetAngularUnits() * 180.0 / std::numbers::pi, 1.0) || !near(t[1] * width, 360.0))
     return nullptr;
   // The VRT starts at the antimeridian, where PROJ's longitudes do, wherever the input starts (0 degrees is
-  // common): its first column is input column `start`, which must be whole.
-  const double start = (-180.0 - t[0]) / t[1];
-  if (!near(start, std::round(start))) return nullptr;
-  const int shift = int(std::lround(start));
+  // common): its first column is input column `shift`, the one nearest the antimeridian, so that with the
+  // columns added on either side it reaches past both -180 and 180 however the texels lie (grids of texel
+  // centres, such as EGM96's, start half a texel west of it).
+  const int shift = int(std::lround((-180.0 - t[0]) / t[1]));
   // A half turn of longitude must be whole texels for the rows across a pole.
   const bool north = width % 2 == 0 && near(t[3], 90.0), south = width % 2 == 0 && near(t[3] + t[5] * height, -90.0);
   const int top = north ? 1 : 0;
   Dataset wrapped(GetGDALDriverManager()->GetDriverByName("VRT")->Create(
       "", width + 2, height + top + (south ? 1 : 0), 0, input.GetRasterBand(1)->GetRasterDataType(), nullptr));
   wrapped->SetSpatialRef(crs);
-  std::array<double, 6> extended{-180.0 - t[1], t[1], 0.0, t[3] - top * t[5], 0.0, t[5]};
+  std::array<double, 6> extended{t[0] + (shift - 1) * t[1], t[1], 0.0, t[3] - top * t[5], 0.0, t[5]};
   wrapped->SetGeoTransform(extended.data());
   for (int b = 1; b <= input.GetRasterCount(); ++b) {
     GDALRasterBand& source = *input.GetRasterBand(b);

@@ -11,8 +11,7 @@ namespace strata::tiling {
 // A VRT of `input` from longitude -180 to 180 with one column more on each side, taken across the
 // antimeridian, and, where an edge is a pole, one row more taken across the pole (the texels half a turn of
 // longitude away), so that bilinear interpolation there is as good as anywhere. Null unless `input` is an
-// unrotated longitude/latitude raster 360 degrees wide whose columns start a whole number of texels from
-// -180. It refers to `input`, which must outlive it.
+// unrotated longitude/latitude raster 360 degrees wide. It refers to `input`, which must outlive it.
 Dataset wrapAroundGlobe(GDALDataset& input);
 
 }  // namespace strata::tiling
