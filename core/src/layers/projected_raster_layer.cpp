@@ -51,6 +51,7 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
   projection_ = {glm::vec4(projection[0]), glm::vec4(projection[1])};
   mapToTexture_ = mapToTextureOf(georeference_, width, height);
+  texels_ = glm::vec2(float(width), float(height));
   repeatX_ = spansPeriod(georeference_, width);
 }
 
@@ -67,7 +68,8 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "uniform vec4 " + p + "_projectionB;\n"
          "uniform vec4 " + p + "_mapToTexture;\n"
          "uniform vec2 " + p + "_scaleOffset;\n"
-         "uniform bool " + p + "_repeatX;\n" +
+         "uniform bool " + p + "_repeatX;\n"
+         "uniform vec2 " + p + "_texels;\n" +
          declarations +
          "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
          "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
@@ -76,6 +78,12 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "vec2 " + p + "_step(vec3 at, vec2 lonlat, vec2 step) {\n"
          "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
          "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
+         "}\n"
+         "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
+         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
+         "  return vec4(" + p + "_step(at, p.lonlat, p.lonlatDx) * " + p + "_texels, " + p + "_step(at, p.lonlat, p.lonlatDy) * " +
+         p + "_texels);\n"
          "}\n"
          "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
@@ -97,6 +105,7 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_mapToTexture", mapToTexture_);
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
   program.set(prefix_ + "_repeatX", repeatX_ ? 1 : 0);
+  program.set(prefix_ + "_texels", texels_);
 }
 
 }  // namespace strata

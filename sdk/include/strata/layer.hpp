@@ -28,6 +28,12 @@ class Layer {
 
   virtual LayerKind kind() const = 0;
   virtual std::string samplingFunction() const = 0;
+  // Layers of texels also offer, in glsl(),
+  //   vec4 <texelStepsFunction()>(SurfacePoint p)
+  // the change of their level-0 texel coordinates to the next sample along the footprint's x (.xy) and y
+  // (.zw), or vec4(0) outside the raster: how well its texels are shaped and how fine they are where they
+  // land, which composite.projection_quality weighs layers by. Empty for layers without texels (procedural).
+  virtual std::string texelStepsFunction() const { return {}; }
   virtual std::string glsl() const = 0;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;

@@ -27,6 +27,7 @@ class ProjectedRasterLayer : public Layer {
 
   LayerKind kind() const override { return kind_; }
   std::string samplingFunction() const override { return prefix_; }
+  std::string texelStepsFunction() const override { return prefix_ + "_texelSteps"; }
 
  protected:
   // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.
@@ -56,6 +57,7 @@ class ProjectedRasterLayer : public Layer {
   // Fixed by place():
   std::array<glm::vec4, 2> projection_{};  // Projection::glslParameters()
   glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
+  glm::vec2 texels_{0.0f};                 // the raster's width and height
   bool repeatX_ = false;                   // the raster spans one period of a periodic projection
 };
 
