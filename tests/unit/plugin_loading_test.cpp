@@ -34,11 +34,11 @@ NodeTypeDeclaration typeNamed(const std::string& name, const std::string& summar
 TEST(PluginLoading, BuiltInModulesRegisterTheirTypes) {
   PluginRegistry registry;
   registry.loadDirectories({STRATA_TEST_PLUGIN_DIR});
-  for (const char* type :
-       {"source.gdal", "source.procedural", "geometry.icosahedral", "geometry.pgm", "geometry.healpix", "output.image"})
+  for (const char* type : {"source.gdal", "source.procedural", "geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                           "output.image", "composite.projection_quality", "composite.overlay_mask"})
     EXPECT_NE(registry.find(type), nullptr) << type;
-  ASSERT_EQ(registry.modules().size(), 6u);
-  EXPECT_EQ(registry.modules()[0].name, "geometry-healpix");  // files load in name order
+  ASSERT_EQ(registry.modules().size(), 8u);
+  EXPECT_EQ(registry.modules()[0].name, "composite-overlay-mask");  // files load in name order
 }
 
 TEST(PluginLoading, BuiltInProjectionsAreRegisteredWithTheirProjNames) {

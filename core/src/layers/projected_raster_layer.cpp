@@ -85,6 +85,13 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  return vec4(" + p + "_step(at, p.lonlat, p.lonlatDx) * " + p + "_texels, " + p + "_step(at, p.lonlat, p.lonlatDy) * " +
          p + "_texels);\n"
          "}\n"
+         "float " + p + "_edgeDistance(SurfacePoint p) {\n"
+         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  if (at.z <= 0.0) return -1.0;\n"
+         "  vec2 texel = at.xy * " + p + "_texels;\n"
+         "  float across = " + p + "_repeatX ? 1e30 : min(texel.x, " + p + "_texels.x - texel.x);\n"
+         "  return min(across, min(texel.y, " + p + "_texels.y - texel.y));\n"
+         "}\n"
          "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec3 at = " + p + "_coordinates(p.lonlat);\n"

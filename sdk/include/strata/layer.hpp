@@ -34,6 +34,11 @@ class Layer {
   // (.zw), or vec4(0) outside the raster: how well its texels are shaped and how fine they are where they
   // land, which composite.projection_quality weighs layers by. Empty for layers without texels (procedural).
   virtual std::string texelStepsFunction() const { return {}; }
+  // And
+  //   float <edgeDistanceFunction()>(SurfacePoint p)
+  // the distance in level-0 texels from p to the nearest edge of the raster (none across the seam of one that
+  // wraps round the body), negative outside it: where composite.overlay_mask feathers an overlay's extent.
+  virtual std::string edgeDistanceFunction() const { return {}; }
   virtual std::string glsl() const = 0;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;

@@ -28,6 +28,7 @@ class ProjectedRasterLayer : public Layer {
   LayerKind kind() const override { return kind_; }
   std::string samplingFunction() const override { return prefix_; }
   std::string texelStepsFunction() const override { return prefix_ + "_texelSteps"; }
+  std::string edgeDistanceFunction() const override { return prefix_ + "_edgeDistance"; }
 
  protected:
   // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.

@@ -1,0 +1,66 @@
+// composite.overlay_mask: a local layer (a strip along a ground track, a crater map, a LIDAR patch) laid over a
+// base layer of any resolution, with a hard or feathered edge (seed 000 section 4.2; digest 000 section 5.2).
+#include <memory>
+
+#include <strata/node.hpp>
+#include <strata/node_type.hpp>
+#include <strata/plugin.hpp>
+
+#include "overlay_mask_layer.hpp"
+
+namespace strata::composite {
+namespace {
+
+OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
+  const OverlayMaskLayer::Edge edge{setup.parameters.real("feather"), setup.parameters.string("feather_units") == "metres",
+                                    setup.body->radius};
+  if (edge.feather > 0.0 && overlay.texelStepsFunction().empty())
+    throw Error(setup.parameters.where("feather"), "the overlay has no texels to feather its edge over",
+                "give a raster overlay (source.gdal), or feather: 0 for a hard edge");
+  return edge;
+}
+
+class OverlayMask : public Node {
+ public:
+  explicit OverlayMask(const NodeSetup& setup)
+      : layer_(setup.id, *setup.input("base")->layer(), *setup.input("overlay")->layer(),
+               edgeOf(setup, *setup.input("overlay")->layer())) {
+    const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
+    if (base.kind() != overlay.kind())
+      throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
+                                   toString(base.kind()) + " layer",
+                  "lay heights over heights, colours over colours");
+  }
+
+  Layer* layer() override { return &layer_; }
+
+ private:
+  OverlayMaskLayer layer_;
+};
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "composite.overlay_mask";
+  type.category = NodeCategory::Compositor;
+  type.summary = "Lays a local layer over a base layer where it has data, with a hard or feathered edge";
+  type.inputs = {{.name = "base", .type = PortType::Layer, .doc = "the layer beneath, of any resolution"},
+                 {.name = "overlay", .type = PortType::Layer,
+                  .doc = "the local layer on top, of the same kind: where it has data (its extent, nodata, alpha)"}};
+  type.output = PortType::Layer;
+  type.parameters = {
+      {.name = "feather", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e7,
+       .doc = "width over which the overlay fades in from its edge, in feather_units; 0: a hard edge"},
+      {.name = "feather_units", .type = ParameterType::Choice, .defaultValue = std::string("texels"),
+       .doc = "texels: the overlay's own, so the fade follows its resolution; metres: along the ground",
+       .choices = {"texels", "metres"}},
+  };
+  type.create = [](const NodeSetup& setup) { return std::make_unique<OverlayMask>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::composite
+
+STRATA_PLUGIN("composite-overlay-mask", "0.1.0", strata::composite::registerTypes)

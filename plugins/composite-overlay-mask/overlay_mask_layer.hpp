@@ -1,0 +1,38 @@
+#pragma once
+#include <string>
+
+#include <strata/layer.hpp>
+
+namespace strata::composite {
+
+// A local layer laid over a base layer (seed 000 section 4.2; digest 000 section 5.2): where the overlay has
+// data (its extent, nodata and alpha: its coverage) it hides the base, with a hard edge or one feathered over
+// a width in the overlay's texels or in metres, from its coverage averaged over that width; elsewhere the
+// base shows. Where the overlay has no data its sampling returns at once, so the work stays within its bounds.
+class OverlayMaskLayer : public Layer {
+ public:
+  // A feather of 0 is a hard edge. `radius`: the body's, to turn metres into angles.
+  struct Edge {
+    double feather = 0.0;
+    bool metres = false;  // the feather's unit: metres, else the overlay's texels
+    double radius = 1.0;
+  };
+
+  OverlayMaskLayer(const std::string& nodeId, const Layer& base, const Layer& overlay, Edge edge);
+
+  LayerKind kind() const override { return base_.kind(); }
+  std::string samplingFunction() const override { return prefix_; }
+  std::string glsl() const override;
+  void bind(ShaderProgram& program, TextureUnits& units) const override;
+  std::optional<ValueRange> valueRange() const override;
+
+ private:
+  std::string edgeWeight() const;
+
+  std::string prefix_;
+  const Layer& base_;
+  const Layer& overlay_;
+  Edge edge_;
+};
+
+}  // namespace strata::composite

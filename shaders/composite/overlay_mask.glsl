@@ -1,0 +1,26 @@
+// composite.overlay_mask's pieces (seed 000 section 4.2; digest 000 section 5.2).
+
+// A layer's footprint in metres along the body: the longer of the sample's two steps (SurfacePoint).
+float footprintMetres(SurfacePoint p, float radius) {
+  float c = cos(p.lonlat.y);
+  return radius * max(length(vec2(p.lonlatDx.x * c, p.lonlatDx.y)), length(vec2(p.lonlatDy.x * c, p.lonlatDy.y)));
+}
+
+// The point `p` with its footprint widened `scale` times: a layer sampled there filters over that many more
+// of its texels (its coarser levels: box-filtered averages).
+SurfacePoint widenedFootprint(SurfacePoint p, float scale) {
+  p.lonlatDx *= scale;
+  p.lonlatDy *= scale;
+  return p;
+}
+
+// The overlay's weight from its coverage averaged over the feather's width: 1 inside, 0.5 about its edge, 0
+// outside, so that 2 c - 1 runs from 0 at the edge to 1 half the width inside it.
+float featheredWeight(float averagedCoverage) { return clamp(2.0 * averagedCoverage - 1.0, 0.0, 1.0); }
+
+// "Over" with coverages (the digest's a-attenuated update): the overlay's value where it has weight a, the
+// base's, with its own coverage, beneath the rest.
+vec4 overlayOver(vec4 base, vec4 overlay, float a) {
+  float baseShare = base.a * (1.0 - a), coverage = a + baseShare;
+  return coverage > 0.0 ? vec4((overlay.rgb * a + base.rgb * baseShare) / coverage, coverage) : vec4(0.0);
+}
