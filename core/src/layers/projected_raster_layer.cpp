@@ -78,20 +78,7 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "vec2 " + p + "_step(vec3 at, vec2 lonlat, vec2 step) {\n"
          "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
          "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
-         "}\n"
-         "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
-         "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
-         "  return vec4(" + p + "_step(at, p.lonlat, p.lonlatDx) * " + p + "_texels, " + p + "_step(at, p.lonlat, p.lonlatDy) * " +
-         p + "_texels);\n"
-         "}\n"
-         "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
-         "  if (at.z <= 0.0) return -1.0;\n"
-         "  vec2 texel = at.xy * " + p + "_texels;\n"
-         "  float across = " + p + "_repeatX ? 1e30 : min(texel.x, " + p + "_texels.x - texel.x);\n"
-         "  return min(across, min(texel.y, " + p + "_texels.y - texel.y));\n"
-         "}\n"
+         "}\n" + texelGlsl() +
          "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
@@ -99,6 +86,24 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
          "  vec2 uv = at.xy, stepX = " + p + "_step(at, p.lonlat, p.lonlatDx), stepY = " + p + "_step(at, p.lonlat, p.lonlatDy);\n"
          "  return " + p + "_value(" + filtered + ");\n"
+         "}\n";
+}
+
+// Where the layer's texels land, for compositors: texelStepsFunction() and edgeDistanceFunction().
+std::string ProjectedRasterLayer::texelGlsl() const {
+  const std::string& p = prefix_;
+  return "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
+         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
+         "  return vec4(" + p + "_step(at, p.lonlat, p.lonlatDx) * " + p + "_texels, " + p +
+         "_step(at, p.lonlat, p.lonlatDy) * " + p + "_texels);\n"
+         "}\n"
+         "float " + p + "_edgeDistance(SurfacePoint p) {\n"
+         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  if (at.z <= 0.0) return -1.0;\n"
+         "  vec2 texel = at.xy * " + p + "_texels;\n"
+         "  float across = " + p + "_repeatX ? 1e30 : min(texel.x, " + p + "_texels.x - texel.x);\n"
+         "  return min(across, min(texel.y, " + p + "_texels.y - texel.y));\n"
          "}\n";
 }
 

@@ -49,6 +49,8 @@ class ProjectedRasterLayer : public Layer {
   bool repeatX() const { return repeatX_; }
 
  private:
+  std::string texelGlsl() const;
+
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
   double scale_ = 1.0;
