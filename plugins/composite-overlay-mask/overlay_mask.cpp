@@ -11,6 +11,16 @@
 namespace strata::composite {
 namespace {
 
+// The overlay, once it is known to be of the base's kind.
+const Layer& overlayOf(const NodeSetup& setup) {
+  const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
+  if (base.kind() != overlay.kind())
+    throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
+                                 toString(base.kind()) + " layer",
+                "lay heights over heights, colours over colours");
+  return overlay;
+}
+
 OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
   const OverlayMaskLayer::Edge edge{setup.parameters.real("feather"), setup.parameters.string("feather_units") == "metres",
                                     setup.body->radius};
@@ -23,14 +33,7 @@ OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
 class OverlayMask : public Node {
  public:
   explicit OverlayMask(const NodeSetup& setup)
-      : layer_(setup.id, *setup.input("base")->layer(), *setup.input("overlay")->layer(),
-               edgeOf(setup, *setup.input("overlay")->layer())) {
-    const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
-    if (base.kind() != overlay.kind())
-      throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
-                                   toString(base.kind()) + " layer",
-                  "lay heights over heights, colours over colours");
-  }
+      : layer_(setup.id, *setup.input("base")->layer(), overlayOf(setup), edgeOf(setup, overlayOf(setup))) {}
 
   Layer* layer() override { return &layer_; }
 

@@ -9,11 +9,13 @@
 namespace strata::gdal {
 
 GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind)
-    : GdalPageSource(std::move(dataset), kind, PagePyramid()) {}
+    : path_(dataset->GetDescription()), kind_(kind),
+      pyramid_(dataset->GetRasterXSize(), dataset->GetRasterYSize()) {
+  idle_.push_back(std::move(dataset));
+}
 
 GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, PagePyramid pyramid)
     : path_(dataset->GetDescription()), kind_(kind), pyramid_(pyramid) {
-  if (pyramid_.levels() == 0) pyramid_ = PagePyramid(dataset->GetRasterXSize(), dataset->GetRasterYSize());
   idle_.push_back(std::move(dataset));
 }
 

@@ -88,8 +88,9 @@ std::optional<Level> decoded(const char* text, std::size_t pages) {
 
 }  // namespace
 
-PageRanges::PageRanges(std::int64_t nside, const std::vector<Range>& finest) : nside_(nside) {
-  const int levels = stripPyramid(nside).levels();
+PageRanges::PageRanges(std::int64_t nside, const std::vector<Range>& finest)
+    : nside_(nside), coarsestLevel_(stripPyramid(nside).levels() - 1) {
+  const int levels = coarsestLevel_ + 1;
   Level undilated = finest;
   std::vector<Level> all;
   for (int level = 0; level < levels; ++level) {
@@ -111,7 +112,8 @@ std::optional<PageRanges> PageRanges::fromMetadata(std::int64_t nside,
                                                    const std::function<const char*(const std::string&)>& item) {
   PageRanges ranges;
   ranges.nside_ = nside;
-  for (int level = stripPyramid(nside).levels() - 1; level >= 0; --level) {
+  ranges.coarsestLevel_ = stripPyramid(nside).levels() - 1;
+  for (int level = ranges.coarsestLevel_; level >= 0; --level) {
     const char* text = item(kItemPrefix + std::to_string(level));
     if (!text) break;
     const std::int64_t side = pagesAcross(nside, level);
@@ -125,10 +127,9 @@ std::optional<PageRanges> PageRanges::fromMetadata(std::int64_t nside,
 }
 
 PageRanges::Range PageRanges::overNode(int face, int level, std::int64_t ix, std::int64_t iy) const {
-  const int coarsestPageLevel = stripPyramid(nside_).levels() - 1;  // faces of one page
-  const int pageLevel = std::max(coarsestPageLevel - std::min(level, coarsestPageLevel), finestStored_);
+  const int pageLevel = std::max(coarsestLevel_ - std::min(level, coarsestLevel_), finestStored_);
   const std::int64_t side = pagesAcross(nside_, pageLevel);
-  const int shift = level - (coarsestPageLevel - pageLevel);  // node levels per page level below it
+  const int shift = level - (coarsestLevel_ - pageLevel);  // node levels per page level below it
   const std::int64_t column = face * side + (ix >> shift), row = side - 1 - (iy >> shift);
   return levels_[std::size_t(pageLevel - finestStored_)][std::size_t(row * 12 * side + column)];
 }

@@ -97,6 +97,7 @@ class PageRanges {
   PageRanges() = default;
 
   std::int64_t nside_ = 0;
+  int coarsestLevel_ = 0;                   // the pyramid's level of faces of one page
   std::vector<std::vector<Range>> levels_;  // by level of the pyramid, finest stored first; widened
   int finestStored_ = 0;                    // the pyramid level of levels_[0]
 };
