@@ -13,6 +13,7 @@
 
 #include "observation.hpp"
 #include "observation_writer.hpp"
+#include "seasons.hpp"
 
 namespace {
 
@@ -38,13 +39,15 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
   }
   for (const Observation& observation : standardObservations())
     writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
+  writeSeasons(directory);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
-               "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif."};
+               "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif, and twelve months "
+               "of the global one with seasonal snow, season-01-color.tif to season-12-color.tif."};
   std::string directory;
   int largeWidth = 0, largeHeight = 0;
   app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();

@@ -53,5 +53,36 @@ TEST_F(CompositorErrors, OverlayMaskRefusesAnOverlayOfAnotherKind) {
   EXPECT_TRUE(contains(result.err, "the overlay is a height layer, the base a color layer")) << result.err;
 }
 
+TEST_F(CompositorErrors, TemporalBlendWantsOneDatePerStep) {
+  const CommandResult result = renderWith("  b: {type: source.procedural, kind: color}\n"
+                                          "  c: {type: composite.temporal_blend, steps: [a, b], dates: [2004-01-15]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:6:")) << "at `dates`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "1 dates for 2 steps")) << result.err;
+  EXPECT_TRUE(contains(result.err, "give one date per step")) << result.err;
+}
+
+TEST_F(CompositorErrors, TemporalBlendWantsItsDatesInOrder) {
+  const CommandResult result =
+      renderWith("  b: {type: source.procedural, kind: color}\n"
+                 "  c: {type: composite.temporal_blend, steps: [a, b], dates: [2004-02-15, 2004-01-15]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "not in increasing order: 2004-01-15 follows 2004-02-15")) << result.err;
+}
+
+TEST_F(CompositorErrors, TemporalBlendNeedsTheScenesDate) {
+  const CommandResult result = renderWith("  c: {type: composite.temporal_blend, steps: [a], dates: [2004-01-15]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:5:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "add `date: 2004-06-15`")) << result.err;
+}
+
+TEST_F(CompositorErrors, TemporalBlendDateThatIsNoDay) {
+  const CommandResult result = renderWith("  c: {type: composite.temporal_blend, steps: [a], dates: [2004-13-15]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:5:59")) << "at the date itself: " << result.err;
+  EXPECT_TRUE(contains(result.err, "element 1 of parameter 'dates' is '2004-13-15', which is not a date")) << result.err;
+}
+
 }  // namespace
 }  // namespace strata::test

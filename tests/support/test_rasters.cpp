@@ -31,12 +31,17 @@ Rgb8 cellColour(int column, int row) {
 }
 
 void writeCheckerboard(const std::filesystem::path& file) {
-  const int width = 256, height = 128, cell = 32;
-  auto dataset = createGeoTiff(file, width, height, 3, GDT_Byte, {-180, -90, 180, 90});
-  std::vector<unsigned char> band(width * height);
+  constexpr int cell = 32;
+  writeColourRaster(file, 256, 128, {-180, -90, 180, 90}, [](int x, int y) { return cellColour(x / cell, y / cell); });
+}
+
+void writeColourRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
+                       const std::function<Rgb8(int column, int row)>& colour) {
+  auto dataset = createGeoTiff(file, width, height, 3, GDT_Byte, extent);
+  std::vector<unsigned char> band(std::size_t(width) * height);
   for (int channel = 0; channel < 3; ++channel) {
     for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) band[y * width + x] = cellColour(x / cell, y / cell)[channel];
+      for (int x = 0; x < width; ++x) band[std::size_t(y) * width + x] = colour(x, y)[std::size_t(channel)];
     if (dataset->GetRasterBand(channel + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width, height,
                                                       GDT_Byte, 0, 0) != CE_None)
       throw std::runtime_error("cannot write " + file.string());

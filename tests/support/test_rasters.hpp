@@ -20,6 +20,11 @@ Rgb8 cellColour(int column, int row);
 // Writes a global 256x128 RGB GeoTIFF (EPSG:4326) of the checkerboard.
 void writeCheckerboard(const std::filesystem::path& file);
 
+// Writes an RGB GeoTIFF of `width` x `height` over [west, south, east, north] (degrees, EPSG:4326) with
+// colour(column, row) per texel.
+void writeColourRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
+                       const std::function<Rgb8(int column, int row)>& colour);
+
 // Writes a one-band Float32 GeoTIFF of `width` x `height` over [west, south, east, north] (degrees, EPSG:4326)
 // with value(column, row) per texel and an optional nodata value.
 void writeFloatRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,

@@ -1,4 +1,4 @@
-// The body: and camera: sections.
+// The body:, camera: and date: sections.
 #include "pipeline_test_fixtures.hpp"
 
 namespace strata::testing {
@@ -53,6 +53,20 @@ TEST_F(SceneTest, QuotedNumberIsText) {
 TEST_F(SceneTest, InfinityIsNotANumberHere) {
   const Error error = parseError(withSection("camera: {altitude: .inf}"));
   EXPECT_EQ(error.problem(), "camera 'altitude' expects a number, got '.inf'");
+}
+
+TEST_F(SceneTest, DateIsOptionalAndReadAsIso8601) {
+  EXPECT_FALSE(parse(withSection("camera: {}")).date);
+  EXPECT_DOUBLE_EQ(*parse(withSection("date: 2004-06-15")).date, 1627.0);  // 1461 days to 2004, 166 into it
+  EXPECT_DOUBLE_EQ(*parse(withSection("date: 2000-01-01T18:00Z")).date, 0.75);
+}
+
+TEST_F(SceneTest, DateThatIsNoDay) {
+  const Error error = parseError(withSection("date: 2004-02-30"));
+  EXPECT_EQ(error.problem(), "the scene's 'date' is '2004-02-30', which is not a date");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_EQ(error.where().column, 7);
+  EXPECT_NE(error.fix().find("ISO 8601"), std::string::npos);
 }
 
 TEST_F(SceneTest, LatitudeOutOfRange) {

@@ -25,6 +25,7 @@ struct Engine::Impl {
   std::unique_ptr<PageCache> pages;
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
   Camera camera;
+  std::optional<DayNumber> date;
   FrameStatistics statistics;
   std::set<std::string> sourcesAdvised;  // the files whose page failures have been given the fix
 };
@@ -69,6 +70,7 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
   impl_->graph = std::move(graph);
   impl_->pipeline = std::move(pipeline);
   impl_->camera = impl_->pipeline->camera;
+  impl_->date = impl_->pipeline->date;
   impl_->statistics = {};
   impl_->sourcesAdvised.clear();
 }
@@ -82,10 +84,12 @@ const Pipeline& Engine::pipeline() const {
 
 Camera& Engine::camera() { return impl_->camera; }
 
+std::optional<DayNumber>& Engine::date() { return impl_->date; }
+
 const FrameOutput& Engine::render(int width, int height) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
   FrameState frame{&impl_->pipeline->body, makeView(impl_->pipeline->body, impl_->camera, width, height),
-                   impl_->statistics.frame};
+                   impl_->statistics.frame, impl_->date};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);

@@ -60,4 +60,8 @@ void PagedRasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   program.set(prefix() + "_size", glm::ivec2(placement_.width, placement_.height));
 }
 
+void PagedRasterLayer::setPageDemand(PageDemand demand) const {
+  if (cache_) cache_->setDemand(placement_.layer, demand);
+}
+
 }  // namespace strata

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <map>
+#include <mutex>
 #include <set>
 #include <utility>
 
@@ -26,6 +27,7 @@ struct AttachedLayer {
   bool wrapX = false;
   std::map<PageKey, int> resident;  // page -> atlas slot
   std::set<PageKey> failed;         // never asked for again
+  PageDemand demand = PageDemand::Shown;
 };
 
 }  // namespace
@@ -36,6 +38,7 @@ struct PageCache::Impl {
   void allocate();
   std::map<PageFormat, int> capacities() const;
   void loadCoarsest();
+  std::vector<paging::WantedPage> select(const Body& body, const View& view);
   void request(const std::vector<paging::WantedPage>& wanted, std::uint64_t frame);
   void uploadFinished(std::uint64_t frame, std::size_t count, bool pinned);
   void place(const LoadedPage& loaded, std::uint64_t frame, bool pinned);
@@ -54,6 +57,7 @@ struct PageCache::Impl {
   std::unique_ptr<paging::PageLoader> loader;  // after the layers: its threads stop before they go
   PageCacheStatistics statistics;
   std::vector<PageFailure> failures;
+  std::mutex demandMutex;  // setDemand() comes from the workers' prepare()
 };
 
 std::string pageAtlasInclude(PageFormat format) {
@@ -72,8 +76,8 @@ PagedLayerPlacement PageCache::attach(std::shared_ptr<const PageSource> source, 
                                       bool wrapX) {
   if (impl_->loader) throw std::logic_error("PageCache::attach() after the first update()");
   const PagePyramid& pyramid = source->pyramid();
-  const PagedLayerPlacement placement{impl_->index.add(pyramid), pyramid.levels(), pyramid.width(), pyramid.height(),
-                                      source->format()};
+  const PagedLayerPlacement placement{int(impl_->layers.size()), impl_->index.add(pyramid), pyramid.levels(),
+                                      pyramid.width(), pyramid.height(), source->format()};
   impl_->layers.push_back({std::move(source), georeference, wrapX, {}, {}});
   return placement;
 }
@@ -82,9 +86,7 @@ void PageCache::update(const Body& body, const View& view, std::uint64_t frame) 
   Impl& cache = *impl_;
   if (cache.layers.empty()) return;
   allocate();
-  std::vector<paging::SelectableLayer> selectable;
-  for (const AttachedLayer& layer : cache.layers) selectable.push_back({&layer.source->pyramid(), &layer.georeference});
-  const std::vector<paging::WantedPage> wanted = paging::selectPages(selectable, body, view);
+  const std::vector<paging::WantedPage> wanted = cache.select(body, view);
   cache.request(wanted, frame);
   cache.uploadFinished(frame, std::size_t(cache.settings.uploadsPerFrame), false);
   cache.index.upload();
@@ -93,6 +95,11 @@ void PageCache::update(const Body& body, const View& view, std::uint64_t frame) 
 
 void PageCache::allocate() {
   if (!impl_->layers.empty() && !impl_->loader) impl_->allocate();
+}
+
+void PageCache::setDemand(int layer, PageDemand demand) {
+  const std::lock_guard lock(impl_->demandMutex);
+  impl_->layers.at(std::size_t(layer)).demand = demand;
 }
 
 bool PageCache::loading() const { return impl_->loader && impl_->loader->outstanding() > 0; }
@@ -166,6 +173,27 @@ void PageCache::Impl::loadCoarsest() {
     loader->waitForAny();
     uploadFinished(0, coarsest.size(), true);
   }
+}
+
+// The pages the view needs of the layers not idle, every shown layer's before any prefetched one's, so that
+// prefetching only fills the room the shown layers leave.
+std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view) {
+  std::vector<paging::SelectableLayer> selectable;
+  std::vector<std::pair<int, bool>> attached;  // per selectable: its layer, and whether it is shown
+  {
+    const std::lock_guard lock(demandMutex);
+    for (std::size_t i = 0; i < layers.size(); ++i)
+      if (layers[i].demand != PageDemand::Idle) {
+        selectable.push_back({&layers[i].source->pyramid(), &layers[i].georeference});
+        attached.emplace_back(int(i), layers[i].demand == PageDemand::Shown);
+      }
+  }
+  std::vector<paging::WantedPage> wanted = paging::selectPages(selectable, body, view);
+  std::stable_partition(wanted.begin(), wanted.end(), [&attached](const paging::WantedPage& want) {
+    return attached[std::size_t(want.page.layer)].second;
+  });
+  for (paging::WantedPage& want : wanted) want.page.layer = attached[std::size_t(want.page.layer)].first;
+  return wanted;
 }
 
 // Marks the wanted pages that are loaded as used this frame and queues the others, as many of each

@@ -61,6 +61,7 @@ const char* toString(ParameterType type) {
     case ParameterType::Path: return "path";
     case ParameterType::Choice: return "choice";
     case ParameterType::RealList: return "real list";
+    case ParameterType::DateList: return "date list";
   }
   return "unknown";
 }

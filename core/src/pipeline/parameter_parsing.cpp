@@ -75,6 +75,7 @@ ParameterValue parseParameter(const YAML::Node& value, const ParameterDeclaratio
     case ParameterType::Path: return parsePath(value, context, baseDirectory);
     case ParameterType::Choice: return parseChoice(value, declaration, context);
     case ParameterType::RealList: return parseReals(value, declaration, context);
+    case ParameterType::DateList: return readDates(value, context);
   }
   throw std::logic_error("parameter '" + declaration.name + "' has an unknown type");
 }

@@ -4,6 +4,7 @@
 //   body: {name: Earth, radius: 6371000}       # optional (scene_parsing.hpp)
 //   camera: {lon: 10, lat: 20, altitude: 2e7}  # optional (scene_parsing.hpp)
 //   cache: {budget: 256}                       # optional: the page cache (scene_parsing.hpp)
+//   date: 2004-06-15                           # optional: the scene's date, for time series (strata/date.hpp)
 //   nodes:                                     # required: node id -> node (node_parsing.hpp)
 //     relief:  {type: source.gdal, path: egm96_15.gtx, kind: height, scale: 300}
 //     terrain: {type: geometry.icosahedral, height: relief}
@@ -34,7 +35,7 @@ namespace {
 using loader::SourceMap;
 
 constexpr std::int64_t kFormatVersion = 1;
-const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "nodes"};
+const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "date", "nodes"};
 
 YAML::Node parseYaml(const std::string& text, const std::string& file) {
   try {
@@ -98,6 +99,7 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std
   if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
   pipeline.cache.where = {file.string()};
   if (const YAML::Node cache = root["cache"]) pipeline.cache = loader::parseCache(cache, source);
+  if (const YAML::Node date = root["date"]) pipeline.date = loader::readDate(date, {source, "the scene's 'date'", ""});
   pipeline.nodes = parseNodes(root, {source, registry, baseDirectory(file)});
   return pipeline;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <optional>
 
+#include <strata/date.hpp>
+
 namespace strata::loader {
 namespace {
 
@@ -80,6 +82,21 @@ std::vector<double> readReals(const YAML::Node& value, const ValueContext& conte
 std::string readText(const YAML::Node& value, const ValueContext& context) {
   if (value.IsScalar()) return value.Scalar();
   throw wrongType(value, context, "text", "write a single value, quoted if it contains ':' or '#'");
+}
+
+double readDate(const YAML::Node& value, const ValueContext& context) {
+  const std::string text = value.IsScalar() ? value.Scalar() : std::string();
+  if (const std::optional<DayNumber> days = parseIsoDate(text)) return *days;
+  throw context.source.error(value, context.nodeId, context.label + " is " + describe(value) + ", which is not a date",
+                             "write an ISO 8601 date in UTC: 2004-06-15, 2004-06, or 2004-06-15T12:30:00Z");
+}
+
+std::vector<double> readDates(const YAML::Node& value, const ValueContext& context) {
+  if (!value.IsSequence())
+    throw wrongType(value, context, "a list of dates", "write the dates in brackets, e.g. [2004-01-15, 2004-02-15]");
+  std::vector<double> dates;
+  for (std::size_t i = 0; i < value.size(); ++i) dates.push_back(readDate(value[i], elementOf(context, i)));
+  return dates;
 }
 
 }  // namespace strata::loader

@@ -29,6 +29,9 @@ std::int64_t readInteger(const YAML::Node& value, const ValueContext& context);
 double readReal(const YAML::Node& value, const ValueContext& context);
 std::vector<double> readReals(const YAML::Node& value, const ValueContext& context);  // a YAML sequence
 std::string readText(const YAML::Node& value, const ValueContext& context);
+// An ISO 8601 date or date and time in UTC (strata/date.hpp), as its day number; and a YAML sequence of them.
+double readDate(const YAML::Node& value, const ValueContext& context);
+std::vector<double> readDates(const YAML::Node& value, const ValueContext& context);
 
 // The context of element `index` (from 0) of a list: "element 2 of parameter 'size'".
 ValueContext elementOf(const ValueContext& list, std::size_t index);

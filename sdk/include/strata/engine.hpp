@@ -44,6 +44,9 @@ class Engine {
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames
+  // The scene's date, which time series show (composite.temporal_blend): starts as the pipeline's `date:`;
+  // change it between frames to step or animate through time with no reload.
+  std::optional<DayNumber>& date();
   // Renders one frame of width x height pixels and returns the pipeline's output. Paged layers show what
   // the cache holds: pages still loading are stood in for by coarser ones.
   const FrameOutput& render(int width, int height);

@@ -1,8 +1,10 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
+#include <strata/date.hpp>
 
 namespace strata {
 
@@ -11,6 +13,7 @@ struct FrameState {
   const Body* body = nullptr;
   View view;
   std::uint64_t index = 0;  // frames since the pipeline loaded
+  std::optional<DayNumber> date;  // the scene's date (Engine::date()); none where the pipeline gives none
 };
 
 }  // namespace strata

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include <strata/page_demand.hpp>
 #include <strata/port.hpp>
 
 namespace strata {
@@ -42,6 +43,10 @@ class Layer {
   virtual std::string glsl() const = 0;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;
+  // How much the pages behind the layer are wanted (PageDemand), so that a time series shows two of its
+  // steps and lets the others idle: paged layers tell their cache, compositors pass it on to their inputs,
+  // layers without pages ignore it. Any thread (nodes call it from prepare()); the next frame follows it.
+  virtual void setPageDemand(PageDemand demand) const { (void)demand; }
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }

@@ -2,10 +2,12 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <strata/body.hpp>
+#include <strata/date.hpp>
 #include <strata/error.hpp>
 #include <strata/frame.hpp>
 #include <strata/parameter.hpp>
@@ -30,6 +32,7 @@ struct NodeSetup {
   const Body* body = nullptr;
   std::filesystem::path pipelineDirectory;  // relative paths in parameters resolve against this
   const PluginRegistry* plugins = nullptr;   // node types and projections (see strata/crs.hpp)
+  std::optional<DayNumber> date;  // the scene's date as the pipeline gives it (`date:`); frames carry the current one
 
   Node* input(const std::string& port) const;  // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected

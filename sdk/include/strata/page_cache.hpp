@@ -7,6 +7,7 @@
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 #include <strata/page_cache_settings.hpp>
+#include <strata/page_demand.hpp>
 #include <strata/page_source.hpp>
 #include <strata/raster_georeference.hpp>
 
@@ -38,6 +39,7 @@ struct PageFailure {
 
 // Where a layer's pages are, for its GLSL (shaders/strata/paged_texture.glsl).
 struct PagedLayerPlacement {
+  int layer = -1;          // the cache's number for the layer (setDemand)
   unsigned indexBase = 0;  // the layer's first entry in the shared index
   int levels = 0;
   int width = 0;           // level 0, texels
@@ -73,6 +75,9 @@ class PageCache {
   // Once a frame, before rendering: chooses the pages `view` needs, starts their loads, uploads finished
   // ones within the per-frame budget and points the index at them. Allocates first if need be.
   void update(const Body& body, const View& view, std::uint64_t frame);
+  // How much `layer`'s pages are wanted from the next update() on (PageDemand). Any thread: nodes call it
+  // from prepare().
+  void setDemand(int layer, PageDemand demand);
   // Whether pages the last update wanted are still on their way.
   bool loading() const;
   // Blocks until a requested page has been read (or `loading()` is false).

@@ -24,6 +24,7 @@ class PagedRasterLayer : public ProjectedRasterLayer {
   // On a HEALPix pyramid's faces: sampled by face point, with no projection (see Layer).
   std::string faceSamplingFunction() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
+  void setPageDemand(PageDemand demand) const override;
 
   // A HEALPix pyramid's pages' true ranges (strata/healpix_pyramid.hpp), which faceNodeValues() reads.
   void setPageRanges(std::shared_ptr<const healpix::PageRanges> ranges) { pageRanges_ = std::move(ranges); }

@@ -11,7 +11,8 @@
 
 namespace strata {
 
-enum class ParameterType { Boolean, Integer, Real, String, Path, Choice, RealList };
+// DateList: ISO 8601 dates in the file (strata/date.hpp), held as their day numbers in a std::vector<double>.
+enum class ParameterType { Boolean, Integer, Real, String, Path, Choice, RealList, DateList };
 
 const char* toString(ParameterType type);
 

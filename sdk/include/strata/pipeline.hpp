@@ -1,11 +1,13 @@
 #pragma once
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
+#include <strata/date.hpp>
 #include <strata/error.hpp>
 #include <strata/page_cache_settings.hpp>
 #include <strata/parameter.hpp>
@@ -31,6 +33,7 @@ struct Pipeline {
   Body body;
   Camera camera;
   PageCacheSettings cache;
+  std::optional<DayNumber> date;  // the scene's date (`date:`), which time series show; none: not given
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
 
   const NodeDescription* find(const std::string& id) const;

@@ -1,0 +1,100 @@
+#include "temporal_blend_layer.hpp"
+
+#include <algorithm>
+
+#include <strata/gl/shader_program.hpp>
+
+namespace strata::composite {
+
+TemporalBlendLayer::TemporalBlendLayer(const std::string& nodeId, std::vector<const Layer*> steps)
+    : prefix_("layer_" + glslIdentifier(nodeId)), steps_(std::move(steps)) {}
+
+void TemporalBlendLayer::show(const Bracket& bracket) {
+  earlier_ = int(bracket.earlier);
+  later_ = int(bracket.later);
+  fraction_ = float(bracket.fraction);
+}
+
+bool TemporalBlendLayer::everyStepHas(std::string (Layer::*of)() const) const {
+  return std::all_of(steps_.begin(), steps_.end(), [of](const Layer* step) { return !(step->*of)().empty(); });
+}
+
+// `type name(int step, parameters)`: step `step`'s function `of` at `arguments`. The step is the same for
+// every sample of a frame (a uniform), so the switch costs no divergence.
+std::string TemporalBlendLayer::stepDispatch(std::string (Layer::*of)() const, const std::string& name,
+                                             const std::string& type, const std::string& parameters,
+                                             const std::string& arguments) const {
+  std::string code = type + " " + name + "(int step, " + parameters + ") {\n  switch (step) {\n";
+  for (std::size_t i = 0; i < steps_.size(); ++i)
+    code += "    case " + std::to_string(i) + ": return " + (steps_[i]->*of)() + "(" + arguments + ");\n";
+  return code + "  }\n  return " + type + "(0.0);\n}\n";
+}
+
+// The earlier step's texels stand for the layer's: the steps of a series share their grid as a rule.
+std::string TemporalBlendLayer::texelStepsFunction() const {
+  return everyStepHas(&Layer::texelStepsFunction) ? prefix_ + "_texelSteps" : std::string();
+}
+
+std::string TemporalBlendLayer::edgeDistanceFunction() const {
+  return everyStepHas(&Layer::edgeDistanceFunction) ? prefix_ + "_edgeDistance" : std::string();
+}
+
+std::string TemporalBlendLayer::faceSamplingFunction() const {
+  return everyStepHas(&Layer::faceSamplingFunction) ? prefix_ + "_faceSample" : std::string();
+}
+
+std::string TemporalBlendLayer::glsl() const {
+  const std::string& p = prefix_;
+  std::string code;
+  for (const Layer* step : steps_) code += step->glsl();
+  code += "#include \"composite/temporal_blend.glsl\"\n"
+          "uniform int " + p + "_earlier;\n"
+          "uniform int " + p + "_later;\n"
+          "uniform float " + p + "_fraction;\n" +
+          stepDispatch(&Layer::samplingFunction, p + "_step", "vec4", "SurfacePoint p", "p") +
+          "vec4 " + p + "(SurfacePoint p) {\n"
+          "  vec4 earlier = " + p + "_step(" + p + "_earlier, p);\n"
+          "  if (" + p + "_fraction <= 0.0) return earlier;  // on a step's date: one step's work\n"
+          "  return temporalBlend(earlier, " + p + "_step(" + p + "_later, p), " + p + "_fraction);\n"
+          "}\n";
+  if (!texelStepsFunction().empty())
+    code += stepDispatch(&Layer::texelStepsFunction, p + "_stepTexels", "vec4", "SurfacePoint p", "p") +
+            "vec4 " + p + "_texelSteps(SurfacePoint p) { return " + p + "_stepTexels(" + p + "_earlier, p); }\n";
+  if (!edgeDistanceFunction().empty())
+    code += stepDispatch(&Layer::edgeDistanceFunction, p + "_stepEdge", "float", "SurfacePoint p", "p") +
+            "float " + p + "_edgeDistance(SurfacePoint p) {\n"
+            "  return max(" + p + "_stepEdge(" + p + "_earlier, p), " + p + "_stepEdge(" + p + "_later, p));\n}\n";
+  if (!faceSamplingFunction().empty())
+    code += stepDispatch(&Layer::faceSamplingFunction, p + "_stepFace", "vec4", "vec3 point, float footprint",
+                         "point, footprint") +
+            "vec4 " + p + "_faceSample(vec3 point, float footprint) {\n"
+            "  vec4 earlier = " + p + "_stepFace(" + p + "_earlier, point, footprint);\n"
+            "  if (" + p + "_fraction <= 0.0) return earlier;\n"
+            "  return temporalBlend(earlier, " + p + "_stepFace(" + p + "_later, point, footprint), " + p +
+            "_fraction);\n}\n";
+  return code;
+}
+
+void TemporalBlendLayer::bind(ShaderProgram& program, TextureUnits& units) const {
+  for (const Layer* step : steps_) step->bind(program, units);
+  program.set(prefix_ + "_earlier", earlier_.load());
+  program.set(prefix_ + "_later", later_.load());
+  program.set(prefix_ + "_fraction", fraction_.load());
+}
+
+void TemporalBlendLayer::setPageDemand(PageDemand demand) const {
+  for (const Layer* step : steps_) step->setPageDemand(demand);
+}
+
+// A blend of two steps stays within what the steps hold.
+std::optional<ValueRange> TemporalBlendLayer::valueRange() const {
+  std::optional<ValueRange> range;
+  for (const Layer* step : steps_) {
+    const std::optional<ValueRange> own = step->valueRange();
+    if (!own) return std::nullopt;
+    range = range ? ValueRange{std::min(range->least, own->least), std::max(range->greatest, own->greatest)} : *own;
+  }
+  return range;
+}
+
+}  // namespace strata::composite
