@@ -6,32 +6,64 @@
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
 #include <strata/plugin.hpp>
+#include <strata/plugin_registry.hpp>
 
+#include "dated_files.hpp"
 #include "temporal_blend_layer.hpp"
 #include "temporal_series.hpp"
 
 namespace strata::composite {
 namespace {
 
-std::vector<const Layer*> stepLayers(const NodeSetup& setup) {
-  std::vector<const Layer*> steps;
-  for (Node* node : setup.inputList("steps")) steps.push_back(node->layer());
-  for (const Layer* step : steps)
-    if (step->kind() != steps.front()->kind())
-      throw Error(setup.where, "the steps are of different kinds (" + std::string(toString(steps.front()->kind())) +
-                                   " and " + toString(step->kind()) + "), which cannot be blended",
-                  "give steps of one kind: heights with heights, colours with colours");
+// A series' steps and their dates, from the pipeline's `steps` and `dates`, or from the files a `files`
+// pattern matches, each read by a source.gdal node the temporal blend makes and runs itself.
+struct Steps {
+  std::vector<std::unique_ptr<Node>> own;  // from `files`: the nodes reading them
+  std::vector<Node*> nodes;
+  std::vector<DayNumber> dates;
+};
+
+// The parameters source.gdal would take for `file` with every other parameter at its default.
+ParameterSet fileStepParameters(const NodeTypeDeclaration& type, const std::filesystem::path& file,
+                                const std::string& kind, const SourceLocation& where) {
+  ParameterSet parameters;
+  for (const ParameterDeclaration& parameter : type.parameters)
+    if (parameter.defaultValue) parameters.set(parameter.name, *parameter.defaultValue, where);
+  parameters.set("path", file.string(), where);
+  parameters.set("kind", kind, where);
+  return parameters;
+}
+
+Steps stepsFromFiles(const NodeSetup& setup) {
+  const SourceLocation& where = setup.parameters.where("files");
+  if (!setup.inputList("steps").empty() || !setup.parameters.reals("dates").empty())
+    throw Error(where, "the steps are given twice: by `files` and by `steps` and `dates`",
+                "keep `files` (the dates come from the file names) or `steps` with `dates`, not both");
+  const NodeTypeDeclaration* reader = setup.plugins->find("source.gdal");
+  if (!reader) throw Error(where, "`files` reads its steps with source.gdal, which is not loaded", "install the source-gdal plugin");
+  Steps steps;
+  for (const DatedFile& file : datedFiles(setup.parameters.string("files"), setup.pipelineDirectory, where)) {
+    NodeSetup step{setup.id + "/" + file.path.filename().string(), where,
+                   fileStepParameters(*reader, file.path, setup.parameters.string("kind"), where), {}, setup.body,
+                   setup.pipelineDirectory, setup.plugins, setup.date};
+    steps.own.push_back(reader->create(step));
+    steps.nodes.push_back(steps.own.back().get());
+    steps.dates.push_back(file.date);
+  }
   return steps;
 }
 
-// The steps' dates, checked against the steps: one each, in increasing order (by their place in the year
-// when the series repeats yearly, since that is the order it steps through).
-TemporalSeries seriesOf(const NodeSetup& setup) {
+// One date per listed step, in increasing order (by their place in the year when the series repeats
+// yearly, since that is the order it steps through).
+Steps stepsFromList(const NodeSetup& setup) {
   const std::vector<double>& dates = setup.parameters.reals("dates");
   const SourceLocation& where = setup.parameters.where("dates");
-  const std::size_t steps = setup.inputList("steps").size();
-  if (dates.size() != steps)
-    throw Error(where, std::to_string(dates.size()) + " dates for " + std::to_string(steps) + " steps",
+  const std::vector<Node*>& nodes = setup.inputList("steps");
+  if (nodes.empty())
+    throw Error(setup.where, "the series has no steps",
+                "give `steps: [...]` with `dates: [...]`, or `files:` with a file-name pattern such as world.%Y%m.tif");
+  if (dates.size() != nodes.size())
+    throw Error(where, std::to_string(dates.size()) + " dates for " + std::to_string(nodes.size()) + " steps",
                 "give one date per step, in the order of `steps`");
   const bool yearly = setup.parameters.string("repeat") == "yearly";
   for (std::size_t i = 1; i < dates.size(); ++i) {
@@ -42,7 +74,22 @@ TemporalSeries seriesOf(const NodeSetup& setup) {
                   "list the steps and their dates from the earliest to the latest" +
                       std::string(yearly ? " day of the year" : ""));
   }
-  return TemporalSeries(dates, yearly);
+  return {{}, nodes, dates};
+}
+
+Steps stepsOf(const NodeSetup& setup) {
+  return setup.parameters.string("files").empty() ? stepsFromList(setup) : stepsFromFiles(setup);
+}
+
+std::vector<const Layer*> stepLayers(const NodeSetup& setup, const Steps& steps) {
+  std::vector<const Layer*> layers;
+  for (Node* node : steps.nodes) layers.push_back(node->layer());
+  for (const Layer* layer : layers)
+    if (layer->kind() != layers.front()->kind())
+      throw Error(setup.where, "the steps are of different kinds (" + std::string(toString(layers.front()->kind())) +
+                                   " and " + toString(layer->kind()) + "), which cannot be blended",
+                  "give steps of one kind: heights with heights, colours with colours");
+  return layers;
 }
 
 DayNumber sceneDate(const NodeSetup& setup) {
@@ -55,24 +102,41 @@ DayNumber sceneDate(const NodeSetup& setup) {
 class TemporalBlend : public Node {
  public:
   explicit TemporalBlend(const NodeSetup& setup)
-      : steps_(stepLayers(setup)), series_(seriesOf(setup)), date_(sceneDate(setup)), layer_(setup.id, steps_) {
+      : steps_(stepsOf(setup)),
+        layers_(stepLayers(setup, steps_)),
+        series_(steps_.dates, setup.parameters.string("repeat") == "yearly"),
+        date_(sceneDate(setup)),
+        layer_(setup.id, layers_) {
     layer_.show(series_.at(date_));
+  }
+
+  // The steps the node reads itself (`files`) go through the scheduler's calls with it.
+  void open() override {
+    for (const auto& step : steps_.own) step->open();
+  }
+  void createResources(GpuContext& gpu) override {
+    for (const auto& step : steps_.own) step->createResources(gpu);
   }
 
   // The frame's date (the last one given, where a host cleared it): which two steps show, how far between
   // them, and which steps' pages are wanted.
   void prepare(const FrameState& frame) override {
+    for (const auto& step : steps_.own) step->prepare(frame);
     if (frame.date) date_ = *frame.date;
     const Bracket bracket = series_.at(date_);
     layer_.show(bracket);
     const std::vector<PageDemand> demands = series_.demands(bracket);
-    for (std::size_t i = 0; i < steps_.size(); ++i) steps_[i]->setPageDemand(demands[i]);
+    for (std::size_t i = 0; i < layers_.size(); ++i) layers_[i]->setPageDemand(demands[i]);
+  }
+  void render(const FrameState& frame) override {
+    for (const auto& step : steps_.own) step->render(frame);
   }
 
   Layer* layer() override { return &layer_; }
 
  private:
-  std::vector<const Layer*> steps_;
+  Steps steps_;
+  std::vector<const Layer*> layers_;
   TemporalSeries series_;
   DayNumber date_;
   TemporalBlendLayer layer_;
@@ -83,12 +147,18 @@ NodeTypeDeclaration declaration() {
   type.type = "composite.temporal_blend";
   type.category = NodeCategory::Compositor;
   type.summary = "A time series as one layer at the scene's date: the two bracketing steps blended linearly in time";
-  type.inputs = {{.name = "steps", .type = PortType::Layer, .list = true,
-                  .doc = "the series' layers, of one kind, from the earliest to the latest (one per date)"}};
+  type.inputs = {{.name = "steps", .type = PortType::Layer, .list = true, .optional = true,
+                  .doc = "the series' layers, of one kind, from the earliest to the latest (one per date); or `files`"}};
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "dates", .type = ParameterType::DateList,
+      {.name = "dates", .type = ParameterType::DateList, .defaultValue = std::vector<double>{},
        .doc = "each step's date, ISO 8601 in UTC (2004-01-15), in the order of `steps`: when it shows alone"},
+      {.name = "files", .type = ParameterType::String, .defaultValue = std::string(),
+       .doc = "instead of steps and dates: a file-name pattern whose %Y %m %d %j give each file's date and * any "
+              "text (bmng/world.%Y%m.*.jpg), each file read as source.gdal reads it; empty: use `steps`"},
+      {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
+       .doc = "what the files `files` matches hold, as source.gdal's `kind`",
+       .choices = {"color", "height", "scalar", "luminance", "mask"}},
       {.name = "repeat", .type = ParameterType::Choice, .defaultValue = std::string("none"),
        .doc = "none: before the first date and after the last, that step shows; yearly: the series is a climatology "
               "that repeats every year (months of any year), and the last step blends into the first",

@@ -70,7 +70,7 @@ void writeSeasons(const std::filesystem::path& directory) {
     throw std::runtime_error("cannot read '" + global.string() + "'");
   for (int month = 1; month <= 12; ++month) {
     char name[32];
-    std::snprintf(name, sizeof name, "season-%02d-color.tif", month);
+    std::snprintf(name, sizeof name, "season-2004%02d-color.tif", month);
     writeMonth(*source, rgba, width, height, month, directory / name);
   }
 }

@@ -77,6 +77,20 @@ TEST_F(CompositorErrors, TemporalBlendNeedsTheScenesDate) {
   EXPECT_TRUE(contains(result.err, "add `date: 2004-06-15`")) << result.err;
 }
 
+TEST_F(CompositorErrors, TemporalBlendTakesItsStepsOneWay) {
+  const CommandResult result = renderWith(
+      "  c: {type: composite.temporal_blend, steps: [a], dates: [2004-01-15], files: 'm%m.tif'}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "the steps are given twice")) << result.err;
+}
+
+TEST_F(CompositorErrors, TemporalBlendFilesThatMatchNothing) {
+  const CommandResult result = renderWith("  c: {type: composite.temporal_blend, files: 'month-%m.tif'}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:5:")) << "at `files`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "matches 'month-%m.tif'")) << result.err;
+}
+
 TEST_F(CompositorErrors, TemporalBlendDateThatIsNoDay) {
   const CommandResult result = renderWith("  c: {type: composite.temporal_blend, steps: [a], dates: [2004-13-15]}\n");
   EXPECT_EQ(result.exitCode, 1);
