@@ -56,7 +56,7 @@ void requireAspects(const std::vector<const Layer*>& layers, const SourceLocatio
                       std::to_string(i + 1) + " of its `layers` is in no projection that samples the equator or a "
                       "pole best (it is procedural or composed, HEALPix, or an oblique or transverse aspect)",
                   "use method: isotropy, which weighs layers of any projection by the shape of their texels; or "
-                  "give only longitude/latitude maps and polar caps (stereographic, or orthographic or perspective "
+                  "give only longitude/latitude maps and polar caps (polar stereographic, or orthographic or perspective "
                   "centred on a pole)");
 }
 
