@@ -2,6 +2,7 @@
 // each is sampled where it lands (seed 000 section 4.1; digest 000 section 5.1), so that a global map and
 // polar caps compose into one layer sharp at the equator and at the poles, with no seam where they cross.
 #include <memory>
+#include <numbers>
 
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
@@ -11,6 +12,10 @@
 
 namespace strata::composite {
 namespace {
+
+using Method = ProjectionQualityLayer::Method;
+
+constexpr double kDegree = std::numbers::pi / 180.0;  // radians per degree
 
 std::vector<const Layer*> inputLayers(const NodeSetup& setup) {
   std::vector<const Layer*> layers;
@@ -23,15 +28,58 @@ std::vector<const Layer*> inputLayers(const NodeSetup& setup) {
   return layers;
 }
 
+// The band's inner and outer latitude in radians; the declaration has kept both within [0, 90] degrees.
+glm::dvec2 bandOf(const ParameterSet& parameters) {
+  const std::vector<double>& band = parameters.reals("band");
+  if (!(0.0 < band[0] && band[0] < band[1] && band[1] < 90.0))
+    throw Error(parameters.where("band"),
+                "the band " + formatValue(parameters.value("band")) +
+                    " is not an inner and a greater outer latitude strictly between 0 and 90 degrees",
+                "give band: [inner, outer] with 0 < inner < outer < 90, e.g. [50, 70]");
+  return glm::dvec2(band[0], band[1]) * kDegree;
+}
+
+ProjectionQualityLayer::Weighting weightingOf(const ParameterSet& parameters) {
+  return {.method = parameters.string("method") == "latitude" ? Method::Latitude : Method::Isotropy,
+          .quality = parameters.real("quality"),
+          .resolution = parameters.boolean("resolution"),
+          .band = bandOf(parameters)};
+}
+
+// The latitude method weighs each layer by the region its projection samples best, which a raster knows once
+// its node has placed it (createResources, upstream of this node's).
+void requireAspects(const std::vector<const Layer*>& layers, const SourceLocation& where) {
+  for (std::size_t i = 0; i < layers.size(); ++i)
+    if (layers[i]->aspect() == ProjectionAspect::Other)
+      throw Error(where,
+                  "method: latitude weighs each layer by the region its projection samples best, but layer " +
+                      std::to_string(i + 1) + " of its `layers` is in no projection that samples the equator or a "
+                      "pole best (it is procedural or composed, HEALPix, or an oblique or transverse aspect)",
+                  "use method: isotropy, which weighs layers of any projection by the shape of their texels; or "
+                  "give only longitude/latitude maps and polar caps (polar stereographic, or orthographic or perspective "
+                  "centred on a pole)");
+}
+
 class ProjectionQuality : public Node {
  public:
-  explicit ProjectionQuality(const NodeSetup& setup) : layer_(setup.id, inputLayers(setup)) {
-    layer_.setWeighting(setup.parameters.real("quality"), setup.parameters.boolean("resolution"));
+  explicit ProjectionQuality(const NodeSetup& setup)
+      : methodWhere_(setup.parameters.where("method")),
+        inputs_(inputLayers(setup)),
+        weighting_(weightingOf(setup.parameters)),
+        layer_(setup.id, inputs_) {
+    layer_.setWeighting(weighting_);
+  }
+
+  void createResources(GpuContext&) override {
+    if (weighting_.method == Method::Latitude) requireAspects(inputs_, methodWhere_);
   }
 
   Layer* layer() override { return &layer_; }
 
  private:
+  SourceLocation methodWhere_;
+  std::vector<const Layer*> inputs_;
+  ProjectionQualityLayer::Weighting weighting_;
   ProjectionQualityLayer layer_;
 };
 
@@ -39,16 +87,31 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "composite.projection_quality";
   type.category = NodeCategory::Compositor;
-  type.summary = "Blends layers of one kind by how well each is sampled where it lands (isotropy and resolution)";
+  type.summary = "Blends layers of one kind by how well each is sampled where it lands (isotropy, or latitude)";
   type.inputs = {{.name = "layers", .type = PortType::Layer, .list = true,
                   .doc = "layers of one kind in any projections: a global map and polar caps, strips, insets"}};
   type.output = PortType::Layer;
+  // Isotropy by default: it weighs layers of any projection, procedural ones included (seed 000 section 4.1.2
+  // calls it the general method); latitude needs every layer to be a cylindrical map or a polar cap.
   type.parameters = {
+      {.name = "method", .type = ParameterType::Choice, .defaultValue = std::string("isotropy"),
+       .doc = "isotropy: by the shape of each layer's texels where they land (thesis method 2); latitude: a "
+              "longitude/latitude map fades into polar caps across `band` (method 1, its cubic falloff)",
+       .choices = {"isotropy", "latitude"}},
       {.name = "quality", .type = ParameterType::Real, .defaultValue = 4.0, .minimum = 1.01, .maximum = 1000.0,
-       .doc = "n of the isotropy weight 1 - |log k / log n|: texels n times longer than wide count nothing (4: the "
-              "thesis finds 2 extremely aggressive, and larger n gentler on slopes seen edge on)"},
+       .doc = "isotropy method: n of the weight 1 - |log k / log n|: texels n times longer than wide count nothing "
+              "(4: the thesis finds 2 extremely aggressive, and larger n gentler on slopes seen edge on)"},
       {.name = "resolution", .type = ParameterType::Boolean, .defaultValue = true,
-       .doc = "weigh by texels a pixel as well (up to one), so that the sharper of two well-shaped layers wins"},
+       .doc = "isotropy method: weigh by texels a pixel as well (up to one), so that the sharper of two "
+              "well-shaped layers wins; the latitude method's weights depend on the place alone, not the view"},
+      // 50 to 70: a longitude/latitude map's texels are 1.6 times wider than tall at 50 degrees and 2.9 times at
+      // 70 (1 / cos), while a polar stereographic cap's are square everywhere and, true to scale at its pole,
+      // at most 13% larger at 50 degrees; the digest's note (000 section 5.1) gives the same band.
+      {.name = "band", .type = ParameterType::RealList, .defaultValue = std::vector<double>{50.0, 70.0},
+       .minimum = 0.0, .maximum = 90.0, .units = "deg",
+       .doc = "latitude method: the |latitude| where the map starts to fade (inner) and is gone (outer), the polar "
+              "caps fading in across it as their complement",
+       .count = 2},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<ProjectionQuality>(setup); };
   return type;

@@ -2,20 +2,32 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include <strata/layer.hpp>
 
 namespace strata::composite {
 
-// The layers blended by how well each is sampled where it lands (seed 000 section 4.1; digest 000 section 5.1,
-// method 2): per sample, each input's value counts with the isotropy of its texels there, times their
-// resolution if asked, times its coverage; the sums normalise at the end (value x weight in rgb, weight in
-// alpha: weights need not sum to one). Inputs without texels (procedural layers) count with weight 1.
+// The layers blended by how well each is sampled where it lands (seed 000 section 4.1; digest 000 section 5.1):
+// per sample, each input's value counts with its weight times its coverage, and the sums normalise at the end
+// (value x weight in rgb, weight in alpha: weights need not sum to one). The weight is, by method,
+//   isotropy (method 2): the isotropy of its texels there, times their resolution if asked; inputs without
+//     texels (procedural layers) count with weight 1;
+//   latitude (method 1): a smoothstep of latitude across a band, by the region its projection samples best
+//     (Layer::aspect(), which every input must tell: see the node's check).
 class ProjectionQualityLayer : public Layer {
  public:
+  enum class Method { Isotropy, Latitude };
+  struct Weighting {
+    Method method = Method::Isotropy;
+    double quality = 4.0;     // isotropy: n of the weight (alpha = 0 at texels n times longer than wide)
+    bool resolution = true;   // isotropy: whether resolution counts too
+    glm::dvec2 band{0.0};     // latitude: the inner and outer |latitude| of the band, rad
+  };
+
   ProjectionQualityLayer(const std::string& nodeId, std::vector<const Layer*> inputs);
 
-  // n of the isotropy weight (alpha = 0 at texels n times longer than wide); whether resolution counts.
-  void setWeighting(double quality, bool resolution);
+  void setWeighting(const Weighting& weighting) { weighting_ = weighting; }
 
   LayerKind kind() const override { return inputs_.front()->kind(); }
   std::string samplingFunction() const override { return prefix_; }
@@ -25,11 +37,12 @@ class ProjectionQualityLayer : public Layer {
 
  private:
   std::string accumulation() const;
+  std::string isotropyWeight(const Layer& input) const;
+  std::string latitudeWeight(const Layer& input) const;
 
   std::string prefix_;
   std::vector<const Layer*> inputs_;
-  double quality_ = 4.0;
-  bool resolution_ = true;
+  Weighting weighting_;
 };
 
 }  // namespace strata::composite

@@ -1,5 +1,6 @@
-// composite.projection_quality's weights (seed 000 section 4.1.2, method 2; digest 000 section 5.1), from a
-// layer's texel steps to the next sample along the footprint's x (.xy) and y (.zw), in level-0 texels.
+// composite.projection_quality's weights (seed 000 section 4.1.2; digest 000 section 5.1). Method 2 weighs a
+// layer by its texel steps to the next sample along the footprint's x (.xy) and y (.zw), in level-0 texels;
+// method 1 by latitude, from the region the layer's projection samples best.
 
 // The isotropy of the layer's texels where they land: alpha = 1 - |log k / log n|, k the ratio of the lengths
 // of the gradients of the two texture axes (in texels, as the digest advises, so that a 2:1 map's square
@@ -20,4 +21,17 @@ float resolutionWeight(vec4 steps) {
 // A layer's weight: its isotropy, times its resolution if asked.
 float projectionQualityWeight(vec4 steps, float n, bool resolution) {
   return isotropyWeight(steps, n) * (resolution ? resolutionWeight(steps) : 1.0);
+}
+
+// Method 1, "cubic interpolation over distance" (seed 000 section 4.1.2): the thesis gives no formula, so this
+// is digest 000 section 5.1's note, a smoothstep (cubic) of latitude across `band` (inner and outer |latitude|,
+// rad). A map true along the equator counts fully up to the inner latitude and nothing beyond the outer.
+float equatorialWeight(float lat, vec2 band) {
+  return 1.0 - smoothstep(band.x, band.y, abs(lat));
+}
+
+// A polar cap the complement, in its own hemisphere only (`pole`: 1 north, -1 south): in the other, lat * pole
+// is negative and the smoothstep 0.
+float polarWeight(float lat, float pole, vec2 band) {
+  return smoothstep(band.x, band.y, lat * pole);
 }

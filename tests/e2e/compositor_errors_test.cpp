@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 #include "strata_command.hpp"
 
@@ -35,6 +36,30 @@ TEST_F(CompositorErrors, ProjectionQualityRefusesLayersOfDifferentKinds) {
   EXPECT_TRUE(contains(result.err, "p.yaml:6:3")) << result.err;
   EXPECT_TRUE(contains(result.err, "different kinds (color and height)")) << result.err;
   EXPECT_TRUE(contains(result.err, "fix:")) << result.err;
+}
+
+// Procedural layers have no projection; a raster's is known only once it is placed, after the node is made.
+TEST_F(CompositorErrors, ProjectionQualityByLatitudeNeedsLayersThatSampleTheEquatorOrAPole) {
+  const std::string data = std::string(STRATA_SOURCE_DIR) + "/build/test-data/";
+  for (const auto& [inputs, named] : {std::pair<std::string, std::string>{"[a]", "layer 1"}, {"[gl, hp]", "layer 2"}}) {
+    const CommandResult result = renderWith("  gl: {type: source.gdal, path: " + data + "global-color.tif}\n"
+                                            "  hp: {type: source.gdal, path: " + data + "healpix-color.tif}\n"
+                                            "  c: {type: composite.projection_quality, layers: " + inputs +
+                                            ", method: latitude}\n");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_TRUE(contains(result.err, "p.yaml:7:")) << "at `method`: " << result.err;
+    EXPECT_TRUE(contains(result.err, "(node 'c')")) << result.err;
+    EXPECT_TRUE(contains(result.err, "weighs each layer by the region its projection samples best")) << result.err;
+    EXPECT_TRUE(contains(result.err, named + " of its `layers`")) << result.err;
+    EXPECT_TRUE(contains(result.err, "use method: isotropy")) << result.err;
+  }
+}
+
+TEST_F(CompositorErrors, ProjectionQualityRefusesABandTurnedOver) {
+  const CommandResult result = renderWith("  c: {type: composite.projection_quality, layers: [a], band: [70, 50]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:5:")) << "at `band`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "0 < inner < outer < 90")) << result.err;
 }
 
 TEST_F(CompositorErrors, OverlayMaskCannotFeatherAnOverlayWithoutTexels) {

@@ -107,6 +107,10 @@ std::string ProjectedRasterLayer::texelGlsl() const {
          "}\n";
 }
 
+ProjectionAspect ProjectedRasterLayer::aspect() const {
+  return georeference_.projection ? georeference_.projection->aspect() : ProjectionAspect::Other;
+}
+
 bool ProjectedRasterLayer::onHealpixFaces() const {
   return georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType;
 }

@@ -64,6 +64,8 @@ class Equirectangular final : public Projection {
     return {glm::dvec4(lon0_, centre_ - lon0_, cosTs_, lat0_), glm::dvec4(form_.origin / radius_, 0.0, 0.0)};
   }
   double glslMapScale() const override { return radius_; }
+  // +lat_0 only moves the origin along the meridian: the map stays in its normal aspect.
+  ProjectionAspect aspect() const override { return ProjectionAspect::Equatorial; }
 
  private:
   EquirectangularForm form_;

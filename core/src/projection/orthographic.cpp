@@ -83,6 +83,7 @@ class Orthographic final : public Projection {
     return {glm::dvec4(lon0_, sinLat0_, cosLat0_, e2_), glm::dvec4(form_.origin / a_, nu0_, lat0_)};
   }
   double glslMapScale() const override { return a_; }
+  ProjectionAspect aspect() const override { return azimuthalAspect(form_.lat0); }
 
  private:
   OrthographicForm form_;

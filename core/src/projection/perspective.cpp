@@ -92,6 +92,10 @@ class Perspective final : public Projection {
   }
   // The radius of the horizon on the vertical plane, so that the visible disc spans [-1, 1].
   double glslMapScale() const override { return a_ * horizon_; }
+  // A tilted camera sees the pole obliquely, its texels stretched towards the horizon.
+  ProjectionAspect aspect() const override {
+    return form_.tilt == 0.0 ? azimuthalAspect(form_.lat0) : ProjectionAspect::Other;
+  }
 
  private:
   // The tilted camera's view of a point of the vertical plane, empty behind the camera.

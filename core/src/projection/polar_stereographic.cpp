@@ -61,6 +61,9 @@ class PolarStereographic final : public Projection {
     return {glm::dvec4(lon0_, form_.pole, e_, rhoPerT_), glm::dvec4(form_.origin / a_, 0.0, 0.0)};
   }
   double glslMapScale() const override { return a_; }
+  ProjectionAspect aspect() const override {
+    return form_.pole > 0.0 ? ProjectionAspect::NorthPolar : ProjectionAspect::SouthPolar;
+  }
 
  private:
   // Snyder's t (eq. 15-9) at latitude `lat` towards the pole, with tan(pi/4 - lat/2) written as
@@ -105,7 +108,7 @@ std::unique_ptr<Projection> createStereographic(const ProjParameters& terms, con
   checkEllipsoid(ellipsoid);
   if (!plainFrame(terms)) return nullptr;
   const double lat0 = latitudeTerm(terms, "lat_0");
-  if ((90.0 - std::abs(lat0)) * kDegree >= 1e-10) return nullptr;  // oblique and equatorial aspects
+  if (azimuthalAspect(lat0) == ProjectionAspect::Other) return nullptr;  // oblique and equatorial aspects
   PolarStereographicForm form{.pole = lat0 > 0.0 ? 1.0 : -1.0, .k0 = scaleFactorTerm(terms),
                               .lon0 = terms.real("lon_0", 0.0), .origin = falseOrigin(terms), .ellipsoid = ellipsoid};
   if (terms.has("lat_ts")) {

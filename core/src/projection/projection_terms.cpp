@@ -47,6 +47,11 @@ double latitudeTerm(const ProjParameters& terms, const std::string& key, double 
   return degrees;
 }
 
+ProjectionAspect azimuthalAspect(double lat0) {
+  if ((90.0 - std::abs(lat0)) * kDegree >= 1e-10) return ProjectionAspect::Other;
+  return lat0 > 0.0 ? ProjectionAspect::NorthPolar : ProjectionAspect::SouthPolar;
+}
+
 double scaleFactorTerm(const ProjParameters& terms) {
   const double k0 = terms.has("k_0") ? terms.real("k_0", 1.0) : terms.real("k", 1.0);
   if (!(k0 > 0.0))

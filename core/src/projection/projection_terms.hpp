@@ -30,6 +30,9 @@ bool plainFrame(const ProjParameters& terms);
 
 // A latitude term in degrees; throws when outside [-90, 90].
 double latitudeTerm(const ProjParameters& terms, const std::string& key, double fallbackDegrees = 0.0);
+// The aspect of an azimuthal map centred on latitude `lat0` (degrees): polar where the centre is a pole (to
+// 1e-10 rad, PROJ's tolerance for the polar aspects), Other elsewhere.
+ProjectionAspect azimuthalAspect(double lat0);
 // +k_0 (or its alias +k), 1 when absent; throws unless positive.
 double scaleFactorTerm(const ProjParameters& terms);
 // The false easting and northing (+x_0, +y_0) in metres.

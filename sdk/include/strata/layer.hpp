@@ -5,6 +5,7 @@
 
 #include <strata/page_demand.hpp>
 #include <strata/port.hpp>
+#include <strata/projection.hpp>
 
 namespace strata {
 
@@ -40,6 +41,9 @@ class Layer {
   // the distance in level-0 texels from p to the nearest edge of the raster (none across the seam of one that
   // wraps round the body), negative outside it: where composite.overlay_mask feathers an overlay's extent.
   virtual std::string edgeDistanceFunction() const { return {}; }
+  // Which region of the body its projection samples best (ProjectionAspect), once its node has created its
+  // GPU resources (rasters are placed then); Other for layers with none (procedural, composed).
+  virtual ProjectionAspect aspect() const { return ProjectionAspect::Other; }
   virtual std::string glsl() const = 0;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;

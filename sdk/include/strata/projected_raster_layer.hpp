@@ -29,6 +29,7 @@ class ProjectedRasterLayer : public Layer {
   std::string samplingFunction() const override { return prefix_; }
   std::string texelStepsFunction() const override { return prefix_ + "_texelSteps"; }
   std::string edgeDistanceFunction() const override { return prefix_ + "_edgeDistance"; }
+  ProjectionAspect aspect() const override;
 
  protected:
   // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.

@@ -40,6 +40,18 @@ class ProjParameters {
   std::map<std::string, std::string> terms_;
 };
 
+// Where a projection samples the body best, in cartography's terms of aspect: a cylindrical map in its normal
+// (equatorial) aspect is true along the whole equator and stretches its texels towards the poles; an azimuthal
+// map in a polar aspect is true at its pole and stretches them towards the equator. Compositors that weigh
+// layers by latitude (composite.projection_quality's latitude method) read it.
+enum class ProjectionAspect {
+  Other,       // neither, or not said: oblique and transverse aspects (an azimuthal map centred on a point of
+               // the equator samples a point well, not the equator), HEALPix, projections that do not tell
+  Equatorial,  // cylindrical, normal aspect (longitude/latitude, eqc)
+  NorthPolar,  // azimuthal, centred on the north pole (polar stereographic, orthographic at lat_0 = 90, ...)
+  SouthPolar,  // azimuthal, centred on the south pole
+};
+
 // A map projection (DESIGN.md "Projections"): geodetic longitude and latitude in radians to map
 // coordinates (x, y) in the units of the raster's geotransform (metres for projected CRSs, degrees for
 // geographic ones), and back, in double precision. Its GLSL side does the forward mapping per vertex and
@@ -66,6 +78,8 @@ class Projection {
   // Periodic projections: the longitude (radians) around which forward() wraps, so that a raster whose
   // x range is, say, [0, 360) degrees sees longitudes in that range. Others ignore it.
   virtual void setLongitudeCentre(double) {}
+  // Which region it samples best, from its parameters (e.g. PROJ's +lat_0 of an azimuthal map).
+  virtual ProjectionAspect aspect() const { return ProjectionAspect::Other; }
 
   // The GLSL side. glslInclude() names a file of the shader library that defines
   //   vec3 <glslFunction()>(vec2 lonlat, vec4 a, vec4 b)
