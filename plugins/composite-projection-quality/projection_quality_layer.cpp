@@ -66,6 +66,10 @@ void ProjectionQualityLayer::bind(ShaderProgram& program, TextureUnits& units) c
   program.set(prefix_ + "_band", glm::vec2(weighting_.band));
 }
 
+void ProjectionQualityLayer::setPageDemand(PageDemand demand) const {
+  for (const Layer* input : inputs_) input->setPageDemand(demand);
+}
+
 // Weighted averages stay within the inputs' values, and where none has data the layer has none.
 std::optional<ValueRange> ProjectionQualityLayer::valueRange() const {
   std::optional<ValueRange> range;

@@ -33,6 +33,7 @@ class ProjectionQualityLayer : public Layer {
   std::string samplingFunction() const override { return prefix_; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
+  void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override;
 
  private:

@@ -43,6 +43,14 @@ std::string TemporalBlendLayer::faceSamplingFunction() const {
   return everyStepHas(&Layer::faceSamplingFunction) ? prefix_ + "_faceSample" : std::string();
 }
 
+// The steps' aspect where they share one (a series of one instrument's maps), so that a temporal layer can
+// feed projection_quality's latitude weighting.
+ProjectionAspect TemporalBlendLayer::aspect() const {
+  const ProjectionAspect first = steps_.front()->aspect();
+  const bool shared = std::all_of(steps_.begin(), steps_.end(), [first](const Layer* step) { return step->aspect() == first; });
+  return shared ? first : ProjectionAspect::Other;
+}
+
 std::string TemporalBlendLayer::glsl() const {
   const std::string& p = prefix_;
   std::string code;

@@ -26,6 +26,7 @@ class TemporalBlendLayer : public Layer {
   std::string texelStepsFunction() const override;
   std::string edgeDistanceFunction() const override;
   std::string faceSamplingFunction() const override;
+  ProjectionAspect aspect() const override;
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
