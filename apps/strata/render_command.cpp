@@ -7,14 +7,17 @@
 #include <strata/gl/context.hpp>
 
 #include "command_options.hpp"
+#include "date_sweep.hpp"
 #include "commands.hpp"
 
 namespace strata::cli {
 namespace {
 
 struct RenderOptions : PipelineOptions {
-  std::string output;  // default: out/<pipeline name>.png
+  std::string output;  // default: out/<pipeline name>.png, or out/<pipeline name>_%04d.png for a sweep
   bool stats = false;
+  std::string dates;   // --dates FIRST/LAST: a sweep through the scene's date
+  int frames = 0;
 };
 
 // What the last frame made and cost, for --stats.
@@ -33,20 +36,42 @@ void printStatistics(const Engine& engine) {
               static_cast<unsigned long long>(pages.evicted), static_cast<unsigned long long>(pages.failed));
 }
 
+std::string outputOf(const RenderOptions& options, const char* suffix) {
+  if (!options.output.empty()) return options.output;
+  return (std::filesystem::path("out") / (std::filesystem::path(options.pipeline).stem().string() + suffix)).string();
+}
+
+// Each frame of a sweep waits for every page it wants (renderComplete), so the sequence is the same on every
+// run, whatever the loaders' timing.
+void renderDateSweep(Engine& engine, const DateSweep& sweep, const std::string& pattern, FrameSize size) {
+  for (int frame = 0; frame < sweep.frames; ++frame) {
+    engine.date() = sweep.dateOf(frame);
+    engine.renderComplete(size.width, size.height).write(frameFileName(pattern, frame));
+  }
+  std::printf("strata: wrote %d frames %s from %s to %s", sweep.frames, pattern.c_str(),
+              formatIsoDate(sweep.first).c_str(), formatIsoDate(sweep.last).c_str());
+}
+
 void render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
+  const bool sweeping = !options.dates.empty();
+  const DateSweep sweep = sweeping ? parseDateSweep(options.dates, options.frames) : DateSweep{};
+  const std::string pattern = outputOf(options, "_%04d.png");
+  if (sweeping) checkFramePattern(pattern);  // before the pipeline loads: a typo costs nothing
   auto context = createHeadlessContext(options.glDebug);
   enableGlDebugOutput(options.glDebug);
   Engine engine;
   engine.load(options.pipeline, options.overrides);
-  const FrameOutput& frame = engine.renderComplete(options.size.width, options.size.height);
-  const std::filesystem::path file =
-      options.output.empty() ? std::filesystem::path("out") / (std::filesystem::path(options.pipeline).stem().string() + ".png")
-                             : std::filesystem::path(options.output);
-  frame.write(file);
+  if (sweeping) {
+    renderDateSweep(engine, sweep, pattern, options.size);
+  } else {
+    const std::filesystem::path file = outputOf(options, ".png");
+    engine.renderComplete(options.size.width, options.size.height).write(file);
+    std::printf("strata: wrote %s", file.c_str());
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("strata: wrote %s (%dx%d) in %.1f s on %s\n", file.c_str(), options.size.width, options.size.height,
-              seconds, currentGlInfo().renderer.c_str());
+  std::printf(" (%dx%d) in %.1f s on %s\n", options.size.width, options.size.height, seconds,
+              currentGlInfo().renderer.c_str());
   if (options.stats) printStatistics(engine);
 }
 
@@ -57,6 +82,12 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   CLI::App* command = app.add_subcommand("render", "render a pipeline headless to an image file");
   addPipelineOptions(*command, *options);
   command->add_option("-o,--output", options->output, "the PNG file to write (default out/<pipeline>.png)");
+  command->add_option("--dates", options->dates,
+                      "render a sequence through the scene's date: FIRST/LAST, e.g. 2004-01-01/2004-12-31, with --frames "
+                      "and -o naming each frame's file with a field such as %04d")
+      ->type_name("FIRST/LAST");
+  command->add_option("--frames", options->frames, "frames of the --dates sequence, evenly spaced, both ends included")
+      ->needs("--dates");
   command->add_flag("--stats", options->stats,
                     "print the last frame's patches, vertices, triangles and phase times, and the page cache's state");
   command->callback([options, &exitCode] { exitCode = reportingErrors([&] { render(*options); }); });

@@ -103,6 +103,36 @@ TEST_F(StrataCommandTest, RenderDrapesImageryWithBothOceanAndLandColours) {
   EXPECT_GT(reddish, globe / 5) << "under 20% of the globe is land-coloured";
 }
 
+// --dates: a frame sequence through the scene's date. pipelines/temporal_blend.yaml looks at 35 degrees north,
+// where January's snow reaches 40 degrees and July's draws back to 85: January's frame is the whiter.
+TEST_F(StrataCommandTest, RenderSweepsThroughTheScenesDate) {
+  const std::string pattern = file("year_%02d.png").string();
+  const CommandResult result = run({"render", "pipelines/temporal_blend.yaml", "--size", "96x72", "--dates",
+                                    "2004-01-01/2004-07-01", "--frames", "3", "-o", pattern});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "wrote 3 frames")) << result.out;
+  std::array<double, 3> brightness{};
+  for (int frame = 0; frame < 3; ++frame) {
+    const Image image = readImage(file("year_0" + std::to_string(frame) + ".png"));
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const auto [r, g, b] = rgb(image, x, y);
+        brightness[std::size_t(frame)] += (r + g + b) / (3.0 * image.width * image.height);
+      }
+  }
+  std::printf("mean brightness: January %.1f, April %.1f, July %.1f\n", brightness[0], brightness[1], brightness[2]);
+  EXPECT_GT(brightness[0], brightness[1] + 5.0);
+  EXPECT_GT(brightness[1], brightness[2]);
+}
+
+TEST_F(StrataCommandTest, RenderSweepNeedsAFileNameField) {
+  const CommandResult result = run({"render", "pipelines/temporal_blend.yaml", "--dates", "2004-01-01/2004-07-01",
+                                    "--frames", "3", "-o", file("year.png").string()});
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "-o: error:")) << result.err;
+  EXPECT_TRUE(contains(result.err, "%04d")) << result.err;
+}
+
 // --stats: with geometry.icosahedral's defaults (300 patches of depth 5: 561 vertices and 1024 triangles
 // each, fewer triangles along edges that meet coarser neighbours) the numbers follow from the patches.
 TEST_F(StrataCommandTest, RenderStatsCountPatchesVerticesAndTriangles) {
