@@ -7,9 +7,13 @@
 //   float radius          m: the body's, to turn height differences into slopes
 
 // The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
-// vertex spacing.
+// vertex spacing along the ground each way: east, that is spacing / cos(latitude) of longitude. The footprint
+// is the geometry's explicit stand-in for screen derivatives (digest 000 section 5.1), so a longitude/latitude
+// map's texels near a pole show as the slivers they are to composite.projection_quality's isotropy weight,
+// and each layer filters over the ground a vertex spans.
 float heightAt(vec2 fromReference, vec3 normal, float spacing) {
-  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(spacing, 0.0), vec2(0.0, spacing),
+  float east = spacing / max(cos(referenceLonlat.y + fromReference.y), 1e-4);
+  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(east, 0.0), vec2(0.0, spacing),
                                 fromReference);
   vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
   return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
