@@ -8,7 +8,7 @@ namespace strata::composite {
 // A local layer laid over a base layer (seed 000 section 4.2; digest 000 section 5.2): where the overlay has
 // data (its extent, nodata and alpha: its coverage, times a mask layer's value where one is given) it hides
 // the base, with a hard edge or one feathered over a width in the overlay's texels or in metres, from that
-// coverage averaged over the width; elsewhere the base shows. Where the overlay has no data its sampling
+// coverage averaged over half the width; elsewhere the base shows. Where the overlay has no data its sampling
 // returns at once, so the work stays within its bounds.
 class OverlayMaskLayer : public Layer {
  public:
