@@ -12,8 +12,20 @@
 namespace strata::composite {
 namespace {
 
+// One node on two of the ports would paste its layer's GLSL into the program twice, which does not compile.
+void refuseRepeatedInputs(const NodeSetup& setup) {
+  const Node *base = setup.input("base"), *overlay = setup.input("overlay"), *mask = setup.input("mask");
+  if (base == overlay)
+    throw Error(setup.where, "the base and the overlay are the same node", "lay another layer over the base");
+  if (mask == base || mask == overlay)
+    throw Error(setup.where, std::string("the mask is also the ") + (mask == base ? "base" : "overlay"),
+                "give the mask a node of its own (source.gdal, kind: mask); the overlay's own coverage (its "
+                "nodata, its alpha) limits it without one");
+}
+
 // The overlay, once it is known to be of the base's kind.
 const Layer& overlayOf(const NodeSetup& setup) {
+  refuseRepeatedInputs(setup);
   const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
   if (base.kind() != overlay.kind())
     throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
