@@ -10,9 +10,10 @@
 //
 // The other tests look closer (42 km up, an overlay texel of 0.0098 degrees, 579 m, about 4 pixels) at an
 // edge at longitude 0 of another kind each: the extent of an overlay, its nodata (its west part), a mask
-// raster (0 west, 1 east), a polygon from a GeoJSON file. Their overlays and masks are 4096 texels wide, so
-// that a feather of 8 texels finds its averaged coverage in their pyramids (it averages over half its width,
-// level 2's 4 x 4 texels; a layer's coarsest level is its first of one page, 512 texels). Tolerances:
+// raster (0 west, 1 east), a polygon from a GeoJSON file, the same polygon in metres (a GeoPackage in
+// equidistant cylindrical). Their overlays and masks are 4096 texels wide, so that a feather of 8 texels
+// finds its averaged coverage in their pyramids (it averages over half its width, level 2's 4 x 4 texels; a
+// layer's coarsest level is its first of one page, 512 texels). Tolerances:
 // - each edge lies where its data say: hard, the middle of the step within 2 pixels of the middle column
 //   (120); feathered, the ramp's start, since a feather fades in from the edge inwards;
 // - hard, the weight rises from 0.1 to 0.9 within 4 pixels: a texel's bilinear filter of the coverage (0.8 of
@@ -22,16 +23,19 @@
 //   texels x 4 pixels = 13), the others the averaged coverage, which reaches 1 between a quarter and the
 //   whole of the width as the edge falls in the coarse levels' texels.
 // Measured on llvmpipe: extent 12 pixels; nodata 3 hard, 8 feathered; raster mask 3 and 8; polygon mask 3
-// and 12; every edge at pixels 118 to 122. The nodata and raster-mask edges lie in the middle of texels of
-// every coarser level: there GDAL's own reductions (a nodata mask to "any valid", 0/1 bytes rounded) made
-// steps of them, which source.gdal now refines (raster_reading.cpp).
+// and 12, in degrees and in metres alike; every edge at pixels 118 to 122. The nodata and raster-mask edges
+// lie in the middle of texels of every coarser level: there GDAL's own reductions (a nodata mask to "any
+// valid", 0/1 bytes rounded) made steps of them, which source.gdal now refines (raster_reading.cpp).
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
+#include <ogrsf_frmts.h>
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rendering.hpp"
@@ -125,8 +129,8 @@ class OverlayMask : public ::testing::Test {
   }
 
   Ramp rampOf(const std::string& what, double altitude, const std::string& sources, const std::string& laid) {
-    const Image image = renderFrame(*engine_, directory_.write("laid.yaml", pipeline(directory_.path(), altitude, sources, laid)),
-                                    kSize, kSize);
+    const std::string text = pipeline(directory_.path(), altitude, sources, laid);
+    const Image image = renderFrame(*engine_, directory_.write("laid.yaml", text), kSize, kSize);
     const Ramp ramp = rampAcross(image);
     std::printf("%s%s: weight 0.1 to 0.9 from pixel %d to %d, over %d\n", what.c_str(), laid.c_str(), ramp.first,
                 ramp.last, ramp.width());
@@ -206,11 +210,41 @@ TEST_F(OverlayMask, APolygonMaskCutsTheOverlayWhereItSays) {
   const Ramp extent = extentRamp();
   writeColour(file("overlay.tif"), kAcrossTheMiddle, kWide, kHigh, kRed);
   directory_.write("cut.geojson", R"({"type": "FeatureCollection", "features": [{"type": "Feature",
-    "properties": {}, "geometry": {"type": "Polygon", "coordinates": [[[0, -4], [40, -4], [40, 4], [0, 4], [0, -4]]]}}]})");
+    "properties": {}, "geometry": {"type": "Polygon",
+    "coordinates": [[[0, -4], [40, -4], [40, 4], [0, 4], [0, -4]]]}}]})");
   const std::string sources =
       source("overlay", file("overlay.tif")) + source("cut", file("cut.geojson"), ", kind: mask, texels: 4096");
   expectEdgeAtTheMiddle(rampOf("polygon mask", kClose, sources, ", mask: cut"),
                         rampOf("polygon mask", kClose, sources, std::string(", mask: cut") + kFeather), extent);
+}
+
+// The same rectangle in a GeoPackage, in equidistant cylindrical metres: a polygon masks in its layer's CRS.
+void writeRectangleInMetres(const std::filesystem::path& file) {
+  GDALAllRegister();
+  std::unique_ptr<GDALDataset> dataset(
+      GetGDALDriverManager()->GetDriverByName("GPKG")->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+  OGRSpatialReference crs;
+  crs.SetFromUserInput("+proj=eqc +R=3396190");
+  OGRLayer* layer = dataset->CreateLayer("cut", &crs, wkbPolygon);
+  const double degree = 3396190.0 * std::numbers::pi / 180.0;  // metres of a degree along the equator
+  OGRLinearRing ring;
+  for (const auto& [lon, lat] : std::vector<std::pair<double, double>>{{0, -4}, {40, -4}, {40, 4}, {0, 4}, {0, -4}})
+    ring.addPoint(lon * degree, lat * degree);
+  OGRPolygon rectangle;
+  rectangle.addRing(&ring);
+  OGRFeature feature(layer->GetLayerDefn());
+  feature.SetGeometry(&rectangle);
+  ASSERT_EQ(layer->CreateFeature(&feature), OGRERR_NONE);
+}
+
+TEST_F(OverlayMask, APolygonInProjectedMetresCutsAlike) {
+  const Ramp extent = extentRamp();
+  writeColour(file("overlay.tif"), kAcrossTheMiddle, kWide, kHigh, kRed);
+  writeRectangleInMetres(file("cut.gpkg"));
+  const std::string sources =
+      source("overlay", file("overlay.tif")) + source("cut", file("cut.gpkg"), ", kind: mask, texels: 4096");
+  expectEdgeAtTheMiddle(rampOf("projected polygon", kClose, sources, ", mask: cut"),
+                        rampOf("projected polygon", kClose, sources, std::string(", mask: cut") + kFeather), extent);
 }
 
 }  // namespace
