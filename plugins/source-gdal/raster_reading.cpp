@@ -92,12 +92,19 @@ void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int
   }
 }
 
-// PageFormat::Values: value x coverage, coverage, as 32-bit floats. The values of masks, whose edges are
-// feathered, are refined at edges as coverage is (readBand).
+// The values of a mask, whose edges are feathered, are refined at edges as coverage is (readBand), where GDAL
+// rounds them (integer bands: 0/1 masks) and nothing is masked (a masked texel read finer would bring the
+// nodata value into the average).
+bool refinesValues(GDALRasterBand& band, LayerKind kind) {
+  return kind == LayerKind::Mask && !GDALDataTypeIsFloating(band.GetRasterDataType()) &&
+         band.GetMaskFlags() == GMF_ALL_VALID;
+}
+
+// PageFormat::Values: value x coverage, coverage, as 32-bit floats.
 void readValues(GDALDataset& dataset, LayerKind kind, const RasterWindow& window, int width, int height,
                 std::span<std::byte> texels) {
   GDALRasterBand& band = *dataset.GetRasterBand(1);
-  const std::vector<float> values = readBand(band, window, width, height, kind == LayerKind::Mask);
+  const std::vector<float> values = readBand(band, window, width, height, refinesValues(band, kind));
   const std::vector<float> coverage = readCoverage(band, window, width, height);
   for (std::size_t i = 0; i < values.size(); ++i) {
     const float c = std::isfinite(values[i]) ? coverage[i] : 0.0f;
