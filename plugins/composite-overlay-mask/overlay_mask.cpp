@@ -1,5 +1,6 @@
 // composite.overlay_mask: a local layer (a strip along a ground track, a crater map, a LIDAR patch) laid over a
-// base layer of any resolution, with a hard or feathered edge (seed 000 section 4.2; digest 000 section 5.2).
+// base layer of any resolution where it has data and an optional mask allows, with a hard or feathered edge
+// (seed 000 section 4.2; digest 000 section 5.2).
 #include <memory>
 
 #include <strata/node.hpp>
@@ -11,14 +12,32 @@
 namespace strata::composite {
 namespace {
 
+// One node on two of the ports would paste its layer's GLSL into the program twice, which does not compile.
+void refuseRepeatedInputs(const NodeSetup& setup) {
+  const Node *base = setup.input("base"), *overlay = setup.input("overlay"), *mask = setup.input("mask");
+  if (base == overlay)
+    throw Error(setup.where, "the base and the overlay are the same node", "lay another layer over the base");
+  if (mask == base || mask == overlay)
+    throw Error(setup.where, std::string("the mask is also the ") + (mask == base ? "base" : "overlay"),
+                "give the mask a node of its own (source.gdal, kind: mask); the overlay's own coverage (its "
+                "nodata, its alpha) limits it without one");
+}
+
 // The overlay, once it is known to be of the base's kind.
 const Layer& overlayOf(const NodeSetup& setup) {
+  refuseRepeatedInputs(setup);
   const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
   if (base.kind() != overlay.kind())
     throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
                                  toString(base.kind()) + " layer",
                 "lay heights over heights, colours over colours");
   return overlay;
+}
+
+// The mask, where one is given: any layer, whose value says where the overlay shows.
+const Layer* maskOf(const NodeSetup& setup) {
+  Node* mask = setup.input("mask");
+  return mask ? mask->layer() : nullptr;
 }
 
 OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
@@ -33,7 +52,8 @@ OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
 class OverlayMask : public Node {
  public:
   explicit OverlayMask(const NodeSetup& setup)
-      : layer_(setup.id, *setup.input("base")->layer(), overlayOf(setup), edgeOf(setup, overlayOf(setup))) {}
+      : layer_(setup.id, *setup.input("base")->layer(), overlayOf(setup), maskOf(setup),
+               edgeOf(setup, overlayOf(setup))) {}
 
   Layer* layer() override { return &layer_; }
 
@@ -45,10 +65,14 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "composite.overlay_mask";
   type.category = NodeCategory::Compositor;
-  type.summary = "Lays a local layer over a base layer where it has data, with a hard or feathered edge";
+  type.summary =
+      "Lays a local layer over a base layer where it has data (and a mask allows), with a hard or feathered edge";
   type.inputs = {{.name = "base", .type = PortType::Layer, .doc = "the layer beneath, of any resolution"},
                  {.name = "overlay", .type = PortType::Layer,
-                  .doc = "the local layer on top, of the same kind: where it has data (its extent, nodata, alpha)"}};
+                  .doc = "the local layer on top, of the same kind: where it has data (its extent, nodata, alpha)"},
+                 {.name = "mask", .type = PortType::Layer, .optional = true,
+                  .doc = "where the overlay may show: a layer whose value (0 to 1, e.g. source.gdal kind: mask, from a "
+                         "raster or a vector file's polygons) times its coverage multiplies the overlay's"}};
   type.output = PortType::Layer;
   type.parameters = {
       {.name = "feather", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e7,

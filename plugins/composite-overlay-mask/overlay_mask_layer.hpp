@@ -6,9 +6,10 @@
 namespace strata::composite {
 
 // A local layer laid over a base layer (seed 000 section 4.2; digest 000 section 5.2): where the overlay has
-// data (its extent, nodata and alpha: its coverage) it hides the base, with a hard edge or one feathered over
-// a width in the overlay's texels or in metres, from its coverage averaged over that width; elsewhere the
-// base shows. Where the overlay has no data its sampling returns at once, so the work stays within its bounds.
+// data (its extent, nodata and alpha: its coverage, times a mask layer's value where one is given) it hides
+// the base, with a hard edge or one feathered over a width in the overlay's texels or in metres, from that
+// coverage averaged over half the width; elsewhere the base shows. Where the overlay has no data its sampling
+// returns at once, so the work stays within its bounds.
 class OverlayMaskLayer : public Layer {
  public:
   // A feather of 0 is a hard edge. `radius`: the body's, to turn metres into angles.
@@ -18,7 +19,8 @@ class OverlayMaskLayer : public Layer {
     double radius = 1.0;
   };
 
-  OverlayMaskLayer(const std::string& nodeId, const Layer& base, const Layer& overlay, Edge edge);
+  // `mask`, or none: a layer whose value (.r, clamped to [0, 1]) times its coverage limits the overlay's.
+  OverlayMaskLayer(const std::string& nodeId, const Layer& base, const Layer& overlay, const Layer* mask, Edge edge);
 
   LayerKind kind() const override { return base_.kind(); }
   std::string samplingFunction() const override { return prefix_; }
@@ -27,11 +29,13 @@ class OverlayMaskLayer : public Layer {
   std::optional<ValueRange> valueRange() const override;
 
  private:
+  std::string coverage() const;
   std::string edgeWeight() const;
 
   std::string prefix_;
   const Layer& base_;
   const Layer& overlay_;
+  const Layer* mask_;
   Edge edge_;
 };
 

@@ -8,8 +8,9 @@
 
 namespace strata::gdal {
 
-GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind)
-    : path_(dataset->GetDescription()), kind_(kind),
+GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
+                               std::shared_ptr<const MemoryFile> memoryFile)
+    : memoryFile_(std::move(memoryFile)), path_(dataset->GetDescription()), kind_(kind),
       pyramid_(dataset->GetRasterXSize(), dataset->GetRasterYSize()) {
   idle_.push_back(std::move(dataset));
 }

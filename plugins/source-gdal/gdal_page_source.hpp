@@ -9,6 +9,8 @@
 #include <strata/page_source.hpp>
 #include <strata/port.hpp>
 
+#include "memory_file.hpp"
+
 namespace strata::gdal {
 
 // The pages of a raster file, read with GDAL on the page cache's loader threads: level l is read as
@@ -16,8 +18,10 @@ namespace strata::gdal {
 // resolution when it has one (a COG from `strata tile` has all of them).
 class GdalPageSource : public PageSource {
  public:
-  // `dataset` was opened and checked (checkRaster); it serves the first read.
-  GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind);
+  // `dataset` was opened and checked (checkRaster); it serves the first read. `memoryFile`: the in-memory
+  // file it was opened from, if any (a rasterised polygon mask), kept while the source reads it.
+  GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
+                 std::shared_ptr<const MemoryFile> memoryFile = nullptr);
   // The same, paged as `pyramid` says (a pyramid of the raster's size that may stop early).
   GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, PagePyramid pyramid);
   ~GdalPageSource() override;
@@ -38,6 +42,7 @@ class GdalPageSource : public PageSource {
   std::unique_ptr<GDALDataset> borrow() const;
   void giveBack(std::unique_ptr<GDALDataset> dataset) const;
 
+  std::shared_ptr<const MemoryFile> memoryFile_;  // first, so that it goes after every dataset
   std::string path_;
   LayerKind kind_;
   PagePyramid pyramid_;

@@ -1,5 +1,6 @@
 #include "raster_reading.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -12,8 +13,8 @@
 namespace strata::gdal {
 namespace {
 
-// One band (or its mask) of `window` read as floats at width x height, averaged where it is reduced.
-std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, int width, int height) {
+// One band (or its mask) of `window` read as floats at width x height, averaged by GDAL where it is reduced.
+std::vector<float> readReduced(GDALRasterBand& band, const RasterWindow& window, int width, int height) {
   std::vector<float> values(std::size_t(width) * std::size_t(height));
   GDALRasterIOExtraArg extra;
   INIT_RASTERIO_EXTRA_ARG(extra);
@@ -25,9 +26,42 @@ std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, in
   return values;
 }
 
+// Whether `values` hold two different finite values: an edge, of data or of a mask.
+bool holdsAnEdge(const std::vector<float>& values) {
+  const auto first = std::find_if(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
+  return std::any_of(first, values.end(), [&](float v) { return std::isfinite(v) && v != *first; });
+}
+
+// `finer` x `finer` blocks of `values` (width * finer wide) averaged into width x height.
+std::vector<float> boxAveraged(const std::vector<float>& values, int width, int height, int finer) {
+  std::vector<float> averaged(std::size_t(width) * std::size_t(height), 0.0f);
+  const std::size_t finerWidth = std::size_t(width) * finer;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::size_t x = i % finerWidth / finer, y = i / finerWidth / finer;
+    averaged[y * width + x] += values[i];
+  }
+  for (float& value : averaged) value /= float(finer * finer);
+  return averaged;
+}
+
+// GDAL reduces a band in its own type, so averages of integers round (a 0/1 mask's edge becomes 0 or 1),
+// and a nodata mask to "any texel valid" (a 0/255 step). Either would turn the edge of a coarse level into a
+// step, and a feather (composite.overlay_mask), which averages coverage over those levels, into a hard edge.
+// So a reduced read of such a band that holds an edge is read again kFiner times finer and averaged here:
+// edges then lie within 1/kFiner of a texel of the level. 4: that, at 16 times the read, on edge pages only.
+constexpr int kFiner = 4;
+
+std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, int width, int height,
+                            bool refineEdges) {
+  std::vector<float> values = readReduced(band, window, width, height);
+  const int finer = std::min({kFiner, window.width / width, window.height / height});
+  if (!refineEdges || finer < 2 || !holdsAnEdge(values)) return values;
+  return boxAveraged(readReduced(band, window, width * finer, height * finer), width, height, finer);
+}
+
 // Coverage per texel in [0, 1] from the mask band of `band` (0 or 255, averaged where reduced).
 std::vector<float> readCoverage(GDALRasterBand& band, const RasterWindow& window, int width, int height) {
-  std::vector<float> coverage = readBand(*band.GetMaskBand(), window, width, height);
+  std::vector<float> coverage = readBand(*band.GetMaskBand(), window, width, height, true);
   for (float& c : coverage) c /= 255.0f;
   return coverage;
 }
@@ -47,7 +81,8 @@ void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int
   GDALRasterBand& first = *dataset.GetRasterBand(1);
   const float full = first.GetRasterDataType() == GDT_Byte ? 255.0f : 65535.0f;
   std::array<std::vector<float>, 3> rgb;
-  for (int c = 0; c < 3; ++c) rgb[c] = readBand(*dataset.GetRasterBand(bands >= 3 ? c + 1 : 1), window, width, height);
+  for (int c = 0; c < 3; ++c)
+    rgb[c] = readBand(*dataset.GetRasterBand(bands >= 3 ? c + 1 : 1), window, width, height, false);
   const std::vector<float> coverage = readCoverage(first, window, width, height);
   for (std::size_t i = 0; i < coverage.size(); ++i) {
     std::array<std::uint16_t, 4> texel{};
@@ -57,10 +92,19 @@ void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int
   }
 }
 
+// The values of a mask, whose edges are feathered, are refined at edges as coverage is (readBand), where GDAL
+// rounds them (integer bands: 0/1 masks) and nothing is masked (a masked texel read finer would bring the
+// nodata value into the average).
+bool refinesValues(GDALRasterBand& band, LayerKind kind) {
+  return kind == LayerKind::Mask && !GDALDataTypeIsFloating(band.GetRasterDataType()) &&
+         band.GetMaskFlags() == GMF_ALL_VALID;
+}
+
 // PageFormat::Values: value x coverage, coverage, as 32-bit floats.
-void readValues(GDALDataset& dataset, const RasterWindow& window, int width, int height, std::span<std::byte> texels) {
+void readValues(GDALDataset& dataset, LayerKind kind, const RasterWindow& window, int width, int height,
+                std::span<std::byte> texels) {
   GDALRasterBand& band = *dataset.GetRasterBand(1);
-  const std::vector<float> values = readBand(band, window, width, height);
+  const std::vector<float> values = readBand(band, window, width, height, refinesValues(band, kind));
   const std::vector<float> coverage = readCoverage(band, window, width, height);
   for (std::size_t i = 0; i < values.size(); ++i) {
     const float c = std::isfinite(values[i]) ? coverage[i] : 0.0f;
@@ -113,7 +157,7 @@ void readWindow(GDALDataset& dataset, LayerKind kind, const RasterWindow& window
   if (pageFormatOf(kind) == PageFormat::Colour)
     readColour(dataset, window, width, height, texels);
   else
-    readValues(dataset, window, width, height, texels);
+    readValues(dataset, kind, window, width, height, texels);
 }
 
 }  // namespace strata::gdal

@@ -1,5 +1,6 @@
 // source.gdal: a layer from any raster GDAL opens, in any registered projection, of any size: its texels
-// reach the GPU page by page through the engine's page cache.
+// reach the GPU page by page through the engine's page cache. A vector file's polygons become a mask
+// raster first (polygon_mask.hpp), served like any other.
 #include <gdal_priv.h>
 
 #include <algorithm>
@@ -14,6 +15,8 @@
 #include "georeferencing.hpp"
 #include "healpix_page_source.hpp"
 #include "healpix_pyramid_file.hpp"
+#include "polygon_mask.hpp"
+#include "quiet_gdal_errors.hpp"
 #include "raster_reading.hpp"
 #include "value_range.hpp"
 
@@ -44,7 +47,7 @@ class GdalSource : public Node {
                                    {parameters_.string("projection"), parameters_.where("projection"),
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
     warnWithoutOverviews(*dataset);
-    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_);
+    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, polygonMask_);
   }
 
   void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
@@ -52,14 +55,38 @@ class GdalSource : public Node {
   Layer* layer() override { return &layer_; }
 
  private:
-  std::unique_ptr<GDALDataset> openDataset(const SourceLocation& where) const {
+  // The raster at `path`, or the mask of its polygons where GDAL opens it only as a vector file.
+  std::unique_ptr<GDALDataset> openDataset(const SourceLocation& where) {
     const std::string path = parameters_.path("path").string();
-    CPLErrorReset();
-    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
-    if (!dataset)
-      throw Error(where, "GDAL cannot open '" + path + "' as a raster: " + CPLGetLastErrorMsg(),
-                  "check the path, and that `gdalinfo " + path + "` reads it");
-    return dataset;
+    std::string rasterError;
+    {
+      const QuietGdalErrors quiet;  // a vector file is no raster: not worth a message of GDAL's own
+      CPLErrorReset();
+      std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(path.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+      if (dataset) return dataset;
+      rasterError = CPLGetLastErrorMsg();
+    }
+    std::unique_ptr<GDALDataset> vector(GDALDataset::Open(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY));
+    if (!vector)
+      throw Error(where, "GDAL cannot open '" + path + "' as a raster or a vector file: " + rasterError,
+                  "check the path, and that `gdalinfo " + path + "` or `ogrinfo " + path + "` reads it");
+    return polygonMaskOf(*vector, where);
+  }
+
+  std::unique_ptr<GDALDataset> polygonMaskOf(GDALDataset& vector, const SourceLocation& where) {
+    const std::string path = vector.GetDescription();
+    if (kind_ != LayerKind::Mask)
+      throw Error(parameters_.where("kind"),
+                  "'" + path + "' is a vector file, which source.gdal reads as a mask of its polygons",
+                  "add `kind: mask`, and give the layer as a `mask` (composite.overlay_mask)");
+    if (!parameters_.reals("extent").empty())
+      throw Error(parameters_.where("extent"), "'" + path + "' is a vector file, whose polygons say where they lie",
+                  "remove `extent`");
+    PolygonMask mask = rasterisePolygons(
+        vector, {parameters_.string("vector_layer"), parameters_.where("vector_layer"),
+                 int(parameters_.integer("texels")), !parameters_.string("projection").empty(), where});
+    polygonMask_ = std::move(mask.file);
+    return std::move(mask.raster);
   }
 
   // A file that places itself (a HEALPix pyramid) takes no `projection` or `extent`.
@@ -96,6 +123,7 @@ class GdalSource : public Node {
   const PluginRegistry& plugins_;
   LayerKind kind_;
   PagedRasterLayer layer_;
+  std::shared_ptr<const MemoryFile> polygonMask_;  // where a vector file's polygons were rasterised
   std::shared_ptr<GdalPageSource> source_;
   RasterGeoreference georeference_;
 };
@@ -104,10 +132,12 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "source.gdal";
   type.category = NodeCategory::Source;
-  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection";
+  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection, "
+                 "or a mask from the polygons of any vector file it opens (GeoJSON, Shapefile, GeoPackage, ...)";
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "path", .type = ParameterType::Path, .doc = "the raster file; relative to the pipeline file"},
+      {.name = "path", .type = ParameterType::Path,
+       .doc = "the raster file, or a vector file of polygons (with kind: mask); relative to the pipeline file"},
       {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
        .doc = "what the values are: color (8/16-bit sRGB) or one-channel height, scalar, luminance, mask",
        .choices = {"color", "height", "scalar", "luminance", "mask"}},
@@ -123,6 +153,15 @@ NodeTypeDeclaration declaration() {
       {.name = "projection", .type = ParameterType::String, .defaultValue = std::string(),
        .doc = "the raster's CRS when the file's is missing or wrong: WKT, a PROJ string or EPSG:code; empty: the "
               "file's CRS (none: longitude/latitude)"},
+      {.name = "vector_layer", .type = ParameterType::String, .defaultValue = std::string(),
+       .doc = "vector files: the layer whose polygons make the mask; empty: the file's first (GeoJSON and "
+              "Shapefiles have one)"},
+      // 2048: the polygons' edges within half a texel of 1/2048 of their extent, under a pixel wherever the
+      // whole mask fits on a 1920-pixel screen, in 16 MB (Float32); finer edges up close want a larger value,
+      // up to 8192 (256 MB, held in memory while the node lives).
+      {.name = "texels", .type = ParameterType::Integer, .defaultValue = std::int64_t{2048}, .minimum = 16.0,
+       .maximum = 8192.0,
+       .doc = "vector files: the mask raster's texels across the polygons' longer side (how sharp their edges are)"},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<GdalSource>(setup); };
   return type;

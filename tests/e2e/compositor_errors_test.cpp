@@ -123,5 +123,14 @@ TEST_F(CompositorErrors, TemporalBlendDateThatIsNoDay) {
   EXPECT_TRUE(contains(result.err, "element 1 of parameter 'dates' is '2004-13-15', which is not a date")) << result.err;
 }
 
+TEST_F(CompositorErrors, OverlayMaskRefusesAMaskThatIsTheOverlay) {
+  const CommandResult result = renderWith("  o: {type: source.procedural, kind: color}\n"
+                                          "  c: {type: composite.overlay_mask, base: a, overlay: o, mask: o}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:6:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "the mask is also the overlay")) << result.err;
+  EXPECT_TRUE(contains(result.err, "a node of its own")) << result.err;
+}
+
 }  // namespace
 }  // namespace strata::test

@@ -2,7 +2,9 @@
 // registered projections and nodata values no sample can hold end in exit code 1 with the file and a fix.
 // Truncated and corrupt files are read page by page, so they render: each page that cannot be read is
 // reported once, with the file and a fix, and the coarser level stands in for it (or the layer is masked
-// there when there is none). Never a crash or a silent picture.
+// there when there is none). Never a crash or a silent picture. A vector file is read as a mask of its
+// polygons; one that has none, no layer of the name given, or no CRS, or one not asked for as a mask, is an
+// error naming the file and what to do.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -24,6 +26,18 @@ const std::array<double, 6> kNearTheEquator{-30.0, 0.1, 0.0, 15.0, 0.0, -0.1};
 
 class SourceErrors : public StrataCommandTest {
  protected:
+  // Lays a grey raster over itself where the vector file `vector` (`cut`, with `more` said of it) allows.
+  CommandResult renderMask(const fs::path& vector, const std::string& more) const {
+    writeRasterFile(file("grey.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 60, 30, 1, GDT_Byte});
+    return renderTiny(write("p.yaml", "strata: 1\nnodes:\n"
+                                      "  base: {type: source.gdal, path: " + file("grey.tif").string() + "}\n"
+                                      "  over: {type: source.gdal, path: " + file("grey.tif").string() + "}\n"
+                                      "  cut: {type: source.gdal, path: " + vector.string() + more + "}\n"
+                                      "  laid: {type: composite.overlay_mask, base: base, overlay: over, mask: cut}\n"
+                                      "  globe: {type: geometry.icosahedral}\n"
+                                      "  frame: {type: output.image, geometry: globe, surface: [laid]}\n"));
+  }
+
   CommandResult renderRaster(const fs::path& raster, const std::string& kind = "height") const {
     return renderTiny(write("p.yaml", "strata: 1\nnodes:\n"
                                       "  data: {type: source.gdal, path: " + raster.string() + ", kind: " + kind + "}\n"
@@ -91,6 +105,42 @@ TEST_F(SourceErrors, NodataNoSampleCanHoldIsRefusedWithTheValueAndAFix) {
   EXPECT_EQ(result.exitCode, 1) << result.err;
   EXPECT_TRUE(contains(result.err, "nodata -9999")) << result.err;
   EXPECT_TRUE(contains(result.err, "gdal_edit.py")) << result.err;
+}
+
+// A GeoJSON FeatureCollection of one feature of `geometry`.
+std::string geojson(const std::string& geometry) {
+  return R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, "geometry": )" + geometry +
+         "}]}";
+}
+
+const std::string kTriangle = R"({"type": "Polygon", "coordinates": [[[-20, 0], [-10, 0], [-10, 10], [-20, 0]]]})";
+
+void expectRefused(const CommandResult& result, const std::vector<std::string>& parts) {
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "p.yaml")) << "the pipeline line of the source: " << result.err;
+  for (const std::string& part : parts) EXPECT_TRUE(contains(result.err, part)) << part << " in: " << result.err;
+}
+
+TEST_F(SourceErrors, AVectorFileWithoutPolygonsSaysItBoundsNoArea) {
+  const fs::path lines = write("track.geojson", geojson(R"({"type": "LineString", "coordinates": [[0, 0], [10, 5]]})"));
+  expectRefused(renderMask(lines, ", kind: mask"), {"track.geojson", "holds no polygons", "ogrinfo"});
+}
+
+TEST_F(SourceErrors, AVectorLayerThatDoesNotExistIsNamedWithTheLayersThereAre) {
+  const fs::path triangle = write("triangle.geojson", geojson(kTriangle));
+  expectRefused(renderMask(triangle, ", kind: mask, vector_layer: craters"),
+                {"triangle.geojson", "no layer 'craters'", "it has triangle", "vector_layer"});
+}
+
+// A CSV of WKT polygons: OGR reads its geometry, and no CRS, from the WKT column.
+TEST_F(SourceErrors, AVectorFileWithoutACrsAsksForOne) {
+  const fs::path csv = write("triangle.csv", "WKT,id\n\"POLYGON ((-20 0,-10 0,-10 10,-20 0))\",1\n");
+  expectRefused(renderMask(csv, ", kind: mask"), {"triangle.csv", "has no CRS", "projection", "ogr2ogr -a_srs"});
+}
+
+TEST_F(SourceErrors, AVectorFileNotReadAsAMaskAsksForOne) {
+  const fs::path triangle = write("triangle.geojson", geojson(kTriangle));
+  expectRefused(renderMask(triangle, ""), {"triangle.geojson", "is a vector file", "kind: mask"});
 }
 
 }  // namespace
