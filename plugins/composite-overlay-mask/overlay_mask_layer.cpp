@@ -64,6 +64,12 @@ void OverlayMaskLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   program.set(prefix_ + "_radius", float(edge_.radius));
 }
 
+void OverlayMaskLayer::setPageDemand(PageDemand demand) const {
+  base_.setPageDemand(demand);
+  overlay_.setPageDemand(demand);
+  if (mask_) mask_->setPageDemand(demand);
+}
+
 std::optional<ValueRange> OverlayMaskLayer::valueRange() const {
   const std::optional<ValueRange> base = base_.valueRange(), overlay = overlay_.valueRange();
   if (!base || !overlay) return std::nullopt;

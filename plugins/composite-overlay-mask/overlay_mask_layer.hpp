@@ -26,6 +26,9 @@ class OverlayMaskLayer : public Layer {
   std::string samplingFunction() const override { return prefix_; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
+  // The base's: what the composed layer is, but for the overlay's local patch.
+  ProjectionAspect aspect() const override { return base_.aspect(); }
+  void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override;
 
  private:
