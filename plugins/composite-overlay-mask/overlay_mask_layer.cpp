@@ -70,10 +70,6 @@ void OverlayMaskLayer::setPageDemand(PageDemand demand) const {
   if (mask_) mask_->setPageDemand(demand);
 }
 
-std::optional<ValueRange> OverlayMaskLayer::valueRange() const {
-  const std::optional<ValueRange> base = base_.valueRange(), overlay = overlay_.valueRange();
-  if (!base || !overlay) return std::nullopt;
-  return ValueRange{std::min(base->least, overlay->least), std::max(base->greatest, overlay->greatest)};
-}
+std::optional<ValueRange> OverlayMaskLayer::valueRange() const { return spanningRange({&base_, &overlay_}); }
 
 }  // namespace strata::composite

@@ -71,14 +71,6 @@ void ProjectionQualityLayer::setPageDemand(PageDemand demand) const {
 }
 
 // Weighted averages stay within the inputs' values, and where none has data the layer has none.
-std::optional<ValueRange> ProjectionQualityLayer::valueRange() const {
-  std::optional<ValueRange> range;
-  for (const Layer* input : inputs_) {
-    const std::optional<ValueRange> own = input->valueRange();
-    if (!own) return std::nullopt;
-    range = range ? ValueRange{std::min(range->least, own->least), std::max(range->greatest, own->greatest)} : *own;
-  }
-  return range;
-}
+std::optional<ValueRange> ProjectionQualityLayer::valueRange() const { return spanningRange(inputs_); }
 
 }  // namespace strata::composite

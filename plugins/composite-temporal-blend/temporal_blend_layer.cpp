@@ -95,14 +95,6 @@ void TemporalBlendLayer::setPageDemand(PageDemand demand) const {
 }
 
 // A blend of two steps stays within what the steps hold.
-std::optional<ValueRange> TemporalBlendLayer::valueRange() const {
-  std::optional<ValueRange> range;
-  for (const Layer* step : steps_) {
-    const std::optional<ValueRange> own = step->valueRange();
-    if (!own) return std::nullopt;
-    range = range ? ValueRange{std::min(range->least, own->least), std::max(range->greatest, own->greatest)} : *own;
-  }
-  return range;
-}
+std::optional<ValueRange> TemporalBlendLayer::valueRange() const { return spanningRange(steps_); }
 
 }  // namespace strata::composite

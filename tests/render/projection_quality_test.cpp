@@ -67,6 +67,31 @@ double meanDifference(const Image& image, const Image& reference, const View& vi
   return sum / (3.0 * std::max(judged, 1));
 }
 
+// Frames of pipelines seen from one camera, each compared with the planet itself (source.procedural) drawn
+// from there.
+class PlanetComparison {
+ public:
+  explicit PlanetComparison(const Camera& camera)
+      : camera_(camera),
+        engine_(makeEngine()),
+        reference_(render("  planet: {type: source.procedural, kind: color}\n", "planet")),
+        view_(makeView(engine_->pipeline().body, engine_->camera(), kSize, kSize)) {}
+
+  Image render(const std::string& nodes, const std::string& surface) {
+    return renderFrame(*engine_, directory_.write("pipeline.yaml", pipelineOf(nodes, surface, camera_)), kSize, kSize);
+  }
+  double difference(const Image& image, Latitudes latitudes = {}, int leastJudged = 5000) const {
+    return meanDifference(image, reference_, view_, engine_->pipeline().body.radius, latitudes, leastJudged);
+  }
+
+ private:
+  Camera camera_;
+  TemporaryDirectory directory_;
+  std::unique_ptr<Engine> engine_;
+  Image reference_;
+  View view_;
+};
+
 struct Place {
   const char* name;
   Camera camera;
@@ -76,27 +101,19 @@ class ProjectionQuality : public ::testing::TestWithParam<Place> {};
 
 TEST_P(ProjectionQuality, IsAsCloseToThePlanetAsTheBestObservation) {
   ASSERT_TRUE(std::filesystem::exists(kData / "global-color.tif")) << "the test_data fixture did not run";
-  const Camera& camera = GetParam().camera;
-  TemporaryDirectory directory;
-  auto engine = makeEngine();
-  const auto render = [&](const std::string& nodes, const std::string& surface) {
-    return renderFrame(*engine, directory.write("pipeline.yaml", pipelineOf(nodes, surface, camera)), kSize, kSize);
-  };
-  const Image reference = render("  planet: {type: source.procedural, kind: color}\n", "planet");
-  const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
-  const double radius = engine->pipeline().body.radius;
+  PlanetComparison planet(GetParam().camera);
   const std::string inputs = observation("global") + observation("north") + observation("south");
   double best = 1e9;
   for (const std::string name : {"global", "north", "south"}) {
-    const double difference = meanDifference(render(inputs, name), reference, view, radius);
+    const double difference = planet.difference(planet.render(inputs, name));
     std::printf("%s, %s alone: %.2f levels from the planet\n", GetParam().name, name.c_str(), difference);
     best = std::min(best, difference);
   }
   for (const std::string method : {"isotropy", "latitude"}) {
-    const double composed = meanDifference(render(inputs + "  composed: {type: composite.projection_quality, "
-                                                           "layers: [global, north, south], method: " + method + "}\n",
-                                                  "composed"),
-                                           reference, view, radius);
+    const double composed = planet.difference(planet.render(
+        inputs + "  composed: {type: composite.projection_quality, layers: [global, north, south], method: " + method +
+            "}\n",
+        "composed"));
     std::printf("%s, composed by %s: %.2f levels from the planet\n", GetParam().name, method.c_str(), composed);
     EXPECT_LE(composed, 1.1 * best + 0.2) << method;
   }
@@ -116,24 +133,17 @@ double capWeight(double lat) {
 // caps' hemispheres swapped far more.
 TEST(ProjectionQualityLatitude, ShowsNoSeamAcrossTheBand) {
   ASSERT_TRUE(std::filesystem::exists(kData / "global-color.tif")) << "the test_data fixture did not run";
-  const Camera camera{.lon = -30, .lat = 60, .altitude = 2.0e6};
-  TemporaryDirectory directory;
-  auto engine = makeEngine();
-  const auto render = [&](const std::string& nodes, const std::string& surface) {
-    return renderFrame(*engine, directory.write("pipeline.yaml", pipelineOf(nodes, surface, camera)), kSize, kSize);
-  };
-  const Image reference = render("  planet: {type: source.procedural, kind: color}\n", "planet");
-  const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
-  const double radius = engine->pipeline().body.radius;
+  PlanetComparison planet(Camera{.lon = -30, .lat = 60, .altitude = 2.0e6});
   const std::string inputs = observation("global") + observation("north") +
                              "  composed: {type: composite.projection_quality, layers: [global, north], "
                              "method: latitude, band: [50, 70]}\n";
-  const Image global = render(inputs, "global"), north = render(inputs, "north"), composed = render(inputs, "composed");
+  const Image global = planet.render(inputs, "global"), north = planet.render(inputs, "north"),
+              composed = planet.render(inputs, "composed");
   for (double least = 46.0; least < 74.0; least += 4.0) {
     const Latitudes strip{least, least + 4.0};
-    const double byGlobal = meanDifference(global, reference, view, radius, strip, 500);
-    const double byNorth = meanDifference(north, reference, view, radius, strip, 500);
-    const double blended = meanDifference(composed, reference, view, radius, strip, 500);
+    const double byGlobal = planet.difference(global, strip, 500);
+    const double byNorth = planet.difference(north, strip, 500);
+    const double blended = planet.difference(composed, strip, 500);
     const double share = capWeight(least + 2.0), mixed = (1.0 - share) * byGlobal + share * byNorth;
     std::printf("latitudes %.0f to %.0f: composed %.2f, global %.2f, north %.2f, mixed %.2f levels from the planet\n",
                 least, least + 4.0, blended, byGlobal, byNorth, mixed);

@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <strata/page_demand.hpp>
 #include <strata/port.hpp>
@@ -69,6 +70,10 @@ class Layer {
     return std::nullopt;
   }
 };
+
+// The range spanning every one of `layers`' value ranges, within which whatever mixes them stays (a weighted
+// average, a blend in time, one laid over another); none where one of them knows none.
+std::optional<ValueRange> spanningRange(const std::vector<const Layer*>& layers);
 
 // Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.
 std::string glslIdentifier(const std::string& nodeId);
