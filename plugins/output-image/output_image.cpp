@@ -5,6 +5,7 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <strata/colour_config.hpp>
 #include <strata/geometry.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
@@ -17,7 +18,8 @@ namespace {
 
 class ImageOutput : public Node, public FrameOutput {
  public:
-  explicit ImageOutput(const NodeSetup& setup) : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters) {
+  explicit ImageOutput(const NodeSetup& setup)
+      : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters), displayGlsl_(displayGlsl(setup)) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
   }
 
@@ -33,7 +35,8 @@ class ImageOutput : public Node, public FrameOutput {
     program_ = ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
                               {GL_FRAGMENT_SHADER, "output/composite.frag",
                                gpu.shaders->expand("output/composite.frag",
-                                                   {{"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                   {{"STRATA_DISPLAY_GLSL", displayGlsl_},
+                                                    {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
                                                     {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
   }
@@ -63,6 +66,17 @@ class ImageOutput : public Node, public FrameOutput {
   }
 
  private:
+  // The frame leaves scene-linear light through OpenColorIO's display and view (docs/colour.md): the config
+  // $OCIO names, else Strata's own, whose default is the sRGB display's Standard view.
+  static std::string displayGlsl(const NodeSetup& setup) {
+    const ColourConfig config = ColourConfig::load({}, setup.where);
+    const std::string& display = setup.parameters.string("display");
+    const std::string chosen = display.empty() ? config.defaultDisplay() : display;
+    const std::string& view = setup.parameters.string("view");
+    return config.toDisplay(chosen, view.empty() ? config.defaultView(chosen) : view, "strataDisplay",
+                            setup.parameters.where(view.empty() ? "display" : "view"));
+  }
+
   // The light, given in the view (azimuth clockwise from the top of the image, elevation above the image
   // plane toward the viewer), turned into planet-fixed axes. 315/45 is the cartographic convention for
   // shaded relief: light from the upper left, so hills do not read as valleys.
@@ -76,6 +90,7 @@ class ImageOutput : public Node, public FrameOutput {
 
   SurfaceGeometry* geometry_;
   ParameterSet parameters_;
+  std::string displayGlsl_;
   std::vector<const Layer*> surface_;
   ShaderProgram program_;
   std::unique_ptr<FullscreenTriangle> triangle_;  // made with the GL resources, not at construction
@@ -102,6 +117,10 @@ NodeTypeDeclaration declaration() {
        .units = "deg", .doc = "the light's angle above the image plane"},
       {.name = "ambient", .type = ParameterType::Real, .defaultValue = 0.25, .minimum = 0.0, .maximum = 1.0,
        .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable"},
+      {.name = "display", .type = ParameterType::String, .defaultValue = std::string(),
+       .doc = "the OpenColorIO display the frame is for; empty: the config's default (Strata's: sRGB)"},
+      {.name = "view", .type = ParameterType::String, .defaultValue = std::string(),
+       .doc = "the display's view; empty: its default (Strata's sRGB: Standard; Raw shows linear values as they are)"},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<ImageOutput>(setup); };
   return type;

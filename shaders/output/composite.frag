@@ -4,7 +4,9 @@
 // (section 4.1.2), so overlapping layers blend by coverage and weights need not sum to one.
 #include "strata/surface_point.glsl"
 #include "strata/constants.glsl"
-#include "strata/srgb.glsl"
+
+// vec4 strataDisplay(vec4): scene-linear to the display's encoding, OpenColorIO's code (docs/colour.md).
+STRATA_DISPLAY_GLSL
 
 uniform sampler2D surfaceBuffer;
 uniform sampler2D shadingBuffer;
@@ -34,7 +36,7 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   vec4 shadingSample = texelFetch(shadingBuffer, pixel, 0);
   if (shadingSample.a == 0.0) {
-    colour = vec4(linearToSrgb(background), 1.0);
+    colour = vec4(strataDisplay(vec4(clamp(background, 0.0, 1.0), 1.0)).rgb, 1.0);
     return;
   }
   vec4 s = texelFetch(surfaceBuffer, pixel, 0);
@@ -46,5 +48,5 @@ void main() {
   STRATA_SURFACE_LAYERS_ACCUMULATE
   vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
   float light = shade == 1 ? ambient + (1.0 - ambient) * max(dot(normalize(shadingSample.xyz), lightDirection), 0.0) : 1.0;
-  colour = vec4(linearToSrgb(albedo * light), 1.0);
+  colour = vec4(strataDisplay(vec4(clamp(albedo * light, 0.0, 1.0), 1.0)).rgb, 1.0);
 }

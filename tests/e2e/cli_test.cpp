@@ -125,6 +125,18 @@ TEST_F(StrataCommandTest, RenderSweepsThroughTheScenesDate) {
   EXPECT_GT(brightness[1], brightness[2]);
 }
 
+// output.image shows the frame through an OpenColorIO display and view (docs/colour.md); one the config lacks
+// is named at its line with the ones there are.
+TEST_F(StrataCommandTest, UnknownDisplayNamesTheDisplaysThereAre) {
+  const auto pipeline = write("p.yaml", "strata: 1\nnodes:\n  g: {type: geometry.icosahedral}\n"
+                                        "  f: {type: output.image, geometry: g, display: P3}\n");
+  const CommandResult result = renderTiny(pipeline);
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:4:")) << result.err;
+  EXPECT_TRUE(contains(result.err, "the display 'P3' is not in Strata's built-in config")) << result.err;
+  EXPECT_TRUE(contains(result.err, "choose one of 'sRGB'")) << result.err;
+}
+
 TEST_F(StrataCommandTest, RenderSweepNeedsAFileNameField) {
   const CommandResult result = run({"render", "pipelines/temporal_blend.yaml", "--dates", "2004-01-01/2004-07-01",
                                     "--frames", "3", "-o", file("year.png").string()});
