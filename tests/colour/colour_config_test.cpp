@@ -17,6 +17,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 
+#include "compute_each.hpp"
 #include "rendering.hpp"
 #include "temporary_directory.hpp"
 
@@ -47,20 +48,7 @@ void main() {
 )";
   const ShaderLibrary library;
   const ShaderProgram program({{GL_COMPUTE_SHADER, "colour_test.comp", library.expandText(source, "colour_test.comp")}});
-  std::array<GLuint, 2> buffers{};
-  glCreateBuffers(2, buffers.data());
-  glNamedBufferStorage(buffers[0], GLsizeiptr(values.size() * sizeof(float)), values.data(), 0);
-  glNamedBufferStorage(buffers[1], GLsizeiptr(values.size() * 2 * sizeof(float)), nullptr, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-  program.use();
-  program.set("count", unsigned(values.size()));
-  glDispatchCompute(GLuint((values.size() + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<std::array<float, 2>> results(values.size());
-  glGetNamedBufferSubData(buffers[1], 0, GLsizeiptr(results.size() * sizeof(results[0])), results.data());
-  glDeleteBuffers(2, buffers.data());
-  return results;
+  return test::computeEach<std::array<float, 2>>(program, values);
 }
 
 std::vector<float> everyLevel() {

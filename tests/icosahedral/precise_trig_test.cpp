@@ -19,6 +19,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 
+#include "compute_each.hpp"
 #include "rendering.hpp"
 
 namespace strata::icosahedral {
@@ -67,20 +68,7 @@ std::vector<Results> evaluate(const std::vector<glm::vec2>& arguments) {
   const ShaderLibrary library;
   const ShaderProgram program(
       {{GL_COMPUTE_SHADER, "precise_trig_test.comp", library.expandText(kShader, "precise_trig_test.comp")}});
-  std::vector<Results> results(arguments.size());
-  std::array<GLuint, 2> buffers{};
-  glCreateBuffers(2, buffers.data());
-  glNamedBufferStorage(buffers[0], GLsizeiptr(arguments.size() * sizeof(glm::vec2)), arguments.data(), 0);
-  glNamedBufferStorage(buffers[1], GLsizeiptr(results.size() * sizeof(Results)), nullptr, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffers[0]);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, buffers[1]);
-  program.use();
-  program.set("count", unsigned(arguments.size()));
-  glDispatchCompute(GLuint((arguments.size() + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(buffers[1], 0, GLsizeiptr(results.size() * sizeof(Results)), results.data());
-  glDeleteBuffers(2, buffers.data());
-  return results;
+  return test::computeEach<Results>(program, arguments);
 }
 
 // Angles: zero, tiny ones, a logarithmic sweep from 1e-12 to 4, floats next to multiples of pi/4, an even
