@@ -37,7 +37,7 @@ TEST(PluginLoading, BuiltInModulesRegisterTheirTypes) {
   for (const char* type : {"source.gdal", "source.procedural", "geometry.icosahedral", "geometry.pgm", "geometry.healpix",
                            "output.image", "composite.projection_quality", "composite.overlay_mask"})
     EXPECT_NE(registry.find(type), nullptr) << type;
-  ASSERT_EQ(registry.modules().size(), 9u);
+  ASSERT_EQ(registry.modules().size(), 10u);
   EXPECT_EQ(registry.modules()[0].name, "composite-overlay-mask");  // files load in name order
 }
 

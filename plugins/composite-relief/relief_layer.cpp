@@ -1,0 +1,82 @@
+#include "relief_layer.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include <strata/gl/shader_program.hpp>
+
+namespace strata::composite {
+
+ReliefLayer::ReliefLayer(const std::string& nodeId, const Layer& height, const Layer* surface, Lighting lighting,
+                         double radius)
+    : prefix_("layer_" + glslIdentifier(nodeId)), height_(height), surface_(surface), lighting_(lighting),
+      radius_(radius) {}
+
+// Azimuth clockwise from north, altitude above the horizon: east = sin(azimuth) cos(altitude), north =
+// cos(azimuth) cos(altitude), up = sin(altitude) (the convention of cartographic hillshading).
+glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegrees) {
+  const double azimuth = azimuthDegrees * std::numbers::pi / 180.0, altitude = altitudeDegrees * std::numbers::pi / 180.0;
+  return {float(std::sin(azimuth) * std::cos(altitude)), float(std::cos(azimuth) * std::cos(altitude)),
+          float(std::sin(altitude))};
+}
+
+// The height's slopes east and north (metres per metre) at `p`, where it is `h`: central differences of the
+// composed height one footprint away each way along the ground, the footprint's longer axis, so that it
+// filters like a pixel; east, that is d / cos(latitude) of longitude (as height_sampling.glsl's
+// shadingNormal steps).
+std::string ReliefLayer::slopes() const {
+  const std::string& p = prefix_;
+  const std::string h = height_.samplingFunction();
+  return "vec2 " + p + "_slopes(SurfacePoint p, float h) {\n"
+         "  float d = reliefStep(p);\n"
+         "  vec2 east = vec2(d / max(cos(p.lonlat.y), 1e-4), 0.0), north = vec2(0.0, d);\n"
+         "  float eastRise = reliefDifference(" + h + "(reliefNeighbour(p, east)), h, " + h + "(reliefNeighbour(p, -east)));\n"
+         "  float northRise = reliefDifference(" + h + "(reliefNeighbour(p, north)), h, " + h + "(reliefNeighbour(p, -north)));\n"
+         "  return vec2(eastRise, northRise) / (d * " + p + "_radius);\n"
+         "}\n";
+}
+
+// The layer's value: the shade, grey where the height has data, or multiplying the surface's colour (which
+// shows unshaded where the height has none).
+std::string ReliefLayer::shaded() const {
+  const std::string& p = prefix_;
+  const std::string shade = "reliefLambert(" + p + "_slopes(p, height.r), " + p + "_exaggeration, " + p + "_light)";
+  if (!surface_)
+    return "  if (height.a <= 0.0) return vec4(0.0);\n"
+           "  return vec4(vec3(" + shade + "), height.a);\n";
+  return "  vec4 surface = " + surface_->samplingFunction() + "(p);\n"
+         "  if (" + p + "_multiply == 0) return height.a > 0.0 ? vec4(vec3(" + shade + "), height.a) : vec4(0.0);\n"
+         "  if (height.a <= 0.0) return surface;\n"
+         "  return vec4(surface.rgb * mix(1.0, " + shade + ", height.a), surface.a);\n";
+}
+
+std::string ReliefLayer::glsl() const {
+  const std::string& p = prefix_;
+  return height_.glsl() + (surface_ ? surface_->glsl() : std::string()) +
+         "#include \"composite/relief.glsl\"\n"
+         "uniform vec3 " + p + "_light;\n"
+         "uniform float " + p + "_exaggeration;\n"
+         "uniform float " + p + "_radius;\n"
+         "uniform int " + p + "_multiply;\n" +
+         slopes() +
+         "vec4 " + p + "(SurfacePoint p) {\n"
+         "  vec4 height = " + height_.samplingFunction() + "(p);\n" +
+         shaded() +
+         "}\n";
+}
+
+void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
+  height_.bind(program, units);
+  if (surface_) surface_->bind(program, units);
+  program.set(prefix_ + "_light", lightDirection(lighting_.azimuth, lighting_.altitude));
+  program.set(prefix_ + "_exaggeration", float(lighting_.exaggeration));
+  program.set(prefix_ + "_radius", float(radius_));
+  program.set(prefix_ + "_multiply", lighting_.multiply ? 1 : 0);
+}
+
+void ReliefLayer::setPageDemand(PageDemand demand) const {
+  height_.setPageDemand(demand);
+  if (surface_) surface_->setPageDemand(demand);
+}
+
+}  // namespace strata::composite

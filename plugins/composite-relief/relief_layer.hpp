@@ -1,0 +1,47 @@
+#pragma once
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include <strata/layer.hpp>
+
+namespace strata::composite {
+
+// Shaded relief of a height layer (seed 000 section 1.1; digest 000 section 6): the composed height's
+// gradient over a pixel's footprint along the ground gives the surface normal in the local east/north/up
+// frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude is the shade, grey
+// alone or multiplied over a surface layer. The light and the exaggeration are uniforms: changing them
+// rebuilds no program.
+class ReliefLayer : public Layer {
+ public:
+  struct Lighting {
+    double azimuth = 315.0;   // deg clockwise from north
+    double altitude = 45.0;   // deg above the horizon
+    double exaggeration = 1.0;
+    bool multiply = true;     // over `surface` where one is given; else the grey shade alone
+  };
+
+  // `surface`, or none: the colour layer to shade. `radius`: the body's, to turn angles into metres.
+  ReliefLayer(const std::string& nodeId, const Layer& height, const Layer* surface, Lighting lighting, double radius);
+
+  LayerKind kind() const override { return LayerKind::Color; }
+  std::string samplingFunction() const override { return prefix_; }
+  std::string glsl() const override;
+  void bind(ShaderProgram& program, TextureUnits& units) const override;
+  void setPageDemand(PageDemand demand) const override;
+
+  // The unit vector towards the light in the local east/north/up frame.
+  static glm::vec3 lightDirection(double azimuthDegrees, double altitudeDegrees);
+
+ private:
+  std::string slopes() const;
+  std::string shaded() const;
+
+  std::string prefix_;
+  const Layer& height_;
+  const Layer* surface_;
+  Lighting lighting_;
+  double radius_;
+};
+
+}  // namespace strata::composite
