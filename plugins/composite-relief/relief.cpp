@@ -11,10 +11,16 @@
 namespace strata::composite {
 namespace {
 
+ReliefLayer::Output outputOf(const std::string& output) {
+  if (output == "slope") return ReliefLayer::Output::Slope;
+  return output == "aspect" ? ReliefLayer::Output::Aspect : ReliefLayer::Output::Shade;
+}
+
 ReliefLayer::Lighting lightingOf(const NodeSetup& setup) {
   const ParameterSet& parameters = setup.parameters;
   return {parameters.real("azimuth"), parameters.real("altitude"), parameters.real("exaggeration"),
-          parameters.string("blend") == "multiply"};
+          parameters.string("blend") == "multiply", parameters.string("mode") == "multidirectional",
+          outputOf(parameters.string("output"))};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -57,6 +63,16 @@ NodeTypeDeclaration declaration() {
       {.name = "blend", .type = ParameterType::Choice, .defaultValue = std::string("multiply"),
        .doc = "multiply: the surface's colour times the shade; alone: the grey shade",
        .choices = {"multiply", "alone"}},
+      // single: the one light a reader expects; multidirectional shows relief facing any way, as from orbit
+      {.name = "mode", .type = ParameterType::Choice, .defaultValue = std::string("single"),
+       .doc = "single: one light at azimuth; multidirectional: four at 225 to 360 degrees, weighted by the aspect "
+              "(Mark 1992), at altitude",
+       .choices = {"single", "multidirectional"}},
+      // shade: what relief shading is for; the others are the same gradient, as data
+      {.name = "output", .type = ParameterType::Choice, .defaultValue = std::string("shade"),
+       .doc = "shade: the Lambertian shade; slope: its angle over 90 degrees (0 flat, 1 vertical); aspect: the "
+              "downslope direction clockwise from north over 360 degrees",
+       .choices = {"shade", "slope", "aspect"}},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<Relief>(setup); };
   return type;

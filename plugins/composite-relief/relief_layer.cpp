@@ -36,11 +36,24 @@ std::string ReliefLayer::slopes() const {
          "}\n";
 }
 
-// The layer's value: the shade, grey where the height has data, or multiplying the surface's colour (which
-// shows unshaded where the height has none).
+// What the layer shows where the height is `h`: the Lambertian shade (from one light, or Mark's four), or
+// the slope or the aspect, each from 0 to 1.
+std::string ReliefLayer::value() const {
+  const std::string& p = prefix_;
+  return "float " + p + "_value(SurfacePoint p, float h) {\n"
+         "  vec2 slopes = " + p + "_slopes(p, h);\n"
+         "  if (" + p + "_output == 1) return reliefSlope(slopes, " + p + "_exaggeration);\n"
+         "  if (" + p + "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
+         "  if (" + p + "_multidirectional == 1) return reliefMultidirectional(slopes, " + p + "_exaggeration, " + p + "_altitude);\n"
+         "  return reliefLambert(slopes, " + p + "_exaggeration, " + p + "_light);\n"
+         "}\n";
+}
+
+// The layer's value, grey where the height has data, or multiplying the surface's colour (which shows
+// unshaded where the height has none).
 std::string ReliefLayer::shaded() const {
   const std::string& p = prefix_;
-  const std::string shade = "reliefLambert(" + p + "_slopes(p, height.r), " + p + "_exaggeration, " + p + "_light)";
+  const std::string shade = p + "_value(p, height.r)";
   if (!surface_)
     return "  if (height.a <= 0.0) return vec4(0.0);\n"
            "  return vec4(vec3(" + shade + "), height.a);\n";
@@ -57,8 +70,11 @@ std::string ReliefLayer::glsl() const {
          "uniform vec3 " + p + "_light;\n"
          "uniform float " + p + "_exaggeration;\n"
          "uniform float " + p + "_radius;\n"
-         "uniform int " + p + "_multiply;\n" +
-         slopes() +
+         "uniform float " + p + "_altitude;\n"
+         "uniform int " + p + "_multiply;\n"
+         "uniform int " + p + "_multidirectional;\n"
+         "uniform int " + p + "_output;\n" +
+         slopes() + value() +
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec4 height = " + height_.samplingFunction() + "(p);\n" +
          shaded() +
@@ -71,7 +87,10 @@ void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   program.set(prefix_ + "_light", lightDirection(lighting_.azimuth, lighting_.altitude));
   program.set(prefix_ + "_exaggeration", float(lighting_.exaggeration));
   program.set(prefix_ + "_radius", float(radius_));
+  program.set(prefix_ + "_altitude", float(lighting_.altitude * std::numbers::pi / 180.0));
   program.set(prefix_ + "_multiply", lighting_.multiply ? 1 : 0);
+  program.set(prefix_ + "_multidirectional", lighting_.multidirectional ? 1 : 0);
+  program.set(prefix_ + "_output", int(lighting_.output));
 }
 
 void ReliefLayer::setPageDemand(PageDemand demand) const {

@@ -9,16 +9,21 @@ namespace strata::composite {
 
 // Shaded relief of a height layer (seed 000 section 1.1; digest 000 section 6): the composed height's
 // gradient over a pixel's footprint along the ground gives the surface normal in the local east/north/up
-// frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude is the shade, grey
-// alone or multiplied over a surface layer. The light and the exaggeration are uniforms: changing them
+// frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude (or to four, in the
+// multidirectional mode) is the shade, grey alone or multiplied over a surface layer; or it shows the slope
+// or the aspect instead. The light and the exaggeration are uniforms: changing them
 // rebuilds no program.
 class ReliefLayer : public Layer {
  public:
+  enum class Output { Shade, Slope, Aspect };  // the order the shader's _output uniform numbers them
+
   struct Lighting {
     double azimuth = 315.0;   // deg clockwise from north
     double altitude = 45.0;   // deg above the horizon
     double exaggeration = 1.0;
     bool multiply = true;     // over `surface` where one is given; else the grey shade alone
+    bool multidirectional = false;  // Mark's four oblique-weighted lights, at `altitude`, not one at `azimuth`
+    Output output = Output::Shade;
   };
 
   // `surface`, or none: the colour layer to shade. `radius`: the body's, to turn angles into metres.
@@ -35,6 +40,7 @@ class ReliefLayer : public Layer {
 
  private:
   std::string slopes() const;
+  std::string value() const;
   std::string shaded() const;
 
   std::string prefix_;

@@ -17,7 +17,8 @@
 // heights (float, about 2 mm at 20 km) rise 370 m over the difference's 1.1 km, a 1e-5 error: together under
 // 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.52
 // levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.77 for exaggeration 2 under a
-// light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone.
+// light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone; 0.50 multidirectional (Mark's four lights);
+// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect), the same tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -103,7 +104,8 @@ class Relief : public ::testing::Test {
 
   std::filesystem::path file(const std::string& name) const { return directory_.path() / name; }
 
-  // The red channel of the frame of `text` against `expected`(offset from the apex) in levels, on the flank.
+  // The red channel of the frame of `text` against `expected`(offset from the apex) in levels, on the flank
+  // (where `expected` is negative, not judged).
   template <class Expected>
   Agreement compare(const std::string& what, const std::string& text, Expected expected) {
     const Image image = renderFrame(*engine_, directory_.write("relief.yaml", text), kSize, kSize);
@@ -115,7 +117,9 @@ class Relief : public ::testing::Test {
         if (!hit) continue;
         const Offset o = offsetOf(hit->lon, hit->lat);
         if (o.length() < 0.2 * kConeRadius || o.length() > 0.8 * kConeRadius) continue;
-        const double error = std::abs(image.at(x, y)[0] - expected(o));
+        const double level = expected(o);
+        if (level < 0.0) continue;  // not judged
+        const double error = std::abs(image.at(x, y)[0] - level);
         agreement.largest = std::max(agreement.largest, error);
         agreement.mean += error;
         ++agreement.judged;
@@ -145,6 +149,41 @@ TEST_F(Relief, ExaggerationAndAltitudeShadeAsASteeperConeUnderALowerLight) {
       compare("exaggeration 2, altitude 30", pipeline(file("cone.tif"), ", exaggeration: 2, altitude: 30"),
               [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 30.0, 2.0)); });
   EXPECT_LE(agreement.largest, 1.0);
+}
+
+// Mark's multidirectional shading (USGS Open-File Report 92-422) of the exact normal: lights at 225, 270,
+// 315 and 360 degrees, each weighted by sin^2(aspect - azimuth), the aspect the compass direction away from
+// the apex, halved (the weights sum to 2).
+double analyticMultidirectional(Offset o, double altitude) {
+  const double aspect = std::atan2(o.east, o.north) / kDegree;
+  double sum = 0.0;
+  for (const double azimuth : {225.0, 270.0, 315.0, 360.0}) {
+    const double oblique = std::sin((aspect - azimuth) * kDegree);
+    sum += oblique * oblique * analyticShade(o, azimuth, altitude);
+  }
+  return 0.5 * sum;
+}
+
+TEST_F(Relief, MultidirectionalMatchesMarksWeightedLights) {
+  const Agreement agreement =
+      compare("multidirectional", pipeline(file("cone.tif"), ", mode: multidirectional, altitude: 40"),
+              [](Offset o) { return srgbLevel(analyticMultidirectional(o, 40.0)); });
+  EXPECT_LE(agreement.largest, 1.0);
+}
+
+// The slope is the flank's everywhere, atan(H / R) over 90 degrees; the aspect the direction away from the
+// apex over 360 degrees, judged away from north, where it wraps from 1 to 0 within a pixel.
+TEST_F(Relief, SlopeAndAspectAreTheFlanks) {
+  const double slope = std::atan(kConeHeight / kConeRadius) / (0.5 * std::numbers::pi);
+  const Agreement slopes = compare("slope", pipeline(file("cone.tif"), ", output: slope"),
+                                   [&](Offset) { return srgbLevel(slope); });
+  EXPECT_LE(slopes.largest, 1.0);
+  const Agreement aspects = compare("aspect", pipeline(file("cone.tif"), ", output: aspect"), [](Offset o) {
+    const double aspect = std::atan2(o.east, o.north) / kDegree;
+    if (std::abs(aspect) < 10.0) return -1.0;  // near north: not judged
+    return srgbLevel((aspect < 0.0 ? aspect + 360.0 : aspect) / 360.0);
+  });
+  EXPECT_LE(aspects.largest, 1.0);
 }
 
 // Over a surface of one colour the shade multiplies it (in scene-linear light); `blend: alone` gives the grey
