@@ -1,6 +1,9 @@
 // composite.relief: shaded relief of any height layer, grey or multiplied over a surface layer, lit by a light
 // at an azimuth and altitude (seed 000 section 1.1, relief shading; digest 000 section 6).
+#include <cstddef>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
@@ -16,11 +19,34 @@ ReliefLayer::Output outputOf(const std::string& output) {
   return output == "aspect" ? ReliefLayer::Output::Aspect : ReliefLayer::Output::Shade;
 }
 
+// A ramp of 2 to 8 stops (value, red, green, blue), values rising, colours in [0, 1].
+std::string rampProblem(const std::vector<double>& stops) {
+  if (stops.size() % 4 != 0 || stops.size() < 8 || stops.size() > 4 * ReliefLayer::kRampStops)
+    return "the ramp has " + std::to_string(stops.size()) + " numbers, not 2 to 8 stops of 4";
+  for (std::size_t i = 0; i < stops.size(); i += 4) {
+    if (i > 0 && stops[i] <= stops[i - 4]) return "the ramp's values do not rise at stop " + std::to_string(i / 4 + 1);
+    for (std::size_t c = 1; c < 4; ++c)
+      if (stops[i + c] < 0.0 || stops[i + c] > 1.0)
+        return "a colour of stop " + std::to_string(i / 4 + 1) + " lies outside [0, 1]";
+  }
+  return {};
+}
+
+ReliefLayer::Ramp tintOf(const ParameterSet& parameters) {
+  const std::string& by = parameters.string("tint");
+  if (by == "none") return {};
+  const std::vector<double>& stops = parameters.reals("tint_ramp");
+  if (const std::string problem = rampProblem(stops); !problem.empty())
+    throw Error(parameters.where("tint_ramp"), problem,
+                "give stops of value, red, green, blue (sRGB, 0 to 1), values rising, e.g. [0, 0, 0.4, 0, 3000, 1, 1, 1]");
+  return {by == "elevation" ? ReliefLayer::Tint::Elevation : ReliefLayer::Tint::Slope, stops};
+}
+
 ReliefLayer::Lighting lightingOf(const NodeSetup& setup) {
   const ParameterSet& parameters = setup.parameters;
   return {parameters.real("azimuth"), parameters.real("altitude"), parameters.real("exaggeration"),
           parameters.string("blend") == "multiply", parameters.string("mode") == "multidirectional",
-          outputOf(parameters.string("output"))};
+          outputOf(parameters.string("output")), tintOf(parameters)};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -73,6 +99,16 @@ NodeTypeDeclaration declaration() {
        .doc = "shade: the Lambertian shade; slope: its angle over 90 degrees (0 flat, 1 vertical); aspect: the "
               "downslope direction clockwise from north over 360 degrees",
        .choices = {"shade", "slope", "aspect"}},
+      // none: the shade alone reads as relief; a tint is a choice of what to show
+      {.name = "tint", .type = ParameterType::Choice, .defaultValue = std::string("none"),
+       .doc = "colours the value by tint_ramp: by elevation (m) or by slope (deg); none: grey",
+       .choices = {"none", "elevation", "slope"}},
+      // a hypsometric ramp for Earth-like elevations: sea blue, lowland green, upland tan, summits white
+      {.name = "tint_ramp", .type = ParameterType::RealList,
+       .defaultValue = std::vector<double>{-4000, 0.1, 0.3, 0.6, 0, 0.3, 0.55, 0.3, 2000, 0.75, 0.65, 0.45, 5000,
+                                           1, 1, 1},
+       .doc = "2 to 8 stops of value (m, or deg of slope), red, green, blue (sRGB, 0 to 1), values rising; blended "
+              "linearly in scene-linear light, held beyond the ends"},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<Relief>(setup); };
   return type;

@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+
+#include <glm/vec4.hpp>
 
 #include <strata/gl/shader_program.hpp>
 
@@ -49,18 +52,29 @@ std::string ReliefLayer::value() const {
          "}\n";
 }
 
+// The tint's colour where the height is `h` and its slopes `slopes`: the ramp's, by elevation (m) or by
+// slope (deg), or white.
+std::string ReliefLayer::tint() const {
+  const std::string& p = prefix_;
+  return "vec3 " + p + "_tint(SurfacePoint p, float h) {\n"
+         "  if (" + p + "_tintBy == 0) return vec3(1.0);\n"
+         "  float x = " + p + "_tintBy == 1 ? h : degrees(atan(length(" + p + "_slopes(p, h))));\n"
+         "  return reliefRamp(" + p + "_ramp, " + p + "_rampStops, x);\n"
+         "}\n";
+}
+
 // The layer's value, grey where the height has data, or multiplying the surface's colour (which shows
 // unshaded where the height has none).
 std::string ReliefLayer::shaded() const {
   const std::string& p = prefix_;
-  const std::string shade = p + "_value(p, height.r)";
+  const std::string shade = p + "_tint(p, height.r) * " + p + "_value(p, height.r)";
   if (!surface_)
     return "  if (height.a <= 0.0) return vec4(0.0);\n"
-           "  return vec4(vec3(" + shade + "), height.a);\n";
+           "  return vec4(" + shade + ", height.a);\n";
   return "  vec4 surface = " + surface_->samplingFunction() + "(p);\n"
-         "  if (" + p + "_multiply == 0) return height.a > 0.0 ? vec4(vec3(" + shade + "), height.a) : vec4(0.0);\n"
+         "  if (" + p + "_multiply == 0) return height.a > 0.0 ? vec4(" + shade + ", height.a) : vec4(0.0);\n"
          "  if (height.a <= 0.0) return surface;\n"
-         "  return vec4(surface.rgb * mix(1.0, " + shade + ", height.a), surface.a);\n";
+         "  return vec4(surface.rgb * mix(vec3(1.0), " + shade + ", height.a), surface.a);\n";
 }
 
 std::string ReliefLayer::glsl() const {
@@ -73,8 +87,11 @@ std::string ReliefLayer::glsl() const {
          "uniform float " + p + "_altitude;\n"
          "uniform int " + p + "_multiply;\n"
          "uniform int " + p + "_multidirectional;\n"
-         "uniform int " + p + "_output;\n" +
-         slopes() + value() +
+         "uniform int " + p + "_output;\n"
+         "uniform int " + p + "_tintBy;\n"
+         "uniform int " + p + "_rampStops;\n"
+         "uniform vec4 " + p + "_ramp[RELIEF_RAMP_STOPS];\n" +
+         slopes() + value() + tint() +
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec4 height = " + height_.samplingFunction() + "(p);\n" +
          shaded() +
@@ -91,6 +108,18 @@ void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   program.set(prefix_ + "_multiply", lighting_.multiply ? 1 : 0);
   program.set(prefix_ + "_multidirectional", lighting_.multidirectional ? 1 : 0);
   program.set(prefix_ + "_output", int(lighting_.output));
+  bindRamp(program);
+}
+
+// The ramp's stops, their colours decoded to scene-linear light (IEC 61966-2-1) to blend as the output does.
+void ReliefLayer::bindRamp(ShaderProgram& program) const {
+  const std::vector<double>& stops = lighting_.tint.stops;
+  const auto linear = [](double c) { return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); };
+  program.set(prefix_ + "_tintBy", int(lighting_.tint.by));
+  program.set(prefix_ + "_rampStops", int(stops.size() / 4));
+  for (std::size_t i = 0; i + 3 < stops.size(); i += 4)
+    program.set(prefix_ + "_ramp[" + std::to_string(i / 4) + "]",
+                glm::vec4(float(stops[i]), linear(stops[i + 1]), linear(stops[i + 2]), linear(stops[i + 3])));
 }
 
 void ReliefLayer::setPageDemand(PageDemand demand) const {

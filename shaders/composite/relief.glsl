@@ -60,3 +60,13 @@ float reliefMultidirectional(vec2 slopes, float exaggeration, float altitude) {
   }
   return 0.5 * sum;
 }
+
+// A colour ramp's colour at `x`: linear in scene-linear light between its `count` stops (x in .x, rising;
+// colour in .yzw), held beyond its first and last.
+const int RELIEF_RAMP_STOPS = 8;
+vec3 reliefRamp(vec4 stops[RELIEF_RAMP_STOPS], int count, float x) {
+  if (x <= stops[0].x) return stops[0].yzw;
+  for (int i = 1; i < count; ++i)
+    if (x < stops[i].x) return mix(stops[i - 1].yzw, stops[i].yzw, (x - stops[i - 1].x) / (stops[i].x - stops[i - 1].x));
+  return stops[count - 1].yzw;
+}

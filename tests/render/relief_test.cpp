@@ -18,7 +18,8 @@
 // 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.52
 // levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.77 for exaggeration 2 under a
 // light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone; 0.50 multidirectional (Mark's four lights);
-// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect), the same tolerance.
+// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); tinted by elevation 0.50, by slope
+// 0.51; the same tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -201,6 +202,34 @@ TEST_F(Relief, MultipliesASurfaceOrShadesAlone) {
   const Agreement alone = compare("alone", pipeline(file("cone.tif"), ", surface: paint, blend: alone", paint),
                                   [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 45.0)); });
   EXPECT_LE(alone.largest, 1.0);
+}
+
+// A tint by elevation from blue at the base to red at the apex, blended in scene-linear light, times the
+// shade: the red channel is (h / H) times the shade, h the cone's height there. By slope, from black at 0 to
+// white at 90 degrees: the flank's slope over 90 degrees times the shade.
+TEST_F(Relief, TintsByElevationOrSlope) {
+  const std::string ramp = ", tint: elevation, tint_ramp: [0, 0, 0, 1, " + std::to_string(kConeHeight) + ", 1, 0, 0]";
+  const Agreement agreement = compare("tint", pipeline(file("cone.tif"), ramp), [](Offset o) {
+    return srgbLevel(coneHeight(o) / kConeHeight * analyticShade(o, 315.0, 45.0));
+  });
+  EXPECT_LE(agreement.largest, 1.0);
+  const double slope = std::atan(kConeHeight / kConeRadius) / (0.5 * std::numbers::pi);
+  const Agreement bySlope =
+      compare("tint by slope", pipeline(file("cone.tif"), ", tint: slope, tint_ramp: [0, 0, 0, 0, 90, 1, 1, 1]"),
+              [&](Offset o) { return srgbLevel(slope * analyticShade(o, 315.0, 45.0)); });
+  EXPECT_LE(bySlope.largest, 1.0);
+}
+
+// A ramp that is not stops of four numbers with rising values is refused at its line.
+TEST_F(Relief, RefusesAMalformedRamp) {
+  const std::string text = pipeline(file("cone.tif"), ", tint: slope, tint_ramp: [10, 0, 0, 1, 5, 1, 0, 0]");
+  try {
+    engine_->load(directory_.write("ramp.yaml", text));
+    ADD_FAILURE() << "a ramp of falling values was taken";
+  } catch (const Error& error) {
+    std::printf("%s\n", error.what());
+    EXPECT_NE(std::string(error.what()).find("do not rise"), std::string::npos) << error.what();
+  }
 }
 
 // The height port takes height layers only.
