@@ -96,7 +96,7 @@ NodeTypeDeclaration declaration() {
        .choices = {"single", "multidirectional"}},
       // shade: what relief shading is for; the others are the same gradient, as data
       {.name = "output", .type = ParameterType::Choice, .defaultValue = std::string("shade"),
-       .doc = "shade: the Lambertian shade; slope: its angle over 90 degrees (0 flat, 1 vertical); aspect: the "
+       .doc = "shade: the Lambertian shade; slope: the slope's angle over 90 degrees (0 flat, 1 vertical); aspect: the "
               "downslope direction clockwise from north over 360 degrees",
        .choices = {"shade", "slope", "aspect"}},
       // none: the shade alone reads as relief; a tint is a choice of what to show
