@@ -76,7 +76,8 @@ double analyticShade(Offset o, double azimuth, double altitude, double exaggerat
   return std::max(0.0, (nx * lx + ny * ly + nz * lz) / n);
 }
 
-// The sRGB encoding output.image writes (shaders/strata/srgb.glsl), in 8-bit levels.
+// The sRGB encoding output.image writes (its default display, sRGB, view Standard: docs/colour.md), in 8-bit
+// levels.
 double srgbLevel(double linear) {
   const double c = std::clamp(linear, 0.0, 1.0);
   return 255.0 * (c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055);
