@@ -66,10 +66,11 @@ class ImageOutput : public Node, public FrameOutput {
   }
 
  private:
-  // The frame leaves scene-linear light through OpenColorIO's display and view (docs/colour.md): the config
-  // $OCIO names, else Strata's own, whose default is the sRGB display's Standard view.
+  // The frame leaves scene-linear light through OpenColorIO's display and view (docs/colour.md): the
+  // pipeline's `colour: {config}`, else the config $OCIO names, else Strata's own, whose default is the sRGB
+  // display's Standard view.
   static std::string displayGlsl(const NodeSetup& setup) {
-    const ColourConfig config = ColourConfig::load({}, setup.where);
+    const ColourConfig config = ColourConfig::load(setup.colour.config, setup.colour.config.empty() ? setup.where : setup.colour.where);
     const std::string& display = setup.parameters.string("display");
     const std::string chosen = display.empty() ? config.defaultDisplay() : display;
     const std::string& view = setup.parameters.string("view");

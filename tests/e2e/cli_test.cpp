@@ -22,6 +22,7 @@ using strata::test::CommandResult;
 using strata::test::contains;
 using strata::test::Image;
 using strata::test::readImage;
+using strata::test::readText;
 using strata::test::StrataCommandTest;
 
 // A pixel without its alpha, which is always opaque in a rendered frame.
@@ -135,6 +136,22 @@ TEST_F(StrataCommandTest, UnknownDisplayNamesTheDisplaysThereAre) {
   EXPECT_TRUE(contains(result.err, "p.yaml:4:")) << result.err;
   EXPECT_TRUE(contains(result.err, "the display 'P3' is not in Strata's built-in config")) << result.err;
   EXPECT_TRUE(contains(result.err, "choose one of 'sRGB'")) << result.err;
+}
+
+// A config given in the pipeline is the one used: a copy of Strata's whose display is called "Wall".
+TEST_F(StrataCommandTest, PipelineChoosesItsColourConfig) {
+  std::string config = readText(fs::path(STRATA_SOURCE_DIR) / "ocio" / "strata.ocio");
+  for (std::size_t at; (at = config.find("sRGB:")) != std::string::npos;) config.replace(at, 5, "Wall:");
+  for (std::size_t at; (at = config.find("[sRGB]")) != std::string::npos;) config.replace(at, 6, "[Wall]");
+  write("wall.ocio", config);
+  const std::string scene = "strata: 1\ncolour: {config: wall.ocio}\nnodes:\n  g: {type: geometry.icosahedral}\n";
+  const CommandResult wall = renderTiny(write("wall.yaml", scene + "  f: {type: output.image, geometry: g}\n"));
+  EXPECT_EQ(wall.exitCode, 0) << wall.err;
+  const CommandResult srgb =
+      renderTiny(write("srgb.yaml", scene + "  f: {type: output.image, geometry: g, display: sRGB}\n"));
+  EXPECT_EQ(srgb.exitCode, 1);
+  EXPECT_TRUE(contains(srgb.err, "wall.ocio")) << srgb.err;
+  EXPECT_TRUE(contains(srgb.err, "choose one of 'Wall'")) << srgb.err;
 }
 
 TEST_F(StrataCommandTest, RenderSweepNeedsAFileNameField) {

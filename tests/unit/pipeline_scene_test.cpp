@@ -1,4 +1,4 @@
-// The body:, camera: and date: sections.
+// The body:, camera:, date: and colour: sections.
 #include "pipeline_test_fixtures.hpp"
 
 namespace strata::testing {
@@ -67,6 +67,19 @@ TEST_F(SceneTest, DateThatIsNoDay) {
   EXPECT_EQ(error.where().line, 2);
   EXPECT_EQ(error.where().column, 7);
   EXPECT_NE(error.fix().find("ISO 8601"), std::string::npos);
+}
+
+TEST_F(SceneTest, ColourConfigIsAFileBesideThePipeline) {
+  EXPECT_TRUE(parse(withSection("camera: {}")).colour.config.empty());
+  directory_.write("wall.ocio", "ocio_profile_version: 2\n");
+  const ColourSettings colour = parse(withSection("colour: {config: wall.ocio}")).colour;
+  EXPECT_EQ(colour.config, directory_.path() / "wall.ocio");
+  EXPECT_EQ(colour.where.line, 2);
+  const Error error = parseError(withSection("colour: {config: missing.ocio}"));
+  EXPECT_EQ(error.problem(), "colour 'config': file not found: " + (directory_.path() / "missing.ocio").string());
+  EXPECT_EQ(error.where().column, 18);
+  EXPECT_NE(parseError(withSection("colour: {confg: wall.ocio}")).problem().find("did you mean 'config'"),
+            std::string::npos);
 }
 
 TEST_F(SceneTest, LatitudeOutOfRange) {

@@ -5,6 +5,7 @@
 //   camera: {lon: 10, lat: 20, altitude: 2e7}  # optional (scene_parsing.hpp)
 //   cache: {budget: 256}                       # optional: the page cache (scene_parsing.hpp)
 //   date: 2004-06-15                           # optional: the scene's date, for time series (strata/date.hpp)
+//   colour: {config: my.ocio}                  # optional: the OpenColorIO config (scene_parsing.hpp)
 //   nodes:                                     # required: node id -> node (node_parsing.hpp)
 //     relief:  {type: source.gdal, path: egm96_15.gtx, kind: height, scale: 300}
 //     terrain: {type: geometry.icosahedral, height: relief}
@@ -35,7 +36,7 @@ namespace {
 using loader::SourceMap;
 
 constexpr std::int64_t kFormatVersion = 1;
-const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "date", "nodes"};
+const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "date", "colour", "nodes"};
 
 YAML::Node parseYaml(const std::string& text, const std::string& file) {
   try {
@@ -99,6 +100,7 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std
   if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
   pipeline.cache.where = {file.string()};
   if (const YAML::Node cache = root["cache"]) pipeline.cache = loader::parseCache(cache, source);
+  if (const YAML::Node colour = root["colour"]) pipeline.colour = loader::parseColour(colour, source, baseDirectory(file));
   if (const YAML::Node date = root["date"]) pipeline.date = loader::readDate(date, {source, "the scene's 'date'", ""});
   pipeline.nodes = parseNodes(root, {source, registry, baseDirectory(file)});
   return pipeline;

@@ -112,4 +112,21 @@ PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source) {
   return cache;
 }
 
+ColourSettings parseColour(const YAML::Node& map, const SourceMap& source, const std::filesystem::path& directory) {
+  requireMap(map, source, "colour", "colour: {config: my.ocio}");
+  requireKnownKeys(map, {"config"}, source, "colour");
+  ColourSettings colour;
+  const YAML::Node value = map["config"];
+  if (!value) return colour;
+  const ValueContext context{source, "colour 'config'", {}};
+  colour.config = (directory / readText(value, context)).lexically_normal();
+  colour.where = source.at(value);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(colour.config, error))
+    throw source.error(value, {}, "colour 'config': file not found: " + colour.config.string(),
+                       "give the path of an OpenColorIO config (.ocio), relative to the pipeline's directory " +
+                           directory.string() + ", or leave `colour:` out for $OCIO's or Strata's own");
+  return colour;
+}
+
 }  // namespace strata::loader

@@ -1,8 +1,11 @@
 #pragma once
+#include <filesystem>
+
 #include <yaml-cpp/yaml.h>
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
+#include <strata/colour_settings.hpp>
 #include <strata/page_cache_settings.hpp>
 
 #include "pipeline/source_map.hpp"
@@ -25,5 +28,8 @@ Camera parseCamera(const YAML::Node& map, const SourceMap& source);
 //   uploads_per_frame: pages copied to the GPU per frame, in [1, 256]
 //   loader_threads: threads reading pages, in [1, 64]
 PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source);
+
+// colour: {config: FILE}: an OpenColorIO config (docs/colour.md), relative to `directory`; it must exist.
+ColourSettings parseColour(const YAML::Node& map, const SourceMap& source, const std::filesystem::path& directory);
 
 }  // namespace strata::loader

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <strata/body.hpp>
+#include <strata/colour_settings.hpp>
 #include <strata/date.hpp>
 #include <strata/error.hpp>
 #include <strata/frame.hpp>
@@ -33,6 +34,7 @@ struct NodeSetup {
   std::filesystem::path pipelineDirectory;  // relative paths in parameters resolve against this
   const PluginRegistry* plugins = nullptr;   // node types and projections (see strata/crs.hpp)
   std::optional<DayNumber> date;  // the scene's date as the pipeline gives it (`date:`); frames carry the current one
+  ColourSettings colour;          // the pipeline's `colour:` (its OpenColorIO config)
 
   Node* input(const std::string& port) const;  // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected

@@ -7,6 +7,7 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
+#include <strata/colour_settings.hpp>
 #include <strata/date.hpp>
 #include <strata/error.hpp>
 #include <strata/page_cache_settings.hpp>
@@ -33,6 +34,7 @@ struct Pipeline {
   Body body;
   Camera camera;
   PageCacheSettings cache;
+  ColourSettings colour;
   std::optional<DayNumber> date;  // the scene's date (`date:`), which time series show; none: not given
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
 
