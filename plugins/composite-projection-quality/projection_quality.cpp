@@ -17,17 +17,6 @@ using Method = ProjectionQualityLayer::Method;
 
 constexpr double kDegree = std::numbers::pi / 180.0;  // radians per degree
 
-std::vector<const Layer*> inputLayers(const NodeSetup& setup) {
-  std::vector<const Layer*> layers;
-  for (Node* node : setup.inputList("layers")) layers.push_back(node->layer());
-  for (const Layer* layer : layers)
-    if (layer->kind() != layers.front()->kind())
-      throw Error(setup.where, "the layers are of different kinds (" + std::string(toString(layers.front()->kind())) +
-                                   " and " + toString(layer->kind()) + "), which cannot be blended",
-                  "give layers of one kind: heights with heights, colours with colours");
-  return layers;
-}
-
 // The band's inner and outer latitude in radians; the declaration has kept both within [0, 90] degrees.
 glm::dvec2 bandOf(const ParameterSet& parameters) {
   const std::vector<double>& band = parameters.reals("band");
@@ -64,7 +53,7 @@ class ProjectionQuality : public Node {
  public:
   explicit ProjectionQuality(const NodeSetup& setup)
       : methodWhere_(setup.parameters.where("method")),
-        inputs_(inputLayers(setup)),
+        inputs_(layersOfOneKind(setup.inputList("layers"), "layers", setup.where)),
         weighting_(weightingOf(setup.parameters)),
         layer_(setup.id, inputs_) {
     layer_.setWeighting(weighting_);

@@ -81,17 +81,6 @@ Steps stepsOf(const NodeSetup& setup) {
   return setup.parameters.string("files").empty() ? stepsFromList(setup) : stepsFromFiles(setup);
 }
 
-std::vector<const Layer*> stepLayers(const NodeSetup& setup, const Steps& steps) {
-  std::vector<const Layer*> layers;
-  for (Node* node : steps.nodes) layers.push_back(node->layer());
-  for (const Layer* layer : layers)
-    if (layer->kind() != layers.front()->kind())
-      throw Error(setup.where, "the steps are of different kinds (" + std::string(toString(layers.front()->kind())) +
-                                   " and " + toString(layer->kind()) + "), which cannot be blended",
-                  "give steps of one kind: heights with heights, colours with colours");
-  return layers;
-}
-
 DayNumber sceneDate(const NodeSetup& setup) {
   if (!setup.date)
     throw Error(setup.where, "a temporal blend shows the scene's date, and the pipeline gives none",
@@ -103,7 +92,7 @@ class TemporalBlend : public Node {
  public:
   explicit TemporalBlend(const NodeSetup& setup)
       : steps_(stepsOf(setup)),
-        layers_(stepLayers(setup, steps_)),
+        layers_(layersOfOneKind(steps_.nodes, "steps", setup.where)),
         series_(steps_.dates, setup.parameters.string("repeat") == "yearly"),
         date_(sceneDate(setup)),
         layer_(setup.id, layers_) {

@@ -10,7 +10,9 @@
 
 namespace strata {
 
+class Node;
 class ShaderProgram;
+struct SourceLocation;
 class TextureUnits;
 
 // The least and greatest values a one-channel layer returns, as its sampling function returns them
@@ -70,6 +72,11 @@ class Layer {
     return std::nullopt;
   }
 };
+
+// The layers `nodes` offer, checked to be of one kind, as whatever blends them needs: throws strata::Error at
+// `where` naming the two kinds that differ. `what` names the layers in the message ("layers", "steps").
+std::vector<const Layer*> layersOfOneKind(const std::vector<Node*>& nodes, const std::string& what,
+                                          const SourceLocation& where);
 
 // The range spanning every one of `layers`' value ranges, within which whatever mixes them stays (a weighted
 // average, a blend in time, one laid over another); none where one of them knows none.
