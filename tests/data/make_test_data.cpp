@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "ice_sheet.hpp"
 #include "observation.hpp"
 #include "observation_writer.hpp"
 #include "seasons.hpp"
@@ -40,6 +41,7 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
   for (const Observation& observation : standardObservations())
     writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
   writeSeasons(directory);
+  writeIceSheet(directory);
 }
 
 }  // namespace
@@ -47,7 +49,8 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
 int main(int argc, char** argv) {
   CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
                "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif, and twelve months "
-               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif."};
+               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, and an ice sheet over "
+               "the north pole, ice-height.tif and ice-color.tif."};
   std::string directory;
   int largeWidth = 0, largeHeight = 0;
   app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();

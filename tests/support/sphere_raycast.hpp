@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 #include <optional>
 
 #include <strata/camera.hpp>
@@ -15,6 +16,15 @@ struct SurfaceHit {
 };
 
 std::optional<SurfaceHit> raycastSphere(const View& view, double radius, double x, double y);
+
+// Where that ray first meets the terrain radius + height(lon, lat) (m, degrees), which lies at most `highest`
+// above the sphere: marched in steps of `step` m from where it enters that height, then bisected to a
+// millimetre. `radiusAt` receives the hit's distance from the planet's centre. For terrain whose heights
+// change by no more than `step` times its steepest slope within a step (steps, walls) the first crossing is
+// found.
+std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
+                                         const std::function<double(double lon, double lat)>& height, double highest,
+                                         double step, double x, double y, double* radiusAt = nullptr);
 
 // The expected radius in pixels of a sphere of `radius` seen from distance `distance` to its centre.
 double discRadiusPixels(const View& view, double radius, double distance);

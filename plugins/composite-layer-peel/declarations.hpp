@@ -1,0 +1,10 @@
+#pragma once
+#include <strata/node_type.hpp>
+
+namespace strata::composite {
+
+// The plugin's two node types: the peeled heights, and the colours of what they show.
+NodeTypeDeclaration layerPeelDeclaration();
+NodeTypeDeclaration peeledSurfaceDeclaration();
+
+}  // namespace strata::composite

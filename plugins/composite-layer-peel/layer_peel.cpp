@@ -1,0 +1,72 @@
+// composite.layer_peel: a stack of height layers as one, its upper layers peeled away by a peel depth within a
+// cutaway region (seed 000 section 1.1 and chapter 6, layered data peeling; digest 000 section 6).
+#include <memory>
+#include <set>
+
+#include <strata/node.hpp>
+
+#include "declarations.hpp"
+#include "peel_layer.hpp"
+
+namespace strata::composite {
+namespace {
+
+// Two to sixteen layers, each once: one node twice would paste its GLSL into the program twice.
+std::vector<const Layer*> stackOf(const NodeSetup& setup) {
+  const std::vector<Node*>& nodes = setup.inputList("layers");
+  if (nodes.size() < 2)
+    throw Error(setup.where, "a stack needs two layers or more, and has " + std::to_string(nodes.size()),
+                "give the layers top first, e.g. layers: [ice-surface, bedrock]");
+  if (std::set<Node*>(nodes.begin(), nodes.end()).size() != nodes.size())
+    throw Error(setup.where, "a layer appears twice in the stack", "give each layer of the stack once, top first");
+  std::vector<const Layer*> stack;
+  for (Node* node : nodes) stack.push_back(node->layer());
+  return stack;
+}
+
+PeelLayer::Peel peelOf(const NodeSetup& setup) {
+  const auto layers = setup.parameters.integer("peel");
+  const auto most = std::int64_t(setup.inputList("layers").size()) - 1;
+  if (layers > most)
+    throw Error(setup.parameters.where("peel"),
+                "peel " + std::to_string(layers) + " takes away more layers than lie above the floor (" +
+                    std::to_string(most) + ")",
+                "peel at most " + std::to_string(most) + ": the last layer is the floor");
+  return {int(layers), setup.parameters.real("depth")};
+}
+
+class LayerPeel : public Node {
+ public:
+  explicit LayerPeel(const NodeSetup& setup)
+      : layer_(setup.id, stackOf(setup), peelOf(setup), Cutaway::from(setup.parameters), setup.body->radius) {}
+
+  Layer* layer() override { return &layer_; }
+
+ private:
+  PeelLayer layer_;
+};
+
+}  // namespace
+
+NodeTypeDeclaration layerPeelDeclaration() {
+  NodeTypeDeclaration type;
+  type.type = "composite.layer_peel";
+  type.category = NodeCategory::Compositor;
+  type.summary = "A stack of height layers as one, its upper layers peeled away by a depth within a cutaway";
+  type.inputs = {{.name = "layers", .type = PortType::Layer, .kinds = {LayerKind::Height}, .list = true,
+                  .doc = "the stack's height layers, top first (ice surface, bedrock); the last is the floor"}};
+  type.output = PortType::Layer;
+  type.parameters = {
+      // 1: the top layer taken away, which shows the next one: what a stack of two is peeled for
+      {.name = "peel", .type = ParameterType::Integer, .defaultValue = std::int64_t(1), .minimum = 0.0,
+       .maximum = 15.0, .doc = "how many of the upper layers the cut takes away (at most all but the floor)"},
+      // 0: the surface the peel exposes, as its data have it
+      {.name = "depth", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e6,
+       .units = "m", .doc = "how far the cut goes below the surface the peel exposes, never below the floor"},
+  };
+  for (ParameterDeclaration& parameter : Cutaway::parameters()) type.parameters.push_back(std::move(parameter));
+  type.create = [](const NodeSetup& setup) { return std::make_unique<LayerPeel>(setup); };
+  return type;
+}
+
+}  // namespace strata::composite

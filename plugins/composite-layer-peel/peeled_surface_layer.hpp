@@ -1,0 +1,39 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include <strata/layer.hpp>
+
+#include "peel_layer.hpp"
+
+namespace strata::composite {
+
+// The colours of what a composite.layer_peel shows (seed 000 section 1.1 and chapter 6, layered data peeling;
+// digest 000 section 6): where a layer's surface shows, that layer's surface colours (its imagery); where the
+// cut runs through a layer's material (below its surface and above the next one's: the floor of a peel
+// `depth` and the sloping walls of a cutaway's `edge`), that layer's cut-face colour, so the walls show the
+// stack's strata in section.
+class PeeledSurfaceLayer : public Layer {
+ public:
+  // `surfaces`: one colour layer per layer of `peel`'s stack, top first; `faces`: its cut faces' colours,
+  // sRGB-encoded in [0, 1], three numbers per layer, top first.
+  PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel, std::vector<const Layer*> surfaces,
+                     std::vector<double> faces);
+
+  LayerKind kind() const override { return LayerKind::Color; }
+  std::string samplingFunction() const override { return prefix_; }
+  std::string glsl() const override;
+  void bind(ShaderProgram& program, TextureUnits& units) const override;
+  void setPageDemand(PageDemand demand) const override;
+
+ private:
+  std::string exposed() const;
+  std::string surfaceColour() const;
+
+  std::string prefix_;
+  const PeelLayer& peel_;
+  std::vector<const Layer*> surfaces_;
+  std::vector<double> faces_;
+};
+
+}  // namespace strata::composite
