@@ -24,9 +24,10 @@ std::vector<const Layer*> stackOf(const NodeSetup& setup) {
   return stack;
 }
 
-PeelLayer::Peel peelOf(const NodeSetup& setup) {
+// The peel, of a stack of `stackSize` layers.
+PeelLayer::Peel peelOf(const NodeSetup& setup, std::size_t stackSize) {
   const auto layers = setup.parameters.integer("peel");
-  const auto most = std::int64_t(setup.inputList("layers").size()) - 1;
+  const auto most = std::int64_t(stackSize) - 1;
   if (layers > most)
     throw Error(setup.parameters.where("peel"),
                 "peel " + std::to_string(layers) + " takes away more layers than lie above the floor (" +
@@ -37,12 +38,18 @@ PeelLayer::Peel peelOf(const NodeSetup& setup) {
 
 class LayerPeel : public Node {
  public:
-  explicit LayerPeel(const NodeSetup& setup)
-      : layer_(setup.id, stackOf(setup), peelOf(setup), Cutaway::from(setup.parameters), setup.body->radius) {}
+  explicit LayerPeel(const NodeSetup& setup) : layer_(peelLayerOf(setup)) {}
 
   Layer* layer() override { return &layer_; }
 
  private:
+  // The stack checked before the peel, which counts its layers.
+  static PeelLayer peelLayerOf(const NodeSetup& setup) {
+    std::vector<const Layer*> stack = stackOf(setup);
+    const PeelLayer::Peel peel = peelOf(setup, stack.size());
+    return PeelLayer(setup.id, std::move(stack), peel, Cutaway::from(setup.parameters), setup.body->radius);
+  }
+
   PeelLayer layer_;
 };
 

@@ -1,5 +1,6 @@
 #include "peeled_surface_layer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/vec3.hpp>
@@ -16,7 +17,10 @@ constexpr const char* kThinnest = "0.05";
 
 PeeledSurfaceLayer::PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel, std::vector<const Layer*> surfaces,
                                        std::vector<double> faces)
-    : prefix_("layer_" + glslIdentifier(nodeId)), peel_(peel), surfaces_(std::move(surfaces)), faces_(std::move(faces)) {}
+    : prefix_("layer_" + glslIdentifier(nodeId)), peel_(peel), surfaces_(std::move(surfaces)), faces_(std::move(faces)) {
+  for (const Layer* surface : surfaces_)
+    if (std::find(distinct_.begin(), distinct_.end(), surface) == distinct_.end()) distinct_.push_back(surface);
+}
 
 // Which layer shows at `shown`, given the stack's surfaces `h`: i where layer i's surface does (it lies
 // there, with material beneath it), -1 - i where the cut runs through layer i's material; the floor's
@@ -44,7 +48,7 @@ std::string PeeledSurfaceLayer::glsl() const {
   const std::string& p = prefix_;
   const std::string n = std::to_string(peel_.stackSize());
   std::string code = peel_.glsl();
-  for (const Layer* surface : surfaces_) code += surface->glsl();
+  for (const Layer* surface : distinct_) code += surface->glsl();
   return code + "uniform vec3 " + p + "_faces[" + n + "];\n" + exposed() + surfaceColour() +
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  float h[" + n + "];\n"
@@ -58,7 +62,7 @@ std::string PeeledSurfaceLayer::glsl() const {
 // The faces' colours decoded to scene-linear light (IEC 61966-2-1), in which the output composes.
 void PeeledSurfaceLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   peel_.bind(program, units);
-  for (const Layer* surface : surfaces_) surface->bind(program, units);
+  for (const Layer* surface : distinct_) surface->bind(program, units);
   const auto linear = [](double c) { return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); };
   for (std::size_t i = 0; i < peel_.stackSize(); ++i)
     program.set(prefix_ + "_faces[" + std::to_string(i) + "]",
@@ -67,7 +71,7 @@ void PeeledSurfaceLayer::bind(ShaderProgram& program, TextureUnits& units) const
 
 void PeeledSurfaceLayer::setPageDemand(PageDemand demand) const {
   peel_.setPageDemand(demand);
-  for (const Layer* surface : surfaces_) surface->setPageDemand(demand);
+  for (const Layer* surface : distinct_) surface->setPageDemand(demand);
 }
 
 }  // namespace strata::composite

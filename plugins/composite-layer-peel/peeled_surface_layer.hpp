@@ -15,7 +15,7 @@ namespace strata::composite {
 // stack's strata in section.
 class PeeledSurfaceLayer : public Layer {
  public:
-  // `surfaces`: one colour layer per layer of `peel`'s stack, top first; `faces`: its cut faces' colours,
+  // `surfaces`: one colour layer per layer of `peel`'s stack, top first (one may serve several); `faces`: its cut faces' colours,
   // sRGB-encoded in [0, 1], three numbers per layer, top first.
   PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel, std::vector<const Layer*> surfaces,
                      std::vector<double> faces);
@@ -33,6 +33,7 @@ class PeeledSurfaceLayer : public Layer {
   std::string prefix_;
   const PeelLayer& peel_;
   std::vector<const Layer*> surfaces_;
+  std::vector<const Layer*> distinct_;  // surfaces_ with each layer once: its GLSL is pasted once
   std::vector<double> faces_;
 };
 

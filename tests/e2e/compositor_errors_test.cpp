@@ -132,5 +132,59 @@ TEST_F(CompositorErrors, OverlayMaskRefusesAMaskThatIsTheOverlay) {
   EXPECT_TRUE(contains(result.err, "a node of its own")) << result.err;
 }
 
+// A stack of two procedural height layers `h` and `k` peeled by `s`, coloured by `c` from `a`.
+const std::string kStack = "  h: {type: source.procedural, kind: height}\n"
+                           "  k: {type: source.procedural, kind: height, seed: 7}\n";
+
+TEST_F(CompositorErrors, LayerPeelNeedsTwoLayers) {
+  const CommandResult result = renderWith(kStack + "  s: {type: composite.layer_peel, layers: [h]}\n"
+                                                   "  c: {type: composite.peeled_surface, peel: s, surfaces: [a]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:7:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "a stack needs two layers or more, and has 1")) << result.err;
+}
+
+TEST_F(CompositorErrors, LayerPeelCannotPeelTheFloor) {
+  const CommandResult result = renderWith(kStack + "  s: {type: composite.layer_peel, layers: [h, k], peel: 2}\n"
+                                                   "  c: {type: composite.peeled_surface, peel: s, surfaces: [a, a]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:7:")) << "at `peel`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "peel 2 takes away more layers than lie above the floor (1)")) << result.err;
+  EXPECT_TRUE(contains(result.err, "peel at most 1")) << result.err;
+}
+
+TEST_F(CompositorErrors, LayerPeelRefusesABoxTurnedOver) {
+  const CommandResult result = renderWith(kStack + "  s: {type: composite.layer_peel, layers: [h, k], cut: box,\n"
+                                                   "      box: [10, 0, -10, 5]}\n"
+                                                   "  c: {type: composite.peeled_surface, peel: s, surfaces: [a, a]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:8:")) << "at `box`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "[170, -10, 190, 10]")) << result.err;
+}
+
+TEST_F(CompositorErrors, PeeledSurfaceWantsOneSurfacePerLayer) {
+  const CommandResult result = renderWith(kStack + "  s: {type: composite.layer_peel, layers: [h, k]}\n"
+                                                   "  c: {type: composite.peeled_surface, peel: s, surfaces: [a]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:8:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "it has 1 surfaces for a stack of 2 layers")) << result.err;
+}
+
+TEST_F(CompositorErrors, PeeledSurfaceColoursALayerPeel) {
+  const CommandResult result = renderWith(kStack + "  c: {type: composite.peeled_surface, peel: h, surfaces: [a, a]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:7:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "its peel is not a composite.layer_peel node")) << result.err;
+}
+
+TEST_F(CompositorErrors, PeeledSurfaceWantsAFaceColourPerLayer) {
+  const CommandResult result = renderWith(kStack + "  s: {type: composite.layer_peel, layers: [h, k]}\n"
+                                                   "  c: {type: composite.peeled_surface, peel: s, surfaces: [a, a],\n"
+                                                   "      faces: [1, 0, 0]}\n");
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:9:")) << "at `faces`: " << result.err;
+  EXPECT_TRUE(contains(result.err, "faces has 3 numbers, not three for each of the stack's 2 layers")) << result.err;
+}
+
 }  // namespace
 }  // namespace strata::test
