@@ -41,7 +41,7 @@ std::string PeelLayer::shown() const {
 std::string PeelLayer::glsl() const {
   const std::string& p = prefix_;
   std::string code;
-  for (const Layer* layer : stack_) code += layer->glsl();
+  for (const Layer* layer : stack_) code += layer->glslOnce();
   return code + "#include \"composite/layer_peel.glsl\"\n"
                 "uniform int " + p + "_peel;\n"
                 "uniform float " + p + "_depth;\n"

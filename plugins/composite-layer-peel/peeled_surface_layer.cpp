@@ -47,8 +47,8 @@ std::string PeeledSurfaceLayer::surfaceColour() const {
 std::string PeeledSurfaceLayer::glsl() const {
   const std::string& p = prefix_;
   const std::string n = std::to_string(peel_.stackSize());
-  std::string code = peel_.glsl();
-  for (const Layer* surface : distinct_) code += surface->glsl();
+  std::string code = peel_.glslOnce();
+  for (const Layer* surface : distinct_) code += surface->glslOnce();
   return code + "uniform vec3 " + p + "_faces[" + n + "];\n" + exposed() + surfaceColour() +
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  float h[" + n + "];\n"

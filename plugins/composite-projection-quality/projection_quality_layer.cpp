@@ -43,7 +43,7 @@ std::string ProjectionQualityLayer::accumulation() const {
 
 std::string ProjectionQualityLayer::glsl() const {
   std::string code;
-  for (const Layer* input : inputs_) code += input->glsl();
+  for (const Layer* input : inputs_) code += input->glslOnce();
   return code +
          "#include \"composite/projection_quality.glsl\"\n"
          "uniform bool " + prefix_ + "_latitude;\n"

@@ -79,7 +79,7 @@ std::string ReliefLayer::shaded() const {
 
 std::string ReliefLayer::glsl() const {
   const std::string& p = prefix_;
-  return height_.glsl() + (surface_ ? surface_->glsl() : std::string()) +
+  return height_.glslOnce() + (surface_ ? surface_->glslOnce() : std::string()) +
          "#include \"composite/relief.glsl\"\n"
          "uniform vec3 " + p + "_light;\n"
          "uniform float " + p + "_exaggeration;\n"

@@ -54,7 +54,7 @@ ProjectionAspect TemporalBlendLayer::aspect() const {
 std::string TemporalBlendLayer::glsl() const {
   const std::string& p = prefix_;
   std::string code;
-  for (const Layer* step : steps_) code += step->glsl();
+  for (const Layer* step : steps_) code += step->glslOnce();
   code += "#include \"composite/temporal_blend.glsl\"\n"
           "uniform int " + p + "_earlier;\n"
           "uniform int " + p + "_later;\n"

@@ -110,7 +110,9 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   clear();
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  glEnable(GL_CULL_FACE);  // the far side of the body faces away: half the triangles need no fragments
+  // The far side of the body faces away: half the triangles need no fragments. From below the highest
+  // terrain (inside a cut, under a translucent upper layer) the surface may be seen from beneath: no culling.
+  if (glm::length(frame.view.eye) > radius_ + heights_.range().highest) glEnable(GL_CULL_FACE);
   surface_.use();
   surface_.set("planetToEye", glm::mat3(frame.view.planetToEye));
   surface_.set("projection", frame.view.projection);

@@ -13,20 +13,23 @@
 #include <strata/output.hpp>
 #include <strata/plugin.hpp>
 
+#include "translucent_surfaces.hpp"
+
 namespace strata::image {
 namespace {
 
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
-      : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters), displayGlsl_(displayGlsl(setup)) {
+      : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters), displayGlsl_(displayGlsl(setup)),
+        translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
   }
 
   void createResources(GpuContext& gpu) override {
     std::string layersGlsl, accumulate;
     for (const Layer* layer : surface_) {
-      layersGlsl += layer->glsl();
+      layersGlsl += layer->glslOnce();
       const bool colour = layer->kind() == LayerKind::Color;
       // Seed 000 section 4.1.2: value x weight into rgb, the weight into alpha.
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
@@ -37,6 +40,7 @@ class ImageOutput : public Node, public FrameOutput {
                                gpu.shaders->expand("output/composite.frag",
                                                    {{"STRATA_DISPLAY_GLSL", displayGlsl_},
                                                     {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                    {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
                                                     {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
   }
@@ -55,7 +59,9 @@ class ImageOutput : public Node, public FrameOutput {
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
+    units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
+    translucent_.bind(program_, units);
     triangle_->draw();
   }
 
@@ -93,6 +99,7 @@ class ImageOutput : public Node, public FrameOutput {
   ParameterSet parameters_;
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
+  TranslucentSurfaces translucent_;
   ShaderProgram program_;
   std::unique_ptr<FullscreenTriangle> triangle_;  // made with the GL resources, not at construction
   Framebuffer frame_;
@@ -108,6 +115,10 @@ NodeTypeDeclaration declaration() {
       {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color, LayerKind::Luminance},
        .list = true, .optional = true,
        .doc = "layers draped on it, blended by coverage where they overlap; none: grey"},
+      {.name = "translucent", .type = PortType::Geometry, .list = true, .optional = true,
+       .doc = "surfaces laid translucent over it where they lie nearer, farthest first (a stack's upper layers)"},
+      {.name = "translucent_surface", .type = PortType::Layer, .kinds = {LayerKind::Color}, .list = true,
+       .optional = true, .doc = "one colour layer per translucent geometry, in the same order"},
   };
   type.parameters = {
       {.name = "shading", .type = ParameterType::Choice, .defaultValue = std::string("lambert"),
@@ -118,6 +129,9 @@ NodeTypeDeclaration declaration() {
        .units = "deg", .doc = "the light's angle above the image plane"},
       {.name = "ambient", .type = ParameterType::Real, .defaultValue = 0.25, .minimum = 0.0, .maximum = 1.0,
        .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable"},
+      // 0.5: what lies behind shows as clearly as the translucent surface itself
+      {.name = "opacity", .type = ParameterType::Real, .defaultValue = 0.5, .minimum = 0.0, .maximum = 1.0,
+       .doc = "how much of what lies behind each translucent surface it hides"},
       {.name = "display", .type = ParameterType::String, .defaultValue = std::string(),
        .doc = "the OpenColorIO display the frame is for; empty: the config's default (Strata's: sRGB)"},
       {.name = "view", .type = ParameterType::String, .defaultValue = std::string(),

@@ -186,5 +186,17 @@ TEST_F(CompositorErrors, PeeledSurfaceWantsAFaceColourPerLayer) {
   EXPECT_TRUE(contains(result.err, "faces has 3 numbers, not three for each of the stack's 2 layers")) << result.err;
 }
 
+TEST_F(CompositorErrors, TranslucentGeometriesWantOneSurfaceEach) {
+  const CommandResult result = renderTiny(write("p.yaml", "strata: 1\nbody: {name: Mars, radius: 3396190}\nnodes:\n"
+                                                          "  a: {type: source.procedural, kind: color}\n"
+                                                          "  g: {type: geometry.icosahedral}\n"
+                                                          "  u: {type: geometry.icosahedral}\n"
+                                                          "  f: {type: output.image, geometry: g, surface: [a],\n"
+                                                          "      translucent: [u], translucent_surface: [a, a]}\n"));
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "p.yaml:7:3")) << result.err;
+  EXPECT_TRUE(contains(result.err, "1 translucent geometries have 2 translucent_surface layers")) << result.err;
+}
+
 }  // namespace
 }  // namespace strata::test

@@ -72,6 +72,7 @@ struct Cut {
   Colour floorColour = kBlue;
   std::string camera = "{lon: 0, lat: -3.3, altitude: 3.0e5, heading: 0, tilt: 40, fov: 45}";
   int band = kBand;  // px not judged about where what is expected changes
+  std::string frame;  // output.image's further inputs and parameters
 
   double heightAt(double lon, double lat) const {
     const double inside = region(lon, lat);
@@ -113,29 +114,39 @@ class LayerPeel : public ::testing::TestWithParam<std::string> {
     writeFloatRaster(file("floor.tif"), 64, 32, {-180, -90, 180, 90}, [](int, int) { return 0.0f; });
     writeColourRaster(file("red.tif"), 8, 8, {-180, -90, 180, 90}, [](int, int) { return Rgb8{220, 40, 30}; });
     writeColourRaster(file("blue.tif"), 8, 8, {-180, -90, 180, 90}, [](int, int) { return Rgb8{30, 60, 220}; });
+    writeFloatRaster(file("middle.tif"), 64, 32, {-180, -90, 180, 90}, [](int, int) { return 20000.0f; });
+    writeColourRaster(file("white.tif"), 8, 8, {-180, -90, 180, 90}, [](int, int) { return Rgb8{255, 255, 255}; });
+    writeColourRaster(file("green.tif"), 8, 8, {-180, -90, 180, 90}, [](int, int) { return Rgb8{0, 204, 0}; });
   }
 
   std::filesystem::path file(const std::string& name) const { return directory_.path() / name; }
 
-  // The stack peeled as `peel` says (composite.layer_peel's parameters), coloured, through this generator.
-  std::string pipeline(const std::string& peel, const std::string& camera) const {
+  // The stack peeled as `cut` says (composite.layer_peel's parameters), coloured, through this generator; a
+  // middle surface 20 km up and two more globes, of the upper and the middle surface, for `frame` to use.
+  std::string pipeline(const Cut& cut) const {
+    const std::string globe = "{type: " + GetParam() + ", lowest: 0, highest: 40000, height: ";
     return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-           "camera: " + camera + "\n"
+           "camera: " + cut.camera + "\n"
            "nodes:\n"
            "  upper: {type: source.gdal, path: " + file("upper.tif").string() + ", kind: height}\n"
            "  floor: {type: source.gdal, path: " + file("floor.tif").string() + ", kind: height}\n"
            "  red: {type: source.gdal, path: " + file("red.tif").string() + "}\n"
            "  blue: {type: source.gdal, path: " + file("blue.tif").string() + "}\n"
-           "  stack: {type: composite.layer_peel, layers: [upper, floor]" + peel + "}\n"
+           "  middle: {type: source.gdal, path: " + file("middle.tif").string() + ", kind: height}\n"
+           "  white: {type: source.gdal, path: " + file("white.tif").string() + "}\n"
+           "  green: {type: source.gdal, path: " + file("green.tif").string() + "}\n"
+           "  stack: {type: composite.layer_peel, layers: [upper, floor]" + cut.parameters + "}\n"
            "  coloured: {type: composite.peeled_surface, peel: stack, surfaces: [red, blue],\n"
            "             faces: [0, 0.8, 0, 0.9, 0.9, 0]}\n"
-           "  globe: {type: " + GetParam() + ", height: stack, lowest: 0, highest: 40000}\n"
-           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none}\n";
+           "  globe: " + globe + "stack}\n"
+           "  upper-globe: " + globe + "upper}\n"
+           "  middle-globe: " + globe + "middle}\n"
+           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none" + cut.frame + "}\n";
   }
 
   // Renders `cut` and counts the judged pixels of each kind, and those showing another colour than expected.
   Judged judge(const Cut& cut) {
-    const Image image = renderFrame(*engine_, directory_.write("peel.yaml", pipeline(cut.parameters, cut.camera)), kSize, kSize);
+    const Image image = renderFrame(*engine_, directory_.write("peel.yaml", pipeline(cut)), kSize, kSize);
     const View view = makeView(engine_->pipeline().body, engine_->camera(), kSize, kSize);
     std::vector<std::optional<Colour>> expected(std::size_t(kSize) * kSize);
     for (int y = 0; y < kSize; ++y)
@@ -196,6 +207,32 @@ TEST_P(LayerPeel, TheCameraMayGoBelowTheUpperSurface) {
   const Judged judged = judge(inside);
   EXPECT_GT(judged.floor, 1000);
   EXPECT_GT(judged.wall, 1000);
+  EXPECT_EQ(judged.wrong, 0);
+}
+
+double linear(int level) {
+  const double c = level / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+int encoded(double linear) {
+  return int(std::lround(255.0 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055)));
+}
+
+// Over the cut, the upper surface (white) and a middle one 20 km up (green), translucent, listed nearest
+// first: the floor shows through both, mixed in scene-linear light farthest first, whatever the order they
+// are given in; outside it the upper surface is the opaque one's, and the middle one lies behind it.
+TEST_P(LayerPeel, TranslucentLayersLieOverTheFloorInDepthOrder) {
+  constexpr double kOpacity = 0.4;
+  Colour seen{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double throughMiddle = linear(kBlue[c]) + (linear(kGreen[c]) - linear(kBlue[c])) * kOpacity;
+    seen[c] = encoded(throughMiddle + (1.0 - throughMiddle) * kOpacity);
+  }
+  Cut translucent{", cut: radius, radius: 80000", kWithinRadius, 0.0, 0.0, seen};
+  translucent.frame = ", translucent: [upper-globe, middle-globe], translucent_surface: [white, green], opacity: 0.4";
+  const Judged judged = judge(translucent);
+  EXPECT_GT(judged.floor, 1000);
+  EXPECT_GT(judged.upper, 1000);
   EXPECT_EQ(judged.wrong, 0);
 }
 

@@ -70,7 +70,7 @@ std::map<std::string, std::string> HeightInput::substitutions() const {
   return {{"STRATA_PROGRAM_DEFINES",
            "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + layer_->samplingFunction() +
                (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace)},
-          {"STRATA_HEIGHT_LAYER_GLSL", layer_->glsl()}};
+          {"STRATA_HEIGHT_LAYER_GLSL", layer_->glslOnce()}};
 }
 
 }  // namespace strata

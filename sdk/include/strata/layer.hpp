@@ -23,7 +23,7 @@ struct ValueRange {
 };
 
 // A layer is a GLSL sampling function over a projection, plus the GPU resources behind it (DESIGN.md).
-// Consumers paste glsl() into their programs after "strata/surface_point.glsl" and call
+// Consumers paste glslOnce() into their programs after "strata/surface_point.glsl" and call
 //   vec4 <samplingFunction()>(SurfacePoint p)
 // which returns the value in .rgb (.r for one-channel kinds: heights in metres, already scaled) and the
 // coverage weight in .a: 0 outside the data's extent or at nodata, 1 inside, between at edges.
@@ -47,7 +47,12 @@ class Layer {
   // Which region of the body its projection samples best (ProjectionAspect), once its node has created its
   // GPU resources (rasters are placed then); Other for layers with none (procedural, composed).
   virtual ProjectionAspect aspect() const { return ProjectionAspect::Other; }
+  // The layer's GLSL, its inputs' glslOnce() included, for consumers to paste: what they call and its
+  // uniforms, named after the node (glslIdentifier).
   virtual std::string glsl() const = 0;
+  // glsl() guarded so that a program it is pasted into twice defines it once: a layer two consumers share
+  // (one colour layer under two compositors of one frame). What consumers paste.
+  std::string glslOnce() const;
   // Binds the layer's textures and sets its uniforms in `program` (current), on the GL thread.
   virtual void bind(ShaderProgram& program, TextureUnits& units) const = 0;
   // How much the pages behind the layer are wanted (PageDemand), so that a time series shows two of its

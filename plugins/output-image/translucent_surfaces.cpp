@@ -1,0 +1,88 @@
+#include "translucent_surfaces.hpp"
+
+#include <strata/geometry.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/layer.hpp>
+
+namespace strata::image {
+namespace {
+
+// 1e-5 of the distance (1 m at 100 km): a translucent surface that coincides with the opaque one, drawn by
+// another mesh of the same heights, lies within that of it and is not laid over it twice.
+constexpr const char* kNearer = "1.00001";
+
+std::string index(std::size_t i) { return std::to_string(i); }
+
+}  // namespace
+
+TranslucentSurfaces::TranslucentSurfaces(const NodeSetup& setup) : opacity_(setup.parameters.real("opacity")) {
+  for (Node* node : setup.inputList("translucent")) geometries_.push_back(node->geometry());
+  for (Node* node : setup.inputList("translucent_surface")) layers_.push_back(node->layer());
+  if (geometries_.size() != layers_.size())
+    throw Error(setup.where,
+                std::to_string(geometries_.size()) + " translucent geometries have " + std::to_string(layers_.size()) +
+                    " translucent_surface layers",
+                "give one colour layer per translucent geometry, in the same order");
+}
+
+// The colour of translucent surface i at `pixel`, lit as the opaque one is, and its layer's coverage: where
+// that has no data the surface is not there (its geometry holds the bare sphere).
+std::string TranslucentSurfaces::colourOf(std::size_t i) const {
+  const std::string n = index(i);
+  return "vec4 translucentColour" + n + "(ivec2 pixel) {\n"
+         "  SurfacePoint p = surfacePointAt(translucentSurface" + n + ", translucentShading" + n + ", pixel);\n"
+         "  vec4 v = " + layers_[i]->samplingFunction() + "(p);\n"
+         "  return vec4(v.rgb * lightOn(texelFetch(translucentShading" + n + ", pixel, 0).xyz), v.a);\n"
+         "}\n";
+}
+
+// Each surface's depth (reversed: larger is nearer, 0 where it is not drawn), sorted farthest first, and those
+// nearer than the opaque surface laid over it.
+std::string TranslucentSurfaces::over() const {
+  const std::string n = index(geometries_.size());
+  std::string depths, colours;
+  for (std::size_t i = 0; i < geometries_.size(); ++i) {
+    const std::string k = index(i);
+    depths += "  d[" + k + "] = texelFetch(translucentShading" + k + ", pixel, 0).a > 0.0 ? texelFetch(translucentDepth" +
+              k + ", pixel, 0).r : 0.0;\n  order[" + k + "] = " + k + ";\n";
+    colours += "    if (order[k] == " + k + ") c = translucentColour" + k + "(pixel);\n";
+  }
+  return "vec3 translucentOver(ivec2 pixel, vec3 colour, float depth) {\n"
+         "  float d[" + n + "];\n"
+         "  int order[" + n + "];\n" + depths +
+         "  for (int i = 1; i < " + n + "; ++i)\n"
+         "    for (int j = i; j > 0 && d[order[j]] < d[order[j - 1]]; --j) {\n"
+         "      int swapped = order[j]; order[j] = order[j - 1]; order[j - 1] = swapped;\n"
+         "    }\n"
+         "  for (int k = 0; k < " + n + "; ++k) {\n"
+         "    if (d[order[k]] <= depth * " + kNearer + ") continue;\n"
+         "    vec4 c = vec4(0.0);\n" + colours +
+         "    colour = mix(colour, c.rgb, translucentOpacity * c.a);\n"
+         "  }\n"
+         "  return colour;\n"
+         "}\n";
+}
+
+std::string TranslucentSurfaces::glsl() const {
+  if (geometries_.empty()) return "vec3 translucentOver(ivec2 pixel, vec3 colour, float depth) { return colour; }\n";
+  std::string code = "uniform float translucentOpacity;\n";
+  for (std::size_t i = 0; i < geometries_.size(); ++i)
+    code += layers_[i]->glslOnce() + "uniform sampler2D translucentSurface" + index(i) +
+            ";\nuniform sampler2D translucentShading" + index(i) + ";\nuniform sampler2D translucentDepth" + index(i) +
+            ";\n" + colourOf(i);
+  return code + over();
+}
+
+void TranslucentSurfaces::bind(ShaderProgram& program, TextureUnits& units) const {
+  if (geometries_.empty()) return;
+  program.set("translucentOpacity", float(opacity_));
+  for (std::size_t i = 0; i < geometries_.size(); ++i) {
+    const Framebuffer& buffers = geometries_[i]->gbuffer();
+    units.bind(program, "translucentSurface" + index(i), buffers.color(0).id());
+    units.bind(program, "translucentShading" + index(i), buffers.color(1).id());
+    units.bind(program, "translucentDepth" + index(i), buffers.depth().id());
+    layers_[i]->bind(program, units);
+  }
+}
+
+}  // namespace strata::image

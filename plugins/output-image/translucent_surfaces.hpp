@@ -1,0 +1,42 @@
+#pragma once
+#include <string>
+#include <vector>
+
+#include <strata/node.hpp>
+
+namespace strata {
+class ShaderProgram;
+class SurfaceGeometry;
+class TextureUnits;
+}  // namespace strata
+
+namespace strata::image {
+
+// Surfaces output.image lays translucent over its geometry (issue 8, "show upper layers translucent over
+// lower ones with correct ordering"; seed 000 chapter 6, layered data peeling; digest 000 section 6: "a
+// separate height accumulation per layer, separate vertex sets"): each a geometry of its own, drawn into its
+// own deferred buffer with the same view, and coloured by one layer. Per pixel, those nearer than the
+// opaque surface are laid over it farthest first, each hiding `opacity` of what lies behind it, so the
+// order is right however the surfaces cross and wherever the camera is.
+class TranslucentSurfaces {
+ public:
+  // The `translucent` geometries and their `translucent_surface` layers, one each (throws strata::Error at
+  // the node when the counts differ).
+  explicit TranslucentSurfaces(const NodeSetup& setup);
+
+  // What composite.frag's STRATA_TRANSLUCENT_GLSL becomes: the layers' GLSL and
+  //   vec3 translucentOver(ivec2 pixel, vec3 colour, float depth)
+  std::string glsl() const;
+  // Binds each geometry's buffers and layer, and the opacity.
+  void bind(ShaderProgram& program, TextureUnits& units) const;
+
+ private:
+  std::string colourOf(std::size_t i) const;
+  std::string over() const;
+
+  std::vector<SurfaceGeometry*> geometries_;
+  std::vector<const Layer*> layers_;
+  double opacity_;
+};
+
+}  // namespace strata::image
