@@ -13,6 +13,7 @@
 
 #include "observation.hpp"
 #include "observation_writer.hpp"
+#include "panchromatic.hpp"
 #include "seasons.hpp"
 
 namespace {
@@ -40,6 +41,7 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
   for (const Observation& observation : standardObservations())
     writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
   writeSeasons(directory);
+  writePanchromatic(directory);
 }
 
 }  // namespace
@@ -47,7 +49,8 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
 int main(int argc, char** argv) {
   CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
                "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif, and twelve months "
-               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif."};
+               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, and a panchromatic "
+               "view of the strip, strip-luminance.tif."};
   std::string directory;
   int largeWidth = 0, largeHeight = 0;
   app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();
