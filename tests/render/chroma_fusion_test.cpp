@@ -33,6 +33,10 @@
 // gain: the same tolerance (measured 0.87 / 8), with the frame's mean level, its brightness, within 0.5 of the
 // image's (measured +0.03); taken as it is (matching none) it darkens the frame by more than 10 levels on
 // average (measured -21.3).
+//
+// Coverage: beyond the luminance layer's extent the colour layer shows exactly as alone (measured: 0 levels);
+// beyond the colour layer's, the luminance as grey, within 1.5 levels of the grey of the image's pixel (its
+// three channels' rounding carried into their luminance, and the grey's own; measured 0.29 / 1).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -182,6 +186,18 @@ class ChromaFusion : public ::testing::Test {
                        [&](int column, int row) {
                          return float(gain * relativeLuminance(decode(texel(column, row))));
                        });
+    writeHalves();
+  }
+
+  // The luminance layer's west half and the colour layer's east half, the edge at longitude 0 in the middle.
+  static void writeHalves() {
+    constexpr int side = kTexels / kReduction;
+    writeFloatRaster(file("west-luminance.tif"), kTexels / 2, kTexels, {-kHalfExtent, -kHalfExtent, 0.0, kHalfExtent},
+                     [](int column, int row) {
+                       return float(relativeLuminance(decode(image_[std::size_t(row) * kTexels + column])));
+                     });
+    writeColourRaster(file("east-colour.tif"), side / 2, side, {0.0, -kHalfExtent, kHalfExtent, kHalfExtent},
+                      [](int column, int row) { return colour_[std::size_t(row) * side + side / 2 + column]; });
   }
   static void TearDownTestSuite() {
     directory_.reset();
@@ -207,8 +223,9 @@ class ChromaFusion : public ::testing::Test {
   }
 
   // The fusion of `luminanceFile` with the colour layer, with `parameters` said of it.
-  Image fused(const std::string& parameters, const std::string& luminanceFile = "luminance.tif") {
-    return render(source("pan", luminanceFile, "luminance") + source("colour", "colour.tif", "color") +
+  Image fused(const std::string& parameters, const std::string& luminanceFile = "luminance.tif",
+              const std::string& colourFile = "colour.tif") {
+    return render(source("pan", luminanceFile, "luminance") + source("colour", colourFile, "color") +
                       "  fused: {type: composite.chroma_fusion, luminance: pan, colour: colour" + parameters + "}\n",
                   "fused");
   }
@@ -283,6 +300,32 @@ TEST_F(ChromaFusion, MatchingKeepsTheColourLayersBrightness) {
   const Difference unmatched =
       report("0.7 x luminance, matching none", differenceOf(fused(", matching: none", "dim.tif"), reference));
   EXPECT_LT(unmatched.bias, -10.0);
+}
+
+// An 8-bit frame's grey of the relative luminance of its pixel's colour.
+double greyLevel(const std::array<int, 4>& pixel) {
+  return 255.0 * srgbEncode(relativeLuminance(decode(Rgb8{static_cast<unsigned char>(pixel[0]),
+                                                          static_cast<unsigned char>(pixel[1]),
+                                                          static_cast<unsigned char>(pixel[2])})));
+}
+
+// Where the luminance layer has no data the colour layer shows alone; where the colour layer has none, the
+// luminance as grey. Judged from 4 pixels either side of the edge (longitude 0, the middle column) on.
+TEST_F(ChromaFusion, EachLayerAloneWhereTheOtherHasNoData) {
+  const Image colour = colourAlone(), reference = image();
+  const Image westLuminance = fused("", "west-luminance.tif");
+  const Image eastColour = fused("", "luminance.tif", "east-colour.tif");
+  Difference east, west;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x)
+      for (std::size_t c = 0; c < 3; ++c) {
+        if (x > kSize / 2 + 3) east.add(westLuminance.at(x, y)[c] - colour.at(x, y)[c]);
+        if (x < kSize / 2 - 3) west.add(eastColour.at(x, y)[c] - greyLevel(reference.at(x, y)));
+      }
+  report("east of the luminance layer, against the colour layer", east.averaged());
+  report("west of the colour layer, against the image's grey", west.averaged());
+  EXPECT_LE(east.largest, 0.0) << "the colour layer exactly";
+  EXPECT_LE(west.largest, 1.5) << "the frame's rounding of each channel, carried into their luminance, and the grey's";
 }
 
 // The luminance port takes luminance and colour layers; the graph refuses others at the node.
