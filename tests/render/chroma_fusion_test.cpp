@@ -328,20 +328,39 @@ TEST_F(ChromaFusion, EachLayerAloneWhereTheOtherHasNoData) {
   EXPECT_LE(west.largest, 1.5) << "the frame's rounding of each channel, carried into their luminance, and the grey's";
 }
 
-// The luminance port takes luminance and colour layers; the graph refuses others at the node.
-TEST_F(ChromaFusion, RefusesAHeightLayerAsLuminance) {
-  const std::string text = "strata: 1\nnodes:\n" + source("heights", "luminance.tif", "height") +
-                           source("colour", "colour.tif", "color") +
-                           "  fused: {type: composite.chroma_fusion, luminance: heights, colour: colour}\n"
+// The message of loading `nodes` (with a globe and a frame showing `fused`), or "" where it loads.
+std::string refusal(Engine& engine, const TemporaryDirectory& directory, const std::string& nodes) {
+  const std::string text = "strata: 1\nnodes:\n" + nodes +
                            "  globe: {type: geometry.icosahedral}\n"
                            "  frame: {type: output.image, geometry: globe, surface: [fused]}\n";
   try {
-    engine_->load(directory_->write("refused.yaml", text));
-    ADD_FAILURE() << "a height layer was taken as luminance";
+    engine.load(directory.write("refused.yaml", text));
   } catch (const Error& error) {
     std::printf("%s\n", error.what());
-    EXPECT_NE(std::string(error.what()).find("luminance or color"), std::string::npos) << error.what();
+    return error.what();
   }
+  return {};
+}
+
+// The luminance port takes luminance and colour layers, the colour port colour layers: the graph refuses
+// others at the node. One node on both ports is refused, and matching against a colour layer without texels.
+TEST_F(ChromaFusion, RefusesWhatItCannotFuse) {
+  const std::string colour = source("colour", "colour.tif", "color");
+  const std::string heights =
+      refusal(*engine_, *directory_,
+              source("heights", "luminance.tif", "height") + colour +
+                  "  fused: {type: composite.chroma_fusion, luminance: heights, colour: colour}\n");
+  EXPECT_NE(heights.find("input 'luminance' takes a luminance or color layer"), std::string::npos) << heights;
+  const std::string same =
+      refusal(*engine_, *directory_,
+              colour + "  fused: {type: composite.chroma_fusion, luminance: colour, colour: colour}\n");
+  EXPECT_NE(same.find("the same node"), std::string::npos) << same;
+  const std::string procedural =
+      refusal(*engine_, *directory_,
+              source("pan", "luminance.tif", "luminance") + "  colour: {type: source.procedural, kind: color}\n" +
+                  "  fused: {type: composite.chroma_fusion, luminance: pan, colour: colour, matching: detail}\n");
+  EXPECT_NE(procedural.find("no texels"), std::string::npos) << procedural;
+  EXPECT_NE(procedural.find("matching: none"), std::string::npos) << procedural;
 }
 
 }  // namespace
