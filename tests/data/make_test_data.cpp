@@ -14,6 +14,7 @@
 #include "ice_sheet.hpp"
 #include "observation.hpp"
 #include "observation_writer.hpp"
+#include "panchromatic.hpp"
 #include "seasons.hpp"
 
 namespace {
@@ -42,6 +43,7 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
     writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
   writeSeasons(directory);
   writeIceSheet(directory);
+  writePanchromatic(directory);
 }
 
 }  // namespace
@@ -49,8 +51,8 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
 int main(int argc, char** argv) {
   CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
                "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif, and twelve months "
-               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, and an ice sheet over "
-               "the north pole, ice-height.tif and ice-color.tif."};
+               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, an ice sheet over "
+               "the north pole, ice-height.tif and ice-color.tif, and a panchromatic view of the strip, strip-luminance.tif."};
   std::string directory;
   int largeWidth = 0, largeHeight = 0;
   app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();

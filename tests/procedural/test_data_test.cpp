@@ -14,6 +14,7 @@
 #include <numbers>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "planet_model.hpp"
 #include "srgb_encoding.hpp"
@@ -181,6 +182,48 @@ INSTANTIATE_TEST_SUITE_P(
                       Expected{"healpix", "+proj=healpix +R=3396190", 2048, 1024},
                       Expected{"strip", "+proj=longlat +R=3396190", 910, 1365}),
     [](const auto& test) { return std::string(test.param.name); });
+
+// Every texel of `dataset` as `type`, `bands` interleaved.
+template <class T>
+std::vector<T> readAll(GDALDataset& dataset, GDALDataType type, int bands) {
+  const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
+  std::vector<T> texels(std::size_t(width) * height * bands);
+  EXPECT_EQ(dataset.RasterIO(GF_Read, 0, 0, width, height, texels.data(), width, height, type, bands, nullptr,
+                             GSpacing(sizeof(T)) * bands, GSpacing(sizeof(T)) * bands * width, sizeof(T), nullptr),
+            CE_None);
+  return texels;
+}
+
+double srgbDecode(std::uint8_t level) {
+  const double e = level / 255.0;
+  return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+// The strip seen by a panchromatic camera (pipelines/chroma_fusion.yaml): on the strip's grid, the relative
+// luminance of its colours (sRGB decoded, Rec. 709 weights) times 0.8, and nodata -1 where they have none.
+TEST(PanchromaticStrip, IsTheStripColoursLuminanceAtFourFifths) {
+  Dataset colours = openRaster("strip", "color"), luminance = openRaster("strip", "luminance");
+  ASSERT_TRUE(colours && luminance) << "run the test_data fixture (strata-make-test-data) first";
+  ASSERT_EQ(luminance->GetRasterCount(), 1);
+  ASSERT_EQ(luminance->GetRasterBand(1)->GetRasterDataType(), GDT_Float32);
+  expectGeoreferencing(*luminance, {"strip", "+proj=longlat +R=3396190", 910, 1365});
+  int hasNodata = 0;
+  EXPECT_EQ(luminance->GetRasterBand(1)->GetNoDataValue(&hasNodata), -1.0);
+  EXPECT_TRUE(hasNodata);
+  const std::vector<std::uint8_t> rgba = readAll<std::uint8_t>(*colours, GDT_Byte, 4);
+  const std::vector<float> values = readAll<float>(*luminance, GDT_Float32, 1);
+  int wrong = 0, withData = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::uint8_t* c = &rgba[i * 4];
+    const double relative =
+        0.2126729 * srgbDecode(c[0]) + 0.7151522 * srgbDecode(c[1]) + 0.0721750 * srgbDecode(c[2]);
+    const double expected = c[3] == 0 ? -1.0 : 0.8 * relative;
+    wrong += std::abs(values[i] - expected) > 1e-6;
+    withData += c[3] != 0;
+  }
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(withData, 100000);
+}
 
 }  // namespace
 }  // namespace strata::test

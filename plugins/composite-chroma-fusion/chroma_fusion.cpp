@@ -1,0 +1,90 @@
+// composite.chroma_fusion: a high-resolution luminance layer (HiRISE-like panchromatic) and a low-resolution
+// colour layer (Viking-like) fused into one high-resolution colour layer, chroma from the one and luminance
+// from the other in an opponent space (seed 000 section 1.1 and section 3.4.3; digest 000 section 6).
+#include <memory>
+#include <string>
+
+#include <strata/node.hpp>
+#include <strata/node_type.hpp>
+#include <strata/plugin.hpp>
+
+#include "chroma_fusion_layer.hpp"
+
+namespace strata::composite {
+namespace {
+
+// One node on both ports would paste its layer's GLSL into the program twice, which does not compile; and
+// fusing an image with itself changes nothing.
+const Layer& colourOf(const NodeSetup& setup) {
+  if (setup.input("luminance") == setup.input("colour"))
+    throw Error(setup.where, "the luminance and the colour are the same node",
+                "give the high-resolution luminance (or colour) layer as `luminance`, the low-resolution colour "
+                "layer as `colour`");
+  return *setup.input("colour")->layer();
+}
+
+ChromaFusionLayer::Fusion fusionOf(const NodeSetup& setup, const Layer& colour) {
+  const ParameterSet& parameters = setup.parameters;
+  using Space = ChromaFusionLayer::Space;
+  using Matching = ChromaFusionLayer::Matching;
+  const ChromaFusionLayer::Fusion fusion{parameters.string("space") == "ycbcr" ? Space::YCbCr : Space::Lab,
+                                         parameters.real("strength"),
+                                         parameters.string("matching") == "detail" ? Matching::Detail : Matching::None};
+  if (fusion.matching == Matching::Detail && colour.texelStepsFunction().empty())
+    throw Error(parameters.where("matching"),
+                "the colour layer has no texels (procedural, or a composite that offers none), whose size the "
+                "luminance's detail is measured against",
+                "give a raster colour layer (source.gdal), or matching: none to take the luminance as it is");
+  return fusion;
+}
+
+class ChromaFusion : public Node {
+ public:
+  explicit ChromaFusion(const NodeSetup& setup)
+      : layer_(setup.id, *setup.input("luminance")->layer(), colourOf(setup), fusionOf(setup, colourOf(setup))) {}
+
+  Layer* layer() override { return &layer_; }
+
+ private:
+  ChromaFusionLayer layer_;
+};
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.type = "composite.chroma_fusion";
+  type.category = NodeCategory::Compositor;
+  type.summary = "Fuses a high-resolution luminance layer with a low-resolution colour layer: chroma from the one, "
+                 "luminance from the other, in CIE L*a*b* or Y'CbCr";
+  type.inputs = {{.name = "luminance", .type = PortType::Layer, .kinds = {LayerKind::Luminance, LayerKind::Color},
+                  .doc = "the high-resolution layer whose luminance the result takes: a luminance layer (its value, "
+                         "scene-linear relative luminance) or a colour layer (its Rec. 709 luminance)"},
+                 {.name = "colour", .type = PortType::Layer, .kinds = {LayerKind::Color},
+                  .doc = "the low-resolution colour layer whose chroma the result takes"}};
+  type.output = PortType::Layer;
+  type.parameters = {
+      // lab: its lightness depends on luminance alone, so a panchromatic measurement sets it exactly, and its
+      // chroma is perceptually even
+      {.name = "space", .type = ParameterType::Choice, .defaultValue = std::string("lab"),
+       .doc = "the opponent space whose chroma is kept: lab (CIE L*a*b*, D65) or ycbcr (BT.709 Y'CbCr of the "
+              "sRGB-encoded values, as image files hold it)",
+       .choices = {"lab", "ycbcr"}},
+      // 1: the fusion the node is for; lower it to fade the luminance's detail in and out
+      {.name = "strength", .type = ParameterType::Real, .defaultValue = 1.0, .minimum = 0.0, .maximum = 1.0,
+       .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion"},
+      // detail: two data sets seldom agree in absolute brightness (sensor, exposure, illumination), and the
+      // colour's own brightness is what keeps its hue
+      {.name = "matching", .type = ParameterType::Choice, .defaultValue = std::string("detail"),
+       .doc = "detail: the colour layer's luminance times the luminance layer's ratio to its own low-pass at "
+              "the colour layer's resolution; none: the luminance layer's luminance as it is",
+       .choices = {"detail", "none"}},
+  };
+  type.create = [](const NodeSetup& setup) { return std::make_unique<ChromaFusion>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::composite
+
+STRATA_PLUGIN("composite-chroma-fusion", "0.1.0", strata::composite::registerTypes)
