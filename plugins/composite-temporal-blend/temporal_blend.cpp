@@ -45,7 +45,7 @@ Steps stepsFromFiles(const NodeSetup& setup) {
   for (const DatedFile& file : datedFiles(setup.parameters.string("files"), setup.pipelineDirectory, where)) {
     NodeSetup step{setup.id + "/" + file.path.filename().string(), where,
                    fileStepParameters(*reader, file.path, setup.parameters.string("kind"), where), {}, setup.body,
-                   setup.pipelineDirectory, setup.plugins, setup.date};
+                   setup.pipelineDirectory, setup.plugins, setup.date, setup.colour};
     steps.own.push_back(reader->create(step));
     steps.nodes.push_back(steps.own.back().get());
     steps.dates.push_back(file.date);

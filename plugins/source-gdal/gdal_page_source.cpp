@@ -9,14 +9,15 @@
 namespace strata::gdal {
 
 GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
-                               std::shared_ptr<const MemoryFile> memoryFile)
-    : memoryFile_(std::move(memoryFile)), path_(dataset->GetDescription()), kind_(kind),
+                               std::optional<ColourEncoding> encoding, std::shared_ptr<const MemoryFile> memoryFile)
+    : memoryFile_(std::move(memoryFile)), path_(dataset->GetDescription()), kind_(kind), encoding_(std::move(encoding)),
       pyramid_(dataset->GetRasterXSize(), dataset->GetRasterYSize()) {
   idle_.push_back(std::move(dataset));
 }
 
-GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, PagePyramid pyramid)
-    : path_(dataset->GetDescription()), kind_(kind), pyramid_(pyramid) {
+GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
+                               std::optional<ColourEncoding> encoding, PagePyramid pyramid)
+    : path_(dataset->GetDescription()), kind_(kind), encoding_(std::move(encoding)), pyramid_(pyramid) {
   idle_.push_back(std::move(dataset));
 }
 
@@ -34,6 +35,10 @@ void GdalPageSource::read(const LevelWindow& window, std::span<std::byte> texels
   const Borrowed dataset(*this);
   const QuietGdalErrors quiet;
   readWindow(*dataset.handle, kind_, raster, window.width, window.height, texels);
+}
+
+std::string GdalPageSource::toSceneLinearGlsl(const std::string& functionName) const {
+  return encoding_ ? encoding_->toSceneLinearGlsl(functionName) : std::string();
 }
 
 GdalPageSource::Borrowed::Borrowed(const GdalPageSource& source) : owner(source), handle(source.borrow()) {}

@@ -4,8 +4,9 @@
 
 namespace strata::gdal {
 
-HealpixPageSource::HealpixPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, std::int64_t nside)
-    : GdalPageSource(std::move(dataset), kind, healpix::stripPyramid(nside)), nside_(nside) {}
+HealpixPageSource::HealpixPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
+                                     std::optional<ColourEncoding> encoding, std::int64_t nside)
+    : GdalPageSource(std::move(dataset), kind, std::move(encoding), healpix::stripPyramid(nside)), nside_(nside) {}
 
 LevelWindow HealpixPageSource::gridOf(const PageKey& key) const {
   const int side = faceSide(key.level);

@@ -10,7 +10,8 @@ namespace strata::gdal {
 // neighbouring face on the sphere, so that filtering is seamless across the faces' edges.
 class HealpixPageSource final : public GdalPageSource {
  public:
-  HealpixPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, std::int64_t nside);
+  HealpixPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind, std::optional<ColourEncoding> encoding,
+                    std::int64_t nside);
 
   LevelWindow gridOf(const PageKey& key) const override;
   std::optional<glm::ivec2> texelBeside(const PageKey& key, glm::ivec2 texel) const override;

@@ -66,16 +66,13 @@ std::vector<float> readCoverage(GDALRasterBand& band, const RasterWindow& window
   return coverage;
 }
 
-float srgbToLinear(float encoded) {
-  return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
 template <typename Texel>
 void store(std::span<std::byte> texels, std::size_t i, const Texel& texel) {
   std::memcpy(texels.data() + i * sizeof(Texel), &texel, sizeof(Texel));
 }
 
-// PageFormat::Colour: half-float linear r, g, b premultiplied by coverage, then coverage.
+// PageFormat::Colour: half-float r, g, b as encoded, scaled to [0, 1] and premultiplied by coverage, then
+// coverage. Reduced levels are GDAL's averages of the encoded values (gamma-space mip levels).
 void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int height, std::span<std::byte> texels) {
   const int bands = dataset.GetRasterCount();
   GDALRasterBand& first = *dataset.GetRasterBand(1);
@@ -86,7 +83,7 @@ void readColour(GDALDataset& dataset, const RasterWindow& window, int width, int
   const std::vector<float> coverage = readCoverage(first, window, width, height);
   for (std::size_t i = 0; i < coverage.size(); ++i) {
     std::array<std::uint16_t, 4> texel{};
-    for (int c = 0; c < 3; ++c) texel[c] = glm::packHalf1x16(srgbToLinear(rgb[c][i] / full) * coverage[i]);
+    for (int c = 0; c < 3; ++c) texel[c] = glm::packHalf1x16(rgb[c][i] / full * coverage[i]);
     texel[3] = glm::packHalf1x16(coverage[i]);
     store(texels, i, texel);
   }

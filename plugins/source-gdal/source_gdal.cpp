@@ -11,6 +11,7 @@
 #include <strata/plugin.hpp>
 #include <strata/plugin_registry.hpp>
 
+#include "colour_encoding.hpp"
 #include "gdal_page_source.hpp"
 #include "georeferencing.hpp"
 #include "healpix_page_source.hpp"
@@ -26,7 +27,8 @@ namespace {
 class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
-      : parameters_(setup.parameters), plugins_(*setup.plugins), kind_(kindOf(setup)), layer_(setup.id, kind_) {
+      : parameters_(setup.parameters), plugins_(*setup.plugins), kind_(kindOf(setup)),
+        encoding_(colourEncodingOf(setup, kind_)), layer_(setup.id, kind_) {
     layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
   }
 
@@ -40,14 +42,14 @@ class GdalSource : public Node {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
       layer_.setPageRanges(std::move(healpix->ranges));
-      source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, healpix->nside);
+      source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, encoding_, healpix->nside);
       return;
     }
     georeference_ = georeferenceOf(*dataset, plugins_,
                                    {parameters_.string("projection"), parameters_.where("projection"),
                                     parameters_.reals("extent"), parameters_.where("extent"), where});
     warnWithoutOverviews(*dataset);
-    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, polygonMask_);
+    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, encoding_, polygonMask_);
   }
 
   void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
@@ -122,6 +124,7 @@ class GdalSource : public Node {
   ParameterSet parameters_;
   const PluginRegistry& plugins_;
   LayerKind kind_;
+  std::optional<ColourEncoding> encoding_;  // none: values, or colours already scene-linear
   PagedRasterLayer layer_;
   std::shared_ptr<const MemoryFile> polygonMask_;  // where a vector file's polygons were rasterised
   std::shared_ptr<GdalPageSource> source_;
@@ -139,8 +142,12 @@ NodeTypeDeclaration declaration() {
       {.name = "path", .type = ParameterType::Path,
        .doc = "the raster file, or a vector file of polygons (with kind: mask); relative to the pipeline file"},
       {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
-       .doc = "what the values are: color (8/16-bit sRGB) or one-channel height, scalar, luminance, mask",
+       .doc = "what the values are: color (8/16-bit, see colorspace) or one-channel height, scalar, luminance, mask",
        .choices = {"color", "height", "scalar", "luminance", "mask"}},
+      // srgb: 8-bit imagery (cameras, the web, map tiles) is almost always sRGB-encoded.
+      {.name = "colorspace", .type = ParameterType::String, .defaultValue = std::string("srgb"),
+       .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's OpenColorIO "
+              "config (Strata's: srgb, gamma22, linear, raw); converted to scene-linear on the GPU"},
       {.name = "scale", .type = ParameterType::Real, .defaultValue = 1.0,
        .doc = "one-channel kinds: multiplies raw values (vertical exaggeration, or counts to metres)"},
       {.name = "offset", .type = ParameterType::Real, .defaultValue = 0.0,

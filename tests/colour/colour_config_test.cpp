@@ -85,6 +85,15 @@ TEST(ColourConfig, Gamma22IsAPurePower) {
   }
 }
 
+TEST(ColourConfig, SaysWhichSpacesNeedNoConversion) {
+  const ColourConfig config = ColourConfig::load({}, kWhere);
+  EXPECT_TRUE(config.isSceneLinear("linear", kWhere));
+  EXPECT_TRUE(config.isSceneLinear("raw", kWhere)) << "data is never converted";
+  EXPECT_FALSE(config.isSceneLinear("srgb", kWhere));
+  EXPECT_FALSE(config.isSceneLinear("gamma22", kWhere));
+  EXPECT_THROW(config.isSceneLinear("acescg", kWhere), Error);
+}
+
 TEST(ColourConfig, NamesWhatTheConfigLacks) {
   const ColourConfig config = ColourConfig::load({}, kWhere);
   try {

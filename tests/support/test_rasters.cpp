@@ -23,6 +23,20 @@ std::unique_ptr<GDALDataset> createGeoTiff(const std::filesystem::path& file, in
   return dataset;
 }
 
+template <typename Sample>
+void writeRgb(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
+              GDALDataType type, const std::function<std::array<Sample, 3>(int, int)>& colour) {
+  auto dataset = createGeoTiff(file, width, height, 3, type, extent);
+  std::vector<Sample> band(std::size_t(width) * height);
+  for (int channel = 0; channel < 3; ++channel) {
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) band[std::size_t(y) * width + x] = colour(x, y)[std::size_t(channel)];
+    if (dataset->GetRasterBand(channel + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width, height,
+                                                      type, 0, 0) != CE_None)
+      throw std::runtime_error("cannot write " + file.string());
+  }
+}
+
 }  // namespace
 
 Rgb8 cellColour(int column, int row) {
@@ -37,15 +51,12 @@ void writeCheckerboard(const std::filesystem::path& file) {
 
 void writeColourRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
                        const std::function<Rgb8(int column, int row)>& colour) {
-  auto dataset = createGeoTiff(file, width, height, 3, GDT_Byte, extent);
-  std::vector<unsigned char> band(std::size_t(width) * height);
-  for (int channel = 0; channel < 3; ++channel) {
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) band[std::size_t(y) * width + x] = colour(x, y)[std::size_t(channel)];
-    if (dataset->GetRasterBand(channel + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width, height,
-                                                      GDT_Byte, 0, 0) != CE_None)
-      throw std::runtime_error("cannot write " + file.string());
-  }
+  writeRgb<unsigned char>(file, width, height, extent, GDT_Byte, colour);
+}
+
+void writeColourRaster16(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
+                         const std::function<Rgb16(int column, int row)>& colour) {
+  writeRgb<std::uint16_t>(file, width, height, extent, GDT_UInt16, colour);
 }
 
 void writeFloatRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -11,6 +12,7 @@
 namespace strata::test {
 
 using Rgb8 = std::array<unsigned char, 3>;
+using Rgb16 = std::array<std::uint16_t, 3>;
 
 // The colour of cell (column, row) of the test checkerboard: 8 columns of 45 degrees of longitude from
 // -180, 4 rows of 45 degrees of latitude from the north. Every cell differs from every other by at least
@@ -24,6 +26,9 @@ void writeCheckerboard(const std::filesystem::path& file);
 // colour(column, row) per texel.
 void writeColourRaster(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
                        const std::function<Rgb8(int column, int row)>& colour);
+// The same with 16-bit bands, for colours whose encoding needs more than 8 bits (linear light).
+void writeColourRaster16(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
+                         const std::function<Rgb16(int column, int row)>& colour);
 
 // Writes a one-band Float32 GeoTIFF of `width` x `height` over [west, south, east, north] (degrees, EPSG:4326)
 // with value(column, row) per texel and an optional nodata value.

@@ -74,13 +74,22 @@ std::string ColourConfig::defaultView(const std::string& display) const {
   return impl_->config->getDefaultView(display.c_str());
 }
 
-std::string ColourConfig::toSceneLinear(const std::string& space, const std::string& functionName,
-                                        const SourceLocation& where) const {
+void ColourConfig::requireColourSpace(const std::string& space, const SourceLocation& where) const {
   if (!impl_->config->getColorSpace(space.c_str()))
     throw Error(where, "the colour space '" + space + "' is not in " + origin_,
                 "choose one of " + joined(colourSpaces()));
+}
+
+std::string ColourConfig::toSceneLinear(const std::string& space, const std::string& functionName,
+                                        const SourceLocation& where) const {
+  requireColourSpace(space, where);
   return glslOf(impl_->config->getProcessor(space.c_str(), OCIO::ROLE_SCENE_LINEAR), functionName,
                 "the conversion from '" + space + "'", where);
+}
+
+bool ColourConfig::isSceneLinear(const std::string& space, const SourceLocation& where) const {
+  requireColourSpace(space, where);
+  return impl_->config->getProcessor(space.c_str(), OCIO::ROLE_SCENE_LINEAR)->isNoOp();
 }
 
 std::string ColourConfig::toDisplay(const std::string& display, const std::string& view,

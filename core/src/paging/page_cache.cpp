@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -13,6 +14,7 @@
 #include "paging/page_loader.hpp"
 #include "paging/page_selection.hpp"
 #include "paging/page_uploads.hpp"
+#include "paging/scene_linear_pages.hpp"
 
 namespace strata {
 
@@ -28,6 +30,7 @@ struct AttachedLayer {
   std::map<PageKey, int> resident;  // page -> atlas slot
   std::set<PageKey> failed;         // never asked for again
   PageDemand demand = PageDemand::Shown;
+  std::optional<int> toSceneLinear;  // the conversion its colour pages take after upload, if any
 };
 
 }  // namespace
@@ -54,6 +57,7 @@ struct PageCache::Impl {
   paging::PageIndex index;
   std::map<PageFormat, std::unique_ptr<paging::PageAtlas>> atlases;
   std::unique_ptr<paging::PageUploads> uploads;
+  paging::SceneLinearPages sceneLinear;
   std::unique_ptr<paging::PageLoader> loader;  // after the layers: its threads stop before they go
   PageCacheStatistics statistics;
   std::vector<PageFailure> failures;
@@ -149,6 +153,7 @@ void PageCache::Impl::allocate() {
   }
   index.allocate();
   uploads = std::make_unique<paging::PageUploads>(settings.uploadsPerFrame);
+  for (AttachedLayer& layer : layers) layer.toSceneLinear = sceneLinear.add(*layer.source);
   loader = std::make_unique<paging::PageLoader>(
       settings.loaderThreads, std::size_t(settings.uploadsPerFrame + settings.loaderThreads),
       [this](const LayerPage& page, std::vector<std::byte>& texels) {
@@ -231,8 +236,9 @@ void PageCache::Impl::uploadFinished(std::uint64_t frame, std::size_t count, boo
   }
 }
 
-// Puts a read page into a slot of its atlas, evicting the least recently used page if need be, and
-// points the index at it. When every slot serves this frame the page is dropped; it is asked for again.
+// Puts a read page into a slot of its atlas, evicting the least recently used page if need be, converts
+// it to scene-linear there where its source encodes colour otherwise, and points the index at it. When
+// every slot serves this frame the page is dropped; it is asked for again.
 void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool pinned) {
   AttachedLayer& layer = layers[std::size_t(loaded.page.layer)];
   paging::PageAtlas& atlas = *atlases.at(layer.source->format());
@@ -245,6 +251,7 @@ void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool 
     ++statistics.evicted;
   }
   uploads->upload(atlas.texture(), atlas.format(), *slot, loaded.texels);
+  if (layer.toSceneLinear) sceneLinear.convert(*layer.toSceneLinear, atlas.texture(), *slot);
   atlas.hold(*slot, loaded.page, frame, pinned);
   layer.resident[loaded.page.key] = *slot;
   index.place(loaded.page.layer, loaded.page.key, *slot);

@@ -8,4 +8,6 @@ LevelWindow PageSource::gridOf(const PageKey& key) const {
 
 std::optional<glm::ivec2> PageSource::texelBeside(const PageKey&, glm::ivec2) const { return std::nullopt; }
 
+std::string PageSource::toSceneLinearGlsl(const std::string&) const { return {}; }
+
 }  // namespace strata

@@ -31,10 +31,14 @@ class ColourConfig {
   std::string toSceneLinear(const std::string& space, const std::string& functionName, const SourceLocation& where) const;
   std::string toDisplay(const std::string& display, const std::string& view, const std::string& functionName,
                         const SourceLocation& where) const;
+  // Whether `space` needs no conversion to scene-linear: the scene_linear role's own space, or data (`raw`).
+  // Throws strata::Error at `where` for a space the config lacks, as toSceneLinear() does.
+  bool isSceneLinear(const std::string& space, const SourceLocation& where) const;
 
  private:
   struct Impl;
   ColourConfig(std::shared_ptr<const Impl> impl, std::string origin);
+  void requireColourSpace(const std::string& space, const SourceLocation& where) const;
 
   std::shared_ptr<const Impl> impl_;
   std::string origin_;

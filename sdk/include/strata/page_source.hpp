@@ -14,8 +14,8 @@ namespace strata {
 // filtering never mixes nodata into values (see RasterImage).
 enum class PageFormat {
   Values,  // RG32F: value x coverage, coverage. Heights need float32: half floats step by 4 m at 8 km.
-  Colour,  // RGBA16F: linear r, g, b premultiplied by coverage, then coverage. Half floats keep dark
-           // linear values that 8 bits would band.
+  Colour,  // RGBA16F: r, g, b premultiplied by coverage, then coverage; scene-linear once in the atlas
+           // (PageSource::toSceneLinearGlsl). Half floats keep dark linear values that 8 bits would band.
 };
 
 // A rectangle of one pyramid level, in that level's texels, inside the level.
@@ -49,6 +49,13 @@ class PageSource {
   // repeats the edge (or wraps round, for a raster around the body).
   virtual LevelWindow gridOf(const PageKey& key) const;
   virtual std::optional<glm::ivec2> texelBeside(const PageKey& key, glm::ivec2 texel) const;
+
+  // A Colour source whose texels are encoded in a colour space other than scene-linear (8-bit images are
+  // mostly sRGB) returns GLSL 4.50 `vec4 functionName(vec4 colour)` that converts one texel, not
+  // premultiplied, to scene-linear: ColourConfig::toSceneLinear()'s. The cache runs it on each page right
+  // after uploading it, so that filtering mixes linear light. By default empty: the texels are
+  // scene-linear already.
+  virtual std::string toSceneLinearGlsl(const std::string& functionName) const;
 };
 
 }  // namespace strata
