@@ -23,8 +23,7 @@ const Layer& colourOf(const NodeSetup& setup) {
   return *setup.input("colour")->layer();
 }
 
-ChromaFusionLayer::Fusion fusionOf(const NodeSetup& setup, const Layer& colour) {
-  const ParameterSet& parameters = setup.parameters;
+ChromaFusionLayer::Fusion fusionOf(const ParameterSet& parameters, const Layer& colour) {
   using Space = ChromaFusionLayer::Space;
   using Matching = ChromaFusionLayer::Matching;
   const ChromaFusionLayer::Fusion fusion{parameters.string("space") == "ycbcr" ? Space::YCbCr : Space::Lab,
@@ -41,11 +40,14 @@ ChromaFusionLayer::Fusion fusionOf(const NodeSetup& setup, const Layer& colour) 
 class ChromaFusion : public Node {
  public:
   explicit ChromaFusion(const NodeSetup& setup)
-      : layer_(setup.id, *setup.input("luminance")->layer(), colourOf(setup), fusionOf(setup, colourOf(setup))) {}
+      : colour_(colourOf(setup)),
+        layer_(setup.id, *setup.input("luminance")->layer(), colour_, fusionOf(setup.parameters, colour_)) {}
 
   Layer* layer() override { return &layer_; }
+  void update(const ParameterSet& parameters) override { layer_.setFusion(fusionOf(parameters, colour_)); }
 
  private:
+  const Layer& colour_;
   ChromaFusionLayer layer_;
 };
 
@@ -61,22 +63,24 @@ NodeTypeDeclaration declaration() {
                  {.name = "colour", .type = PortType::Layer, .kinds = {LayerKind::Color},
                   .doc = "the low-resolution colour layer whose chroma the result takes"}};
   type.output = PortType::Layer;
+  // Every parameter is a uniform: the space, the strength and the matching change the next frame.
   type.parameters = {
       // lab: its lightness depends on luminance alone, so a panchromatic measurement sets it exactly, and its
       // chroma is perceptually even
       {.name = "space", .type = ParameterType::Choice, .defaultValue = std::string("lab"),
        .doc = "the opponent space whose chroma is kept: lab (CIE L*a*b*, D65) or ycbcr (BT.709 Y'CbCr of the "
               "sRGB-encoded values, as image files hold it)",
-       .choices = {"lab", "ycbcr"}},
+       .choices = {"lab", "ycbcr"}, .live = true},
       // 1: the fusion the node is for; lower it to fade the luminance's detail in and out
       {.name = "strength", .type = ParameterType::Real, .defaultValue = 1.0, .minimum = 0.0, .maximum = 1.0,
-       .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion"},
+       .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion",
+       .live = true},
       // detail: two data sets seldom agree in absolute brightness (sensor, exposure, illumination), and the
       // colour's own brightness is what keeps its hue
       {.name = "matching", .type = ParameterType::Choice, .defaultValue = std::string("detail"),
        .doc = "detail: the colour layer's luminance times the luminance layer's ratio to its own low-pass at "
               "the colour layer's resolution; none: the luminance layer's luminance as it is",
-       .choices = {"detail", "none"}},
+       .choices = {"detail", "none"}, .live = true},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<ChromaFusion>(setup); };
   return type;

@@ -33,6 +33,8 @@ class ChromaFusionLayer : public Layer {
   std::string samplingFunction() const override { return prefix_; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
+  // A new fusion for the next frame: its values are uniforms.
+  void setFusion(Fusion fusion) { fusion_ = fusion; }
   // The colour layer's: the result has data where it has, the luminance only refining it.
   ProjectionAspect aspect() const override { return colour_.aspect(); }
   void setPageDemand(PageDemand demand) const override;

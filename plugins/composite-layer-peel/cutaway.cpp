@@ -41,26 +41,29 @@ std::vector<ParameterDeclaration> Cutaway::parameters() {
       {.name = "cut", .type = ParameterType::Choice, .defaultValue = std::string("everywhere"),
        .doc = "where the upper layers are cut away: everywhere; radius: within `radius` of `centre`; box: within "
               "`box`; plane: on the `azimuth` side of the vertical plane through `centre`",
-       .choices = {"everywhere", "radius", "box", "plane"}},
+       .choices = {"everywhere", "radius", "box", "plane"}, .live = true},
       // 0, 0: the origin of the body's coordinates, where a test planet's features usually are
       {.name = "centre", .type = ParameterType::RealList, .defaultValue = std::vector<double>{0.0, 0.0},
        .minimum = -360.0, .maximum = 360.0, .units = "deg",
-       .doc = "[longitude, latitude]: the centre of a radius cut, a point of a plane cut", .count = 2},
+       .doc = "[longitude, latitude]: the centre of a radius cut, a point of a plane cut", .count = 2, .live = true},
       // 100 km: a window the size of a large crater, seen whole from a few hundred kilometres up
       {.name = "radius", .type = ParameterType::Real, .defaultValue = 1.0e5, .minimum = 0.0, .maximum = 1.0e8,
-       .units = "m", .doc = "cut: radius: the distance along the ground from `centre` within which the cut is"},
+       .units = "m", .doc = "cut: radius: the distance along the ground from `centre` within which the cut is",
+       .live = true},
       // two degrees a side about the origin: some 120 km on Mars, 220 km on Earth
       {.name = "box", .type = ParameterType::RealList, .defaultValue = std::vector<double>{-1.0, -1.0, 1.0, 1.0},
        .minimum = -360.0, .maximum = 360.0, .units = "deg",
-       .doc = "cut: box: [west, south, east, north]; east may pass 180 to cross the antimeridian", .count = 4},
+       .doc = "cut: box: [west, south, east, north]; east may pass 180 to cross the antimeridian", .count = 4,
+       .live = true},
       // 90: the plane runs north-south through `centre` and the cut takes the east away
       {.name = "azimuth", .type = ParameterType::Real, .defaultValue = 90.0, .minimum = 0.0, .maximum = 360.0,
-       .units = "deg", .doc = "cut: plane: the direction, clockwise from north, of the side the cut takes away"},
+       .units = "deg", .doc = "cut: plane: the direction, clockwise from north, of the side the cut takes away",
+       .live = true},
       // 0: a step exactly at the region's boundary; give a width of a few vertices to see the cut faces
       {.name = "edge", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e7,
        .units = "m",
        .doc = "the width, outside the region, over which the cut's wall slopes from the top surface down to the "
-              "peeled one (composite.peeled_surface colours the layers it cuts through); 0: a step"},
+              "peeled one (composite.peeled_surface colours the layers it cuts through); 0: a step", .live = true},
   };
 }
 

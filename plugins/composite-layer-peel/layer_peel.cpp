@@ -25,32 +25,36 @@ std::vector<const Layer*> stackOf(const NodeSetup& setup) {
 }
 
 // The peel, of a stack of `stackSize` layers.
-PeelLayer::Peel peelOf(const NodeSetup& setup, std::size_t stackSize) {
-  const auto layers = setup.parameters.integer("peel");
+PeelLayer::Peel peelOf(const ParameterSet& parameters, std::size_t stackSize) {
+  const auto layers = parameters.integer("peel");
   const auto most = std::int64_t(stackSize) - 1;
   if (layers > most)
-    throw Error(setup.parameters.where("peel"),
+    throw Error(parameters.where("peel"),
                 "peel " + std::to_string(layers) + " takes away more layers than lie above the floor (" +
                     std::to_string(most) + ")",
                 "peel at most " + std::to_string(most) + ": the last layer is the floor");
-  return {int(layers), setup.parameters.real("depth")};
+  return {int(layers), parameters.real("depth")};
 }
 
 class LayerPeel : public Node {
  public:
-  explicit LayerPeel(const NodeSetup& setup) : layer_(peelLayerOf(setup)) {}
+  explicit LayerPeel(const NodeSetup& setup) : layer_(peelLayerOf(setup)), stackSize_(layer_.stackSize()) {}
 
   Layer* layer() override { return &layer_; }
+  void update(const ParameterSet& parameters) override {
+    layer_.repeel(peelOf(parameters, stackSize_), Cutaway::from(parameters));
+  }
 
  private:
   // The stack checked before the peel, which counts its layers.
   static PeelLayer peelLayerOf(const NodeSetup& setup) {
     std::vector<const Layer*> stack = stackOf(setup);
-    const PeelLayer::Peel peel = peelOf(setup, stack.size());
+    const PeelLayer::Peel peel = peelOf(setup.parameters, stack.size());
     return PeelLayer(setup.id, std::move(stack), peel, Cutaway::from(setup.parameters), setup.body->radius);
   }
 
   PeelLayer layer_;
+  std::size_t stackSize_;
 };
 
 }  // namespace
@@ -63,13 +67,16 @@ NodeTypeDeclaration layerPeelDeclaration() {
   type.inputs = {{.name = "layers", .type = PortType::Layer, .kinds = {LayerKind::Height}, .list = true,
                   .doc = "the stack's height layers, top first (ice surface, bedrock); the last is the floor"}};
   type.output = PortType::Layer;
+  // Every parameter is a uniform: the peel and the cutaway change the next frame.
   type.parameters = {
       // 1: the top layer taken away, which shows the next one: what a stack of two is peeled for
       {.name = "peel", .type = ParameterType::Integer, .defaultValue = std::int64_t(1), .minimum = 0.0,
-       .maximum = 15.0, .doc = "how many of the upper layers the cut takes away (at most all but the floor)"},
+       .maximum = 15.0, .doc = "how many of the upper layers the cut takes away (at most all but the floor)",
+       .live = true},
       // 0: the surface the peel exposes, as its data have it
       {.name = "depth", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e6,
-       .units = "m", .doc = "how far the cut goes below the surface the peel exposes, never below the floor"},
+       .units = "m", .doc = "how far the cut goes below the surface the peel exposes, never below the floor",
+       .live = true},
   };
   for (ParameterDeclaration& parameter : Cutaway::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<LayerPeel>(setup); };

@@ -35,6 +35,11 @@ class PeelLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override { return spanningRange(stack_); }
+  // A new peel and cutaway for the next frame: their values are uniforms.
+  void repeel(Peel peel, Cutaway cutaway) {
+    peel_ = peel;
+    cutaway_ = cutaway;
+  }
 
   // What composite.peeled_surface builds on, in glsl():
   //   float <stackFunction()>(SurfacePoint p, out float surfaces[stackSize()])

@@ -31,10 +31,10 @@ std::vector<const Layer*> surfacesOf(const NodeSetup& setup, const PeelLayer& pe
   return surfaces;
 }
 
-std::vector<double> facesOf(const NodeSetup& setup, const PeelLayer& peel) {
-  const std::vector<double>& faces = setup.parameters.reals("faces");
+std::vector<double> facesOf(const ParameterSet& parameters, const PeelLayer& peel) {
+  const std::vector<double>& faces = parameters.reals("faces");
   if (faces.size() % 3 != 0 || faces.size() < 3 * peel.stackSize())
-    throw Error(setup.parameters.where("faces"),
+    throw Error(parameters.where("faces"),
                 "faces has " + std::to_string(faces.size()) + " numbers, not three for each of the stack's " +
                     std::to_string(peel.stackSize()) + " layers",
                 "give red, green, blue (sRGB, 0 to 1) for each layer, top first");
@@ -44,11 +44,13 @@ std::vector<double> facesOf(const NodeSetup& setup, const PeelLayer& peel) {
 class PeeledSurface : public Node {
  public:
   explicit PeeledSurface(const NodeSetup& setup)
-      : layer_(setup.id, peelOf(setup), surfacesOf(setup, peelOf(setup)), facesOf(setup, peelOf(setup))) {}
+      : peel_(peelOf(setup)), layer_(setup.id, peel_, surfacesOf(setup, peel_), facesOf(setup.parameters, peel_)) {}
 
   Layer* layer() override { return &layer_; }
+  void update(const ParameterSet& parameters) override { layer_.recolour(facesOf(parameters, peel_)); }
 
  private:
+  const PeelLayer& peel_;
   PeeledSurfaceLayer layer_;
 };
 
@@ -64,13 +66,14 @@ NodeTypeDeclaration peeledSurfaceDeclaration() {
                  {.name = "surfaces", .type = PortType::Layer, .kinds = {LayerKind::Color}, .list = true,
                   .doc = "one colour layer per layer of the stack, top first: what its surface shows"}};
   type.output = PortType::Layer;
+  // A uniform: the faces' colours change the next frame.
   type.parameters = {
       // ice blue, rock brown, sediment ochre, basement grey: apart at a glance, for stacks of up to four
       {.name = "faces", .type = ParameterType::RealList,
        .defaultValue = std::vector<double>{0.7, 0.85, 1.0, 0.55, 0.4, 0.3, 0.8, 0.65, 0.35, 0.5, 0.5, 0.5},
        .minimum = 0.0, .maximum = 1.0,
        .doc = "the colour of each layer's cut faces, where the cut runs through its material: red, green, blue "
-              "(sRGB, 0 to 1) per layer, top first"},
+              "(sRGB, 0 to 1) per layer, top first", .live = true},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<PeeledSurface>(setup); };
   return type;

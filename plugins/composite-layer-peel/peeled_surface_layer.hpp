@@ -1,5 +1,6 @@
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <strata/layer.hpp>
@@ -25,6 +26,8 @@ class PeeledSurfaceLayer : public Layer {
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
+  // New cut-face colours for the next frame: they are uniforms.
+  void recolour(std::vector<double> faces) { faces_ = std::move(faces); }
 
  private:
   std::string exposed() const;

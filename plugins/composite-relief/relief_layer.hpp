@@ -1,6 +1,7 @@
 #pragma once
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -46,6 +47,8 @@ class ReliefLayer : public Layer {
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
+  // New lighting for the next frame: its values are uniforms.
+  void relight(Lighting lighting) { lighting_ = std::move(lighting); }
 
   // The unit vector towards the light in the local east/north/up frame.
   static glm::vec3 lightDirection(double azimuthDegrees, double altitudeDegrees);

@@ -61,9 +61,11 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
-    translucent_.bind(program_, units);
+    translucent_.bind(program_, units, parameters_.real("opacity"));
     triangle_->draw();
   }
+
+  void update(const ParameterSet& parameters) override { parameters_ = parameters; }
 
   FrameOutput* output() override { return this; }
   const Framebuffer& frame() const override { return frame_; }
@@ -120,18 +122,21 @@ NodeTypeDeclaration declaration() {
       {.name = "translucent_surface", .type = PortType::Layer, .kinds = {LayerKind::Color}, .list = true,
        .optional = true, .doc = "one colour layer per translucent geometry, in the same order"},
   };
+  // The light and the opacity are uniforms, changed the next frame; the display and view are GLSL.
   type.parameters = {
       {.name = "shading", .type = ParameterType::Choice, .defaultValue = std::string("lambert"),
-       .doc = "lambert: lit by one distant light; none: the layers' colours as they are", .choices = {"lambert", "none"}},
+       .doc = "lambert: lit by one distant light; none: the layers' colours as they are", .choices = {"lambert", "none"},
+       .live = true},
       {.name = "light_azimuth", .type = ParameterType::Real, .defaultValue = 315.0, .minimum = 0.0, .maximum = 360.0,
-       .units = "deg", .doc = "where the light comes from, clockwise from the top of the image"},
+       .units = "deg", .doc = "where the light comes from, clockwise from the top of the image", .live = true},
       {.name = "light_elevation", .type = ParameterType::Real, .defaultValue = 45.0, .minimum = 0.0, .maximum = 90.0,
-       .units = "deg", .doc = "the light's angle above the image plane"},
+       .units = "deg", .doc = "the light's angle above the image plane", .live = true},
       {.name = "ambient", .type = ParameterType::Real, .defaultValue = 0.25, .minimum = 0.0, .maximum = 1.0,
-       .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable"},
+       .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable",
+       .live = true},
       // 0.5: what lies behind shows as clearly as the translucent surface itself
       {.name = "opacity", .type = ParameterType::Real, .defaultValue = 0.5, .minimum = 0.0, .maximum = 1.0,
-       .doc = "how much of what lies behind each translucent surface it hides"},
+       .doc = "how much of what lies behind each translucent surface it hides", .live = true},
       {.name = "display", .type = ParameterType::String, .defaultValue = std::string(),
        .doc = "the OpenColorIO display the frame is for; empty: the config's default (Strata's: sRGB)"},
       {.name = "view", .type = ParameterType::String, .defaultValue = std::string(),

@@ -15,7 +15,7 @@ std::string index(std::size_t i) { return std::to_string(i); }
 
 }  // namespace
 
-TranslucentSurfaces::TranslucentSurfaces(const NodeSetup& setup) : opacity_(setup.parameters.real("opacity")) {
+TranslucentSurfaces::TranslucentSurfaces(const NodeSetup& setup) {
   for (Node* node : setup.inputList("translucent")) geometries_.push_back(node->geometry());
   for (Node* node : setup.inputList("translucent_surface")) layers_.push_back(node->layer());
   if (geometries_.size() != layers_.size())
@@ -73,9 +73,9 @@ std::string TranslucentSurfaces::glsl() const {
   return code + over();
 }
 
-void TranslucentSurfaces::bind(ShaderProgram& program, TextureUnits& units) const {
+void TranslucentSurfaces::bind(ShaderProgram& program, TextureUnits& units, double opacity) const {
   if (geometries_.empty()) return;
-  program.set("translucentOpacity", float(opacity_));
+  program.set("translucentOpacity", float(opacity));
   for (std::size_t i = 0; i < geometries_.size(); ++i) {
     const Framebuffer& buffers = geometries_[i]->gbuffer();
     units.bind(program, "translucentSurface" + index(i), buffers.color(0).id());

@@ -27,8 +27,8 @@ class TranslucentSurfaces {
   // What composite.frag's STRATA_TRANSLUCENT_GLSL becomes: the layers' GLSL and
   //   vec3 translucentOver(ivec2 pixel, vec3 colour, float depth)
   std::string glsl() const;
-  // Binds each geometry's buffers and layer, and the opacity.
-  void bind(ShaderProgram& program, TextureUnits& units) const;
+  // Binds each geometry's buffers and layer, and the opacity: how much of what lies behind each it hides.
+  void bind(ShaderProgram& program, TextureUnits& units, double opacity) const;
 
  private:
   std::string colourOf(std::size_t i) const;
@@ -36,7 +36,6 @@ class TranslucentSurfaces {
 
   std::vector<SurfaceGeometry*> geometries_;
   std::vector<const Layer*> layers_;
-  double opacity_;
 };
 
 }  // namespace strata::image

@@ -9,6 +9,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/page_cache.hpp>
 
+#include "engine/live_parameter.hpp"
 #include "engine/node_graph.hpp"
 #include "engine/worker_pool.hpp"
 
@@ -22,6 +23,7 @@ struct Engine::Impl {
   WorkerPool workers;
   ShaderLibrary shaders;
   std::unique_ptr<Pipeline> pipeline;
+  std::vector<std::string> overrides;  // the pipeline's, as load() and set() were given them
   std::unique_ptr<PageCache> pages;
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
   Camera camera;
@@ -71,8 +73,30 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
   impl_->pipeline = std::move(pipeline);
   impl_->camera = impl_->pipeline->camera;
   impl_->date = impl_->pipeline->date;
+  impl_->overrides = overrides;
   impl_->statistics = {};
   impl_->sourcesAdvised.clear();
+}
+
+bool Engine::set(const std::string& override) {
+  if (!impl_->pipeline) throw std::logic_error("Engine::set() before a pipeline was loaded");
+  std::vector<std::string> overrides = impl_->overrides;
+  overrides.push_back(override);
+  Pipeline changed = loadPipeline(impl_->pipeline->file, overrides, impl_->registry);
+  if (const auto id = liveParameterNode(override, changed, impl_->registry)) {
+    impl_->graph->update(*id, changed.find(*id)->parameters);
+    for (NodeDescription& node : impl_->pipeline->nodes)
+      if (node.id == *id) node.parameters = changed.find(*id)->parameters;
+    impl_->overrides = overrides;
+    return true;
+  }
+  const Camera camera = impl_->camera;
+  const std::optional<DayNumber> date = impl_->date;
+  const bool keepCamera = changed.camera == impl_->pipeline->camera, keepDate = changed.date == impl_->pipeline->date;
+  load(impl_->pipeline->file, overrides);
+  if (keepCamera) impl_->camera = camera;
+  if (keepDate) impl_->date = date;
+  return false;
 }
 
 bool Engine::loaded() const { return impl_->graph != nullptr; }

@@ -109,4 +109,10 @@ void NodeGraph::render(const FrameState& frame) {
     guardNode(*entry.description, "failed to render a frame", [&] { entry.node->render(frame); });
 }
 
+void NodeGraph::update(const std::string& id, const ParameterSet& parameters) {
+  for (Entry& entry : entries_)
+    if (entry.description->id == id)
+      guardNode(*entry.description, "could not take its new parameters", [&] { entry.node->update(parameters); });
+}
+
 }  // namespace strata

@@ -20,6 +20,8 @@ class NodeGraph {
 
   void prepare(const FrameState& frame, WorkerPool& workers);
   void render(const FrameState& frame);
+  // Hands node `id` its changed live parameters (Node::update), on the GL thread between frames.
+  void update(const std::string& id, const ParameterSet& parameters);
   FrameOutput& output() const { return *output_; }
   std::vector<const SurfaceGeometry*> geometries() const;
 

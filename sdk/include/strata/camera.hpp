@@ -13,6 +13,8 @@ struct Camera {
   double heading = 0.0;      // deg clockwise from north: the direction the view faces
   double tilt = 0.0;         // deg: 0 looks straight down, 90 at the horizon
   double fov = 45.0;         // deg, vertical field of view
+
+  bool operator==(const Camera&) const = default;
 };
 
 // A camera resolved for one frame. Planet-scale quantities stay in double; what the GPU gets is

@@ -41,6 +41,12 @@ class Engine {
   // resources. Throws strata::Error; on failure the previously loaded pipeline stays.
   void load(const std::filesystem::path& pipeline, const std::vector<std::string>& overrides = {});
   bool loaded() const;
+  // Changes the loaded pipeline as an override "PATH=VALUE" would (--set; nodes.relief.azimuth=135),
+  // validated the same way. A node parameter declared live (ParameterDeclaration::live) takes effect in the
+  // next frame with nothing rebuilt (Node::update); anything else loads the pipeline again with the change,
+  // keeping the camera and the date unless the change is to them. Returns whether the change was live.
+  // Throws strata::Error as load() does; the pipeline then stays as it was.
+  bool set(const std::string& override);
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames

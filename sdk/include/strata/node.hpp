@@ -60,6 +60,10 @@ class Node {
   virtual void createResources(GpuContext&) {}
   virtual void prepare(const FrameState&) {}
   virtual void render(const FrameState&) {}
+  // On the GL thread between frames, when parameters declared `live` changed (Engine::set): `parameters`
+  // holds every parameter, validated as at load. The node takes the new values (its layer's uniforms) for
+  // the next frame; a strata::Error it throws leaves it as it was.
+  virtual void update(const ParameterSet& parameters) { (void)parameters; }
 
   // What the node offers downstream; exactly one is non-null, matching its declared output port type.
   virtual Layer* layer() { return nullptr; }

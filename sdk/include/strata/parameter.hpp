@@ -30,6 +30,9 @@ struct ParameterDeclaration {
   std::string doc;                             // one line
   std::vector<std::string> choices;            // Choice: the allowed values
   std::size_t count = 0;                       // RealList: the exact number of values (0: any)
+  // Whether a change takes effect in the next frame with nothing rebuilt (a uniform): the engine hands the
+  // node its new parameters (Node::update) rather than reloading the pipeline (Engine::set).
+  bool live = false;
 };
 
 // A node's validated parameters: every declared parameter has a value of its declared type.
@@ -47,6 +50,8 @@ class ParameterSet {
   const ParameterValue& value(const std::string& name) const;
   // Where the value came from (the YAML scalar, a --set override, or the node for defaults).
   const SourceLocation& where(const std::string& name) const;
+  // The names of the parameters whose values differ from `other`'s (or that only one of the two has).
+  std::vector<std::string> differences(const ParameterSet& other) const;
 
  private:
   struct Entry {
