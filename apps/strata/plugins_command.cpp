@@ -49,9 +49,10 @@ void describe(const NodeTypeDeclaration& type) {
   if (type.parameters.empty()) std::printf("  (none)\n");
   for (const ParameterDeclaration& p : type.parameters) {
     std::string value = p.defaultValue ? "default " + formatValue(*p.defaultValue) : "required";
-    std::printf("  %-16s %-9s %-14s %-16s %-4s %s\n", p.name.c_str(), toString(p.type), value.c_str(), range(p).c_str(),
-                p.units.c_str(), p.doc.c_str());
+    std::printf("  %-16s %-9s %-14s %-16s %-4s %s%s\n", p.name.c_str(), toString(p.type), value.c_str(),
+                range(p).c_str(), p.units.c_str(), p.live ? "(live) " : "", p.doc.c_str());
   }
+  std::printf("\n(live): changes take effect in the next frame with nothing rebuilt (Engine::set, the viewer)\n");
 }
 
 }  // namespace
