@@ -1,11 +1,8 @@
 #include "peeled_surface_layer.hpp"
 
 #include <algorithm>
-#include <cmath>
-
-#include <glm/vec3.hpp>
-
 #include <strata/gl/shader_program.hpp>
+#include <strata/srgb.hpp>
 
 namespace strata::composite {
 namespace {
@@ -59,14 +56,13 @@ std::string PeeledSurfaceLayer::glsl() const {
          "}\n";
 }
 
-// The faces' colours decoded to scene-linear light (IEC 61966-2-1), in which the output composes.
+// The faces' colours decoded to scene-linear light, in which the output composes.
 void PeeledSurfaceLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   peel_.bind(program, units);
   for (const Layer* surface : distinct_) surface->bind(program, units);
-  const auto linear = [](double c) { return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); };
   for (std::size_t i = 0; i < peel_.stackSize(); ++i)
     program.set(prefix_ + "_faces[" + std::to_string(i) + "]",
-                glm::vec3(linear(faces_[3 * i]), linear(faces_[3 * i + 1]), linear(faces_[3 * i + 2])));
+                srgbToSceneLinear(faces_[3 * i], faces_[3 * i + 1], faces_[3 * i + 2]));
 }
 
 void PeeledSurfaceLayer::setPageDemand(PageDemand demand) const {

@@ -7,6 +7,7 @@
 #include <glm/vec4.hpp>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/srgb.hpp>
 
 namespace strata::composite {
 
@@ -111,15 +112,14 @@ void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   bindRamp(program);
 }
 
-// The ramp's stops, their colours decoded to scene-linear light (IEC 61966-2-1) to blend as the output does.
+// The ramp's stops, their colours decoded to scene-linear light to blend as the output does.
 void ReliefLayer::bindRamp(ShaderProgram& program) const {
   const std::vector<double>& stops = lighting_.tint.stops;
-  const auto linear = [](double c) { return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4)); };
   program.set(prefix_ + "_tintBy", int(lighting_.tint.by));
   program.set(prefix_ + "_rampStops", int(stops.size() / 4));
   for (std::size_t i = 0; i + 3 < stops.size(); i += 4)
     program.set(prefix_ + "_ramp[" + std::to_string(i / 4) + "]",
-                glm::vec4(float(stops[i]), linear(stops[i + 1]), linear(stops[i + 2]), linear(stops[i + 3])));
+                glm::vec4(float(stops[i]), srgbToSceneLinear(stops[i + 1], stops[i + 2], stops[i + 3])));
 }
 
 void ReliefLayer::setPageDemand(PageDemand demand) const {
