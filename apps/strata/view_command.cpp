@@ -2,6 +2,8 @@
 #include <memory>
 
 #include <strata/engine.hpp>
+#include <strata/viewer/panel_overlay.hpp>
+#include <strata/viewer/parameter_panel.hpp>
 #include <strata/window/glfw_window.hpp>
 
 #include "command_options.hpp"
@@ -21,10 +23,17 @@ void view(const ViewOptions& options) {
   enableGlDebugOutput(options.glDebug);
   Engine engine;
   engine.load(options.pipeline, options.overrides);
-  OrbitControls controls(engine.pipeline().body, engine.camera());
+  viewer::PanelOverlay overlay(window);  // after the window's own input callbacks, which ImGui chains
+  viewer::ParameterPanel panel;
   int width = 0, height = 0;
-  window.setPointerInput({[&](double dx, double dy, int button) { controls.drag(dx, dy, button, height); },
-                          [&](double steps) { controls.scroll(steps); }});
+  // Made per event: a change in the panel may load the pipeline again, and with it the body.
+  const auto controls = [&] { return OrbitControls(engine.pipeline().body, engine.camera()); };
+  window.setPointerInput({[&](double dx, double dy, int button) {
+                            if (!overlay.wantsPointer()) controls().drag(dx, dy, button, height);
+                          },
+                          [&](double steps) {
+                            if (!overlay.wantsPointer()) controls().scroll(steps);
+                          }});
   const FrameOutput* frame = nullptr;
   for (int count = 0; !window.shouldClose() && (options.frames == 0 || count < options.frames); ++count) {
     window.pollEvents();
@@ -33,6 +42,9 @@ void view(const ViewOptions& options) {
     frame = &engine.render(width, height);
     glBlitNamedFramebuffer(frame->frame().id(), 0, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
                            GL_NEAREST);
+    overlay.begin();
+    panel.draw(engine);
+    overlay.end();
     window.swapBuffers();
   }
   if (frame && !options.screenshot.empty()) frame->write(options.screenshot);

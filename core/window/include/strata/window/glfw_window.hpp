@@ -32,6 +32,8 @@ class GlfwWindow : public GlContext {
   void swapBuffers();
   void framebufferSize(int& width, int& height) const;
   void setPointerInput(PointerInput input);
+  // The GLFW window, for toolkits that attach to it (the viewer's panel).
+  GLFWwindow* handle() const { return window_; }
 
  private:
   static void onCursor(GLFWwindow* window, double x, double y);

@@ -1,0 +1,28 @@
+#pragma once
+#include <map>
+#include <string>
+
+#include <strata/engine.hpp>
+#include <strata/viewer/parameter_controls.hpp>
+
+namespace strata::viewer {
+
+// The viewer's panel of every node's parameters (issue 9), drawn with Dear ImGui from parameterControls(),
+// so each parameter is a control with its range, units and documentation: a slider for a bounded number, a
+// field for an unbounded one, a checkbox, a list of choices, a text field. A live parameter changes as the
+// control moves; any other when the control is let go, since it loads the pipeline again. A refused value
+// is shown under the panel. Lists are shown, not edited (--set or the file change them). Call draw()
+// between PanelOverlay::begin() and end().
+class ParameterPanel {
+ public:
+  void draw(Engine& engine);
+
+ private:
+  void drawControl(Engine& engine, const ParameterControl& control);
+  void change(Engine& engine, const ParameterControl& control, const ParameterValue& value, bool committed);
+
+  std::map<std::string, std::string> editedText_;  // String and Path fields being typed in, by node.parameter
+  std::string refusal_;                             // the last refused change's message
+};
+
+}  // namespace strata::viewer
