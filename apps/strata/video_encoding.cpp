@@ -61,10 +61,11 @@ std::filesystem::path requireFfmpeg() {
 
 void encodeVideo(const std::filesystem::path& ffmpeg, const std::string& pattern, double framesPerSecond,
                  const std::filesystem::path& video) {
-  // yuv420p: the chroma format every player decodes; -y: the video is an output like any frame, overwritten.
+  // yuv420p: the chroma format every player decodes, which halves the chroma's resolution, so an odd width or
+  // height is padded by a pixel; -y: the video is an output like any frame, overwritten.
   const int status = runProgram({ffmpeg.string(), "-y", "-loglevel", "error", "-framerate",
-                                 std::to_string(framesPerSecond), "-i", pattern, "-pix_fmt", "yuv420p",
-                                 video.string()});
+                                 std::to_string(framesPerSecond), "-i", pattern, "-vf",
+                                 "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", video.string()});
   if (status != 0)
     throw Error(SourceLocation{"-o"}, "ffmpeg could not encode " + video.string() + " (exit status " +
                                           std::to_string(status) + ")",

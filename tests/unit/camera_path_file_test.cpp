@@ -89,6 +89,7 @@ TEST(CameraPathFileTest, NamesAMissingField) {
   expectError("strata-path: 1\nfly_to: {from: {lon: 0, lat: 0, altitude: 1e6}, duration: 3}\n", 2, 9,
               "'fly_to' has no 'to'");
   expectError("keyframes: []\n", 1, 1, "no 'strata-path' format version");
+  expectError("strata: 1\nnodes: {}\n", 1, 1, "no 'strata-path' format version");  // a pipeline
 }
 
 TEST(CameraPathFileTest, NamesValuesOutOfRange) {

@@ -43,11 +43,11 @@ void requireVersion(const YAML::Node& root, const SourceMap& source) {
     throw source.error(root, {}, root.IsNull() ? "the path file is empty" : "a path must be a map of keys",
                        std::string("start it with `strata-path: 1` and a `keyframes:` list; ") + kExample);
   loader::requireUniqueKeys(root, source, "key");
-  loader::requireKnownKeys(root, kTopLevelKeys, source, "a path file");
   const YAML::Node value = root["strata-path"];
-  if (!value)
+  if (!value)  // before the keys: a pipeline given as a path is told so, not that 'strata' is unknown
     throw source.error(root, {}, "the file has no 'strata-path' format version",
                        "add `strata-path: 1` as its first line (is this a pipeline, not a path?)");
+  loader::requireKnownKeys(root, kTopLevelKeys, source, "a path file");
   const std::int64_t version = loader::readInteger(value, {source, "'strata-path' (the format version)", {}});
   if (version != kFormatVersion)
     throw source.error(value, {}, "unsupported path format version " + std::to_string(version) +
