@@ -82,7 +82,7 @@ TEST_F(CameraPathCommandTest, NamesAMistakeInThePathFileAtItsLine) {
   EXPECT_TRUE(contains(result.err, "did you mean 'altitude'")) << result.err;
 }
 
-TEST_F(CameraPathCommandTest, RefusesPathWithDatesAndFramesAlone) {
+TEST_F(CameraPathCommandTest, RefusesPathWithDatesAndTooFewFrames) {
   const CommandResult both = run({"render", "pipelines/procedural.yaml", "--path", "pipelines/paths/flyin.yaml",
                                   "--dates", "2004-01-01/2004-02-01", "-o", file("f_%02d.png").string()});
   EXPECT_EQ(both.exitCode, 1);
@@ -90,6 +90,11 @@ TEST_F(CameraPathCommandTest, RefusesPathWithDatesAndFramesAlone) {
   const CommandResult alone = run({"render", "pipelines/procedural.yaml", "--frames", "3"});
   EXPECT_EQ(alone.exitCode, 1);
   EXPECT_TRUE(contains(alone.err, "--frames: error:")) << alone.err;
+  const CommandResult one = run({"render", "pipelines/procedural.yaml", "--path", "pipelines/paths/flyin.yaml",
+                                 "--frames", "1", "-o", file("f_%02d.png").string()});
+  EXPECT_EQ(one.exitCode, 1);
+  EXPECT_TRUE(contains(one.err, "--frames: error: a camera path takes at least 2 frames")) << one.err;
+  EXPECT_TRUE(contains(one.err, "--frames 361")) << one.err;  // 30 a second of the 12 s path, and one
 }
 
 }  // namespace

@@ -89,6 +89,19 @@ TEST(CameraFlightTest, OverOnePointZoomsAtAConstantRate) {
   }
 }
 
+// Heading turns the shorter way in a flight too: from 350 to 10 degrees through north.
+TEST(CameraFlightTest, TurnsTheShorterWayRound) {
+  CameraFlight flight = alpsToAndes();
+  flight.from.heading = 350.0;
+  flight.to.heading = 10.0;
+  const CameraPath path = CameraPath::flight(flight, Body{});
+  EXPECT_NEAR(std::abs(std::remainder(path.at(10.0).heading, 360.0)), 0.0, 1e-12);
+  for (int i = 0; i <= 100; ++i) {
+    const double heading = path.atFraction(i / 100.0).heading;
+    EXPECT_TRUE(heading >= 350.0 || heading <= 10.0) << heading;
+  }
+}
+
 TEST(CameraFlightTest, RefusesAntipodesAndNonPositiveDurations) {
   CameraFlight flight = alpsToAndes();
   flight.to = Camera{-170.0, -46.0, 5000.0, 0.0, 0.0, 45.0};
