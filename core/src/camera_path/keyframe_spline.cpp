@@ -1,6 +1,6 @@
 // Keyframes joined by a C1 spline in double precision. The point below the camera follows a spherical
 // Catmull-Rom spline: each segment is a cubic Bezier curve on the sphere evaluated by de Casteljau's
-// construction with slerp (Shoemake 1985, "Animating rotation with quaternion curves", section 5), its inner
+// construction with slerp (Shoemake 1985, "Animating rotation with quaternion curves", SIGGRAPH), its inner
 // control points set a third of a segment along the tangents, so the velocity is continuous across
 // keyframes. Keyframes on one great circle give a track on that great circle. Altitude is interpolated in log
 // space (its speed scales with the altitude, from 100,000 km to a metre), heading the shorter way round, and

@@ -21,7 +21,7 @@ struct CameraFlight {
   Camera from;
   Camera to;
   double duration = 10.0;  // s
-  // The trade-off between zooming and panning of van Wijk and Nuij, section 4: their user study preferred
+  // The trade-off between zooming and panning of van Wijk and Nuij: their user study preferred
   // about sqrt(2); larger values zoom out further before panning.
   double rho = 1.42;
 };
