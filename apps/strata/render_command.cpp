@@ -3,21 +3,27 @@
 #include <filesystem>
 #include <memory>
 
+#include <strata/camera_path.hpp>
 #include <strata/engine.hpp>
+#include <strata/error.hpp>
 #include <strata/gl/context.hpp>
 
 #include "command_options.hpp"
-#include "date_sweep.hpp"
 #include "commands.hpp"
+#include "date_sweep.hpp"
+#include "path_frames.hpp"
+#include "settled_frame.hpp"
+#include "video_encoding.hpp"
 
 namespace strata::cli {
 namespace {
 
 struct RenderOptions : PipelineOptions {
-  std::string output;  // default: out/<pipeline name>.png, or out/<pipeline name>_%04d.png for a sweep
+  std::string output;  // default: out/<pipeline name>.png, or out/<pipeline name>_%04d.png for a sequence
   bool stats = false;
   std::string dates;   // --dates FIRST/LAST: a sweep through the scene's date
-  int frames = 0;
+  std::string path;    // --path FILE: a flight along a camera path
+  int frames = 0;      // of a sweep or a flight; 0: not given
 };
 
 // What the last frame made and cost, for --stats.
@@ -52,18 +58,58 @@ void renderDateSweep(Engine& engine, const DateSweep& sweep, const std::string& 
               formatIsoDate(sweep.first).c_str(), formatIsoDate(sweep.last).c_str());
 }
 
+// A flight along a camera path: each frame waits for every page it wants, like a sweep's, and for the
+// geometry to catch up with the camera, so that the same path renders to the same frames on every run; then,
+// for a video, ffmpeg encodes them.
+void renderFlight(Engine& engine, const RenderOptions& options, const std::string& pattern,
+                  const std::filesystem::path& ffmpeg) {
+  // A flight is measured over the pipeline's body, known once it loads.
+  const CameraPath path = readCameraPath(options.path, engine.pipeline().body);
+  const PathFrames frames = pathFrames(path, options.frames);
+  for (int frame = 0; frame < frames.count; ++frame) {
+    engine.camera() = path.atFraction(frames.fractionOf(frame));
+    renderSettled(engine, options.size.width, options.size.height).write(frameFileName(pattern, frame));
+  }
+  std::printf("strata: wrote %d frames %s along %s (%.1f s)", frames.count, pattern.c_str(), options.path.c_str(),
+              frames.duration);
+  if (ffmpeg.empty()) return;
+  encodeVideo(ffmpeg, pattern, frames.framesPerSecond(), options.output);
+  std::printf(", encoded %s at %.2f frames/s", options.output.c_str(), frames.framesPerSecond());
+}
+
+// The file name pattern of a sequence's frames: -o's, the frames of -o's video, or out/<pipeline>_%04d.png.
+std::string sequencePattern(const RenderOptions& options) {
+  if (!options.path.empty() && isVideoFile(options.output)) return videoFramePattern(options.output);
+  const std::string pattern = outputOf(options, "_%04d.png");
+  checkFramePattern(pattern);
+  return pattern;
+}
+
+void requireSequenceForFrames(const RenderOptions& options) {
+  if (options.frames != 0 && options.dates.empty() && options.path.empty())
+    throw Error(SourceLocation{"--frames"}, "--frames counts the frames of a sequence, and none was asked for",
+                "give --dates FIRST/LAST or --path FILE with it");
+}
+
 void render(const RenderOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const bool sweeping = !options.dates.empty();
+  requireSequenceForFrames(options);
+  const bool sweeping = !options.dates.empty(), flying = !options.path.empty();
   const DateSweep sweep = sweeping ? parseDateSweep(options.dates, options.frames) : DateSweep{};
-  const std::string pattern = outputOf(options, "_%04d.png");
-  if (sweeping) checkFramePattern(pattern);  // before the pipeline loads: a typo costs nothing
+  const std::string pattern = sweeping || flying ? sequencePattern(options) : std::string{};
+  // The encoder and the path file are checked before the pipeline loads, as the pattern is: a mistake costs no
+  // time. The path is read again over the pipeline's body once it has loaded.
+  const bool video = flying && isVideoFile(options.output);
+  const std::filesystem::path ffmpeg = video ? requireFfmpeg() : std::filesystem::path{};
+  if (flying) pathFrames(readCameraPath(options.path, Body{}), options.frames);
   auto context = createHeadlessContext(options.glDebug);
   enableGlDebugOutput(options.glDebug);
   Engine engine;
   engine.load(options.pipeline, options.overrides);
   if (sweeping) {
     renderDateSweep(engine, sweep, pattern, options.size);
+  } else if (flying) {
+    renderFlight(engine, options, pattern, ffmpeg);
   } else {
     const std::filesystem::path file = outputOf(options, ".png");
     engine.renderComplete(options.size.width, options.size.height).write(file);
@@ -81,13 +127,21 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<RenderOptions>();
   CLI::App* command = app.add_subcommand("render", "render a pipeline headless to an image file");
   addPipelineOptions(*command, *options);
-  command->add_option("-o,--output", options->output, "the PNG file to write (default out/<pipeline>.png)");
+  command->add_option("-o,--output", options->output,
+                      "the PNG file to write (default out/<pipeline>.png); for a sequence, a pattern such as "
+                      "out/f_%04d.png, or for --path a video (.mp4, .webm)");
   command->add_option("--dates", options->dates,
                       "render a sequence through the scene's date: FIRST/LAST, e.g. 2004-01-01/2004-12-31, with --frames "
                       "and -o naming each frame's file with a field such as %04d")
       ->type_name("FIRST/LAST");
-  command->add_option("--frames", options->frames, "frames of the --dates sequence, evenly spaced, both ends included")
-      ->needs("--dates");
+  command->add_option("--path", options->path,
+                      "render a flight along a camera path file (docs/camera-paths.md), with -o naming each frame's "
+                      "file with a field such as %05d, or a video (.mp4, .webm) when ffmpeg is installed")
+      ->type_name("FILE")
+      ->excludes("--dates");
+  command->add_option("--frames", options->frames,
+                      "frames of the --dates or --path sequence, evenly spaced, both ends included (--path: 30 a "
+                      "second of the path when not given)");
   command->add_flag("--stats", options->stats,
                     "print the last frame's patches, vertices, triangles and phase times, and the page cache's state");
   command->callback([options, &exitCode] { exitCode = reportingErrors([&] { render(*options); }); });
