@@ -48,6 +48,12 @@ void reportPageFailure(const PageFailure& failure, std::set<std::string>& source
                  failure.source.c_str());
 }
 
+NodeDescription* findNode(Pipeline& pipeline, const std::string& id) {
+  for (NodeDescription& node : pipeline.nodes)
+    if (node.id == id) return &node;
+  return nullptr;
+}
+
 }  // namespace
 
 Engine::Engine(EngineOptions options) : impl_(std::make_unique<Impl>(options)) {
@@ -83,10 +89,12 @@ bool Engine::set(const std::string& override) {
   std::vector<std::string> overrides = impl_->overrides;
   overrides.push_back(override);
   Pipeline changed = loadPipeline(impl_->pipeline->file, overrides, impl_->registry);
-  if (const auto id = liveParameterNode(override, changed, impl_->registry)) {
+  const auto id = liveParameterNode(override, changed, impl_->registry);
+  // Live only when the override's parameter is all that changed (the file may have been edited since).
+  NodeDescription* node = id ? findNode(*impl_->pipeline, *id) : nullptr;
+  if (node && node->parameters.differences(changed.find(*id)->parameters).size() <= 1) {
     impl_->graph->update(*id, changed.find(*id)->parameters);
-    for (NodeDescription& node : impl_->pipeline->nodes)
-      if (node.id == *id) node.parameters = changed.find(*id)->parameters;
+    node->parameters = changed.find(*id)->parameters;
     impl_->overrides = overrides;
     return true;
   }
