@@ -12,7 +12,6 @@
 #include "commands.hpp"
 #include "date_sweep.hpp"
 #include "path_frames.hpp"
-#include "settled_frame.hpp"
 #include "video_encoding.hpp"
 
 namespace strata::cli {
@@ -68,7 +67,7 @@ void renderFlight(Engine& engine, const RenderOptions& options, const std::strin
   const PathFrames frames = pathFrames(path, options.frames);
   for (int frame = 0; frame < frames.count; ++frame) {
     engine.camera() = path.atFraction(frames.fractionOf(frame));
-    renderSettled(engine, options.size.width, options.size.height).write(frameFileName(pattern, frame));
+    engine.renderSettled(options.size.width, options.size.height).write(frameFileName(pattern, frame));
   }
   std::printf("strata: wrote %d frames %s along %s (%.1f s)", frames.count, pattern.c_str(), options.path.c_str(),
               frames.duration);

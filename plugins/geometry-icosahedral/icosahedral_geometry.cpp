@@ -49,7 +49,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
     const std::array<ViewVolume, 1> views{ViewVolume(frame.view)};
-    if (frame.index == 0)
+    if (frame.index == 0 || frame.still)
       tree_.settle(views);  // a still image, or the first of many, is drawn from a settled tree
     else
       tree_.update(views);

@@ -3,9 +3,11 @@
 #include <set>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <strata/engine.hpp>
 #include <strata/gl.hpp>
+#include <strata/output.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/page_cache.hpp>
 
@@ -118,10 +120,12 @@ Camera& Engine::camera() { return impl_->camera; }
 
 std::optional<DayNumber>& Engine::date() { return impl_->date; }
 
-const FrameOutput& Engine::render(int width, int height) {
+const FrameOutput& Engine::render(int width, int height) { return renderFrame(width, height, false); }
+
+const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
   FrameState frame{&impl_->pipeline->body, makeView(impl_->pipeline->body, impl_->camera, width, height),
-                   impl_->statistics.frame, impl_->date};
+                   impl_->statistics.frame, impl_->date, still};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);
@@ -135,12 +139,29 @@ const FrameOutput& Engine::render(int width, int height) {
   return impl_->graph->output();
 }
 
-const FrameOutput& Engine::renderComplete(int width, int height) {
-  const FrameOutput* frame = &render(width, height);
+const FrameOutput& Engine::renderComplete(int width, int height) { return renderLoaded(width, height, false); }
+
+const FrameOutput& Engine::renderLoaded(int width, int height, bool still) {
+  const FrameOutput* frame = &renderFrame(width, height, still);
   while (impl_->pages->loading()) {
     impl_->pages->waitForLoads();
-    frame = &render(width, height);
+    frame = &renderFrame(width, height, still);
   }
+  return *frame;
+}
+
+const FrameOutput& Engine::renderSettled(int width, int height) {
+  constexpr int kMostRenders = 256;  // a tree of 64 operations a frame refines from the whole planet to a metre
+  const FrameOutput* frame = &renderLoaded(width, height, true);
+  std::vector<unsigned char> before = readPixels(frame->frame());
+  for (int render = 1; render < kMostRenders; ++render) {
+    frame = &renderLoaded(width, height, true);
+    std::vector<unsigned char> after = readPixels(frame->frame());
+    if (after == before) return *frame;
+    before = std::move(after);
+  }
+  std::fprintf(stderr, "strata: warning: frame %llu still changed after %d renders; it may differ between runs\n",
+               static_cast<unsigned long long>(impl_->statistics.frame), kMostRenders);
   return *frame;
 }
 

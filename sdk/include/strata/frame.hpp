@@ -14,6 +14,9 @@ struct FrameState {
   View view;
   std::uint64_t index = 0;  // frames since the pipeline loaded
   std::optional<DayNumber> date;  // the scene's date (Engine::date()); none where the pipeline gives none
+  // A frame drawn to be kept (Engine::renderSettled): generators whose detail follows a moving view over
+  // several frames settle it at once, as they do on a pipeline's first frame, whatever that costs.
+  bool still = false;
 };
 
 }  // namespace strata
