@@ -2,8 +2,11 @@
 #include <memory>
 
 #include <strata/engine.hpp>
+#include <strata/error.hpp>
 #include <strata/viewer/panel_overlay.hpp>
 #include <strata/viewer/parameter_panel.hpp>
+#include <strata/viewer/pipeline_watcher.hpp>
+#include <strata/viewer/scene_panel.hpp>
 #include <strata/window/glfw_window.hpp>
 
 #include "command_options.hpp"
@@ -18,6 +21,18 @@ struct ViewOptions : PipelineOptions {
   std::string screenshot;  // written after the last frame
 };
 
+// The pipeline's file was edited: load it again, keeping the camera; a file that no longer loads leaves the
+// pipeline as it was, and says why in the panel and on stderr.
+void reload(Engine& engine, viewer::ParameterPanel& panel) {
+  try {
+    engine.reload();
+    panel.report({});
+  } catch (const Error& error) {
+    std::fprintf(stderr, "%s\n", error.what());
+    panel.report(error.what());
+  }
+}
+
 void view(const ViewOptions& options) {
   GlfwWindow window(options.size.width, options.size.height, "Strata - " + options.pipeline, options.glDebug);
   enableGlDebugOutput(options.glDebug);
@@ -25,6 +40,7 @@ void view(const ViewOptions& options) {
   engine.load(options.pipeline, options.overrides);
   viewer::PanelOverlay overlay(window);  // after the window's own input callbacks, which ImGui chains
   viewer::ParameterPanel panel;
+  viewer::PipelineWatcher watcher(options.pipeline);
   int width = 0, height = 0;
   // Made per event: a change in the panel may load the pipeline again, and with it the body.
   const auto controls = [&] { return OrbitControls(engine.pipeline().body, engine.camera()); };
@@ -37,6 +53,7 @@ void view(const ViewOptions& options) {
   const FrameOutput* frame = nullptr;
   for (int count = 0; !window.shouldClose() && (options.frames == 0 || count < options.frames); ++count) {
     window.pollEvents();
+    if (watcher.changed()) reload(engine, panel);
     window.framebufferSize(width, height);
     if (width < 1 || height < 1) continue;  // minimised
     frame = &engine.render(width, height);
@@ -44,6 +61,7 @@ void view(const ViewOptions& options) {
                            GL_NEAREST);
     overlay.begin();
     panel.draw(engine);
+    viewer::drawScenePanel(engine);
     overlay.end();
     window.swapBuffers();
   }

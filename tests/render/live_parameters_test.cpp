@@ -101,6 +101,23 @@ TEST_F(LiveParameters, OtherChangesLoadThePipelineAgainKeepingTheCamera) {
   EXPECT_EQ(engine_->camera().altitude, 7.0e6) << "a change to the camera moves it";
 }
 
+// The viewer loads an edited pipeline file again (Engine::reload), with the overrides given so far.
+TEST_F(LiveParameters, AnEditedFileLoadsAgainKeepingTheCameraAndTheOverrides) {
+  load("shaded");
+  EXPECT_TRUE(engine_->set("nodes.shaded.azimuth=135"));
+  engine_->camera().altitude = 5.0e6;
+  std::string edited = pipelineShowing("shaded");
+  edited.replace(edited.find("exaggeration: 20"), 16, "exaggeration: 30");
+  directory_.write("live.yaml", edited);
+  engine_->reload();
+  EXPECT_EQ(engine_->pipeline().find("shaded")->parameters.real("exaggeration"), 30.0);
+  EXPECT_EQ(engine_->pipeline().find("shaded")->parameters.real("azimuth"), 135.0) << "the override stays";
+  EXPECT_EQ(engine_->camera().altitude, 5.0e6);
+  directory_.write("live.yaml", "strata: 1\nnodes: {broken\n");
+  EXPECT_THROW(engine_->reload(), Error);
+  EXPECT_EQ(engine_->pipeline().find("shaded")->parameters.real("exaggeration"), 30.0) << "as it was";
+}
+
 TEST_F(LiveParameters, ABadValueIsRefusedAndChangesNothing) {
   load("peeled");
   const Image before = frame();

@@ -1,15 +1,20 @@
-// The viewer's panel (issue 9) under Xvfb: generated from the plugins' parameter declarations, it changes a
-// parameter through its model (a live one in the next frame, nothing rebuilt), and draws over the frame in
-// a real window.
+// The viewer's panels (issue 9) under Xvfb: generated from the plugins' parameter declarations, the
+// parameter panel changes a parameter through its model (a live one in the next frame, nothing rebuilt);
+// it and the scene panel draw over the frame in a real window; and an edited pipeline file is noticed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
 
 #include <strata/engine.hpp>
 #include <strata/viewer/panel_overlay.hpp>
 #include <strata/viewer/parameter_panel.hpp>
+#include <strata/viewer/pipeline_watcher.hpp>
+#include <strata/viewer/scene_panel.hpp>
 #include <strata/window/glfw_window.hpp>
 
+#include "shared_window.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata::test {
@@ -41,7 +46,7 @@ class ParameterPanelTest : public ::testing::Test {
 
   std::vector<unsigned char> frame() { return readPixels(engine_->render(160, 120).frame()); }
 
-  GlfwWindow window_{320, 240, "strata panel test"};  // first: the engine renders on its context
+  GlfwWindow& window_ = sharedWindow();  // first: the engine renders on its context
   TemporaryDirectory directory_;
   std::unique_ptr<Engine> engine_;
 };
@@ -64,6 +69,18 @@ TEST_F(ParameterPanelTest, ItsModelChangesALiveParameterForTheNextFrame) {
   EXPECT_EQ(std::get<double>(control("heights", "scale").value), 2.0);
 }
 
+TEST(PipelineWatcher, SaysWhenTheFileWasEdited) {
+  TemporaryDirectory directory;
+  const auto file = directory.write("p.yaml", kRelief);
+  viewer::PipelineWatcher watcher(file);
+  EXPECT_FALSE(watcher.changed());
+  std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(1));
+  EXPECT_TRUE(watcher.changed());
+  EXPECT_FALSE(watcher.changed()) << "once";
+  std::filesystem::remove(file);
+  EXPECT_FALSE(watcher.changed()) << "a file being rewritten is looked at again later";
+}
+
 TEST_F(ParameterPanelTest, DrawsOverTheFrameInTheWindow) {
   viewer::PanelOverlay overlay(window_);
   viewer::ParameterPanel panel;
@@ -76,6 +93,7 @@ TEST_F(ParameterPanelTest, DrawsOverTheFrameInTheWindow) {
                            GL_NEAREST);
     overlay.begin();
     panel.draw(*engine_);
+    viewer::drawScenePanel(*engine_);
     overlay.end();
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     glReadBuffer(GL_BACK);

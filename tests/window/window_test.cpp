@@ -5,6 +5,7 @@
 #include <strata/engine.hpp>
 #include <strata/window/glfw_window.hpp>
 
+#include "shared_window.hpp"
 #include "temporary_directory.hpp"
 #include "test_rasters.hpp"
 
@@ -19,7 +20,7 @@ TEST(Window, ShowsTheRenderedFrame) {
                                   "  cells: {type: source.gdal, path: " + (directory.path() / "cells.tif").string() +
                                       "}\n  globe: {type: geometry.icosahedral}\n"
                                       "  frame: {type: output.image, geometry: globe, surface: [cells]}\n");
-  GlfwWindow window(320, 240, "strata window test");
+  GlfwWindow& window = sharedWindow();
   int width = 0, height = 0;
   window.framebufferSize(width, height);
   ASSERT_GT(width, 0);

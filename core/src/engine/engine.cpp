@@ -100,13 +100,24 @@ bool Engine::set(const std::string& override) {
     impl_->overrides = overrides;
     return true;
   }
+  reloadWith(changed, overrides);
+  return false;
+}
+
+void Engine::reload() {
+  if (!impl_->pipeline) throw std::logic_error("Engine::reload() before a pipeline was loaded");
+  reloadWith(loadPipeline(impl_->pipeline->file, impl_->overrides, impl_->registry), impl_->overrides);
+}
+
+// Loads the pipeline's file again with `overrides`, which give `changed`; the camera and the date a user
+// moved stay where `changed` leaves them as the pipeline had them.
+void Engine::reloadWith(const Pipeline& changed, const std::vector<std::string>& overrides) {
   const Camera camera = impl_->camera;
   const std::optional<DayNumber> date = impl_->date;
   const bool keepCamera = changed.camera == impl_->pipeline->camera, keepDate = changed.date == impl_->pipeline->date;
   load(impl_->pipeline->file, overrides);
   if (keepCamera) impl_->camera = camera;
   if (keepDate) impl_->date = date;
-  return false;
 }
 
 bool Engine::loaded() const { return impl_->graph != nullptr; }

@@ -47,6 +47,10 @@ class Engine {
   // keeping the camera and the date unless the change is to them. Returns whether the change was live.
   // Throws strata::Error as load() does; the pipeline then stays as it was.
   bool set(const std::string& override);
+  // Loads the pipeline's file again, with the overrides load() and set() were given: after the file was
+  // edited. Keeps the camera and the date unless the file changed them. Throws strata::Error as load()
+  // does; the pipeline then stays as it was.
+  void reload();
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames
@@ -72,6 +76,7 @@ class Engine {
  private:
   const FrameOutput& renderFrame(int width, int height, bool still);
   const FrameOutput& renderLoaded(int width, int height, bool still);
+  void reloadWith(const Pipeline& changed, const std::vector<std::string>& overrides);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,6 +1,7 @@
 #pragma once
 #include <map>
 #include <string>
+#include <utility>
 
 #include <strata/engine.hpp>
 #include <strata/viewer/parameter_controls.hpp>
@@ -16,13 +17,15 @@ namespace strata::viewer {
 class ParameterPanel {
  public:
   void draw(Engine& engine);
+  // Shows `problem` under the panel until the next change succeeds (a pipeline file that no longer loads).
+  void report(std::string problem) { refusal_ = std::move(problem); }
 
  private:
   void drawControl(Engine& engine, const ParameterControl& control);
   void change(Engine& engine, const ParameterControl& control, const ParameterValue& value, bool committed);
 
   std::map<std::string, std::string> editedText_;  // String and Path fields being typed in, by node.parameter
-  std::string refusal_;                             // the last refused change's message
+  std::string refusal_;                             // the last refused change's message, or a report
 };
 
 }  // namespace strata::viewer

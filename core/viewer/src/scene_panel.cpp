@@ -1,0 +1,47 @@
+#include <strata/viewer/scene_panel.hpp>
+
+#include <imgui.h>
+
+#include <strata/date.hpp>
+#include <strata/page_cache.hpp>
+#include <strata/pipeline.hpp>
+
+namespace strata::viewer {
+namespace {
+
+constexpr double kDaysEachWay = 366.0;  // a year either side: a seasonal series' whole cycle
+
+void drawDate(Engine& engine) {
+  const std::optional<DayNumber>& given = engine.pipeline().date;
+  std::optional<DayNumber>& date = engine.date();
+  if (!given || !date) return;
+  const double least = *given - kDaysEachWay, most = *given + kDaysEachWay;
+  ImGui::SliderScalar("date", ImGuiDataType_Double, &*date, &least, &most, formatIsoDate(*date).c_str());
+}
+
+void drawStatistics(const Engine& engine) {
+  const FrameStatistics& frame = engine.statistics();
+  const GeometryStatistics geometry = engine.geometryStatistics();
+  const PageCacheStatistics& pages = engine.pageCacheStatistics();
+  ImGui::Text("frame %llu: prepare %.2f ms, render %.2f ms (CPU)", static_cast<unsigned long long>(frame.frame),
+              frame.prepareMs, frame.renderMs);
+  ImGui::Text("geometry: %d patches, %llu vertices, %llu triangles", geometry.patches,
+              static_cast<unsigned long long>(geometry.vertices), static_cast<unsigned long long>(geometry.triangles));
+  ImGui::Text("  visibility %.2f ms, subdivision %.2f ms, rasterisation %.2f ms", geometry.visibilityMs,
+              geometry.subdivisionMs, geometry.rasterisationMs);
+  ImGui::Text("pages: %d of %d resident, %d wanted, %d loading", pages.resident, pages.capacity, pages.wanted,
+              pages.loading);
+  ImGui::Text("  %llu uploaded, %llu evicted, %llu unreadable", static_cast<unsigned long long>(pages.uploaded),
+              static_cast<unsigned long long>(pages.evicted), static_cast<unsigned long long>(pages.failed));
+}
+
+}  // namespace
+
+void drawScenePanel(Engine& engine) {
+  ImGui::Begin("Scene");
+  drawDate(engine);
+  drawStatistics(engine);
+  ImGui::End();
+}
+
+}  // namespace strata::viewer
