@@ -43,6 +43,9 @@ bool choiceControl(const ParameterDeclaration& parameter, std::string& value) {
 }  // namespace
 
 void ParameterPanel::draw(Engine& engine) {
+  // Out of the way at first, folded at the top left: the frame is what a viewer opens to see.
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   ImGui::Begin("Parameters");
   std::string node;
   bool open = false;

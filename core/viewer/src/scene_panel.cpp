@@ -38,6 +38,9 @@ void drawStatistics(const Engine& engine) {
 }  // namespace
 
 void drawScenePanel(Engine& engine) {
+  // Out of the way at first, folded at the top left: the frame is what a viewer opens to see.
+  ImGui::SetNextWindowPos(ImVec2(0.0f, 24.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
   drawDate(engine);
   drawStatistics(engine);

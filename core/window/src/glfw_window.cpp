@@ -1,5 +1,6 @@
 #include <GLFW/glfw3.h>
 
+#include <optional>
 #include <stdexcept>
 
 #include <strata/window/glfw_window.hpp>
@@ -11,6 +12,19 @@ std::string lastGlfwError() {
   const char* description = nullptr;
   glfwGetError(&description);
   return description ? description : "unknown GLFW error";
+}
+
+std::optional<NavigationKey> navigationKeyOf(int key) {
+  switch (key) {
+    case GLFW_KEY_LEFT: return NavigationKey::Left;
+    case GLFW_KEY_RIGHT: return NavigationKey::Right;
+    case GLFW_KEY_UP: return NavigationKey::Up;
+    case GLFW_KEY_DOWN: return NavigationKey::Down;
+    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: case GLFW_KEY_PAGE_UP: return NavigationKey::Closer;
+    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: case GLFW_KEY_PAGE_DOWN: return NavigationKey::Farther;
+    case GLFW_KEY_HOME: return NavigationKey::Home;
+    default: return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -33,6 +47,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   glfwSetWindowUserPointer(window_, this);
   glfwSetCursorPosCallback(window_, onCursor);
   glfwSetScrollCallback(window_, onScroll);
+  glfwSetKeyCallback(window_, onKey);
   makeCurrent();
   glfwSwapInterval(1);
 }
@@ -70,6 +85,13 @@ void GlfwWindow::onCursor(GLFWwindow* window, double x, double y) {
 void GlfwWindow::onScroll(GLFWwindow* window, double, double dy) {
   auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
   if (self->input_.scroll) self->input_.scroll(dy);
+}
+
+void GlfwWindow::onKey(GLFWwindow* window, int key, int, int action, int) {
+  auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
+  if (action == GLFW_RELEASE || !self->input_.key) return;
+  const std::optional<NavigationKey> navigation = navigationKeyOf(key);
+  if (navigation) self->input_.key(*navigation);
 }
 
 }  // namespace strata

@@ -9,10 +9,14 @@ struct GLFWwindow;
 
 namespace strata {
 
+// The keys the viewer navigates by: the arrows, + and - (or Page Up and Page Down), Home.
+enum class NavigationKey { Left, Right, Up, Down, Closer, Farther, Home };
+
 // What the window reports of the user's hands, in window pixels.
 struct PointerInput {
   std::function<void(double dx, double dy, int button)> drag;  // button 0 left, 1 right, 2 middle
   std::function<void(double steps)> scroll;                    // positive: away from the user
+  std::function<void(NavigationKey key)> key;                  // pressed, or held and repeating
 };
 
 // An OpenGL 4.5 core context with a window, through GLFW. Throws std::runtime_error when no display or
@@ -38,6 +42,7 @@ class GlfwWindow : public GlContext {
  private:
   static void onCursor(GLFWwindow* window, double x, double y);
   static void onScroll(GLFWwindow* window, double dx, double dy);
+  static void onKey(GLFWwindow* window, int key, int scancode, int action, int mods);
 
   GLFWwindow* window_ = nullptr;
   PointerInput input_;

@@ -1,11 +1,11 @@
-#include "orbit_controls.hpp"
+#include <strata/viewer/orbit_controls.hpp>
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/glm.hpp>
 
-namespace strata::cli {
+namespace strata::viewer {
 
 void OrbitControls::drag(double dx, double dy, int button, int viewportHeight) {
   if (button == 0) {
@@ -29,4 +29,18 @@ void OrbitControls::scroll(double steps) {
   camera_.altitude = std::clamp(camera_.altitude * std::pow(0.85, steps), 1.0, 1.0e9);
 }
 
-}  // namespace strata::cli
+// An arrow drags the ground by a tenth of the view's height; + and - are a wheel step each.
+void OrbitControls::key(NavigationKey key, int viewportHeight) {
+  const double step = viewportHeight / 10.0;
+  switch (key) {
+    case NavigationKey::Left: drag(step, 0.0, 0, viewportHeight); break;
+    case NavigationKey::Right: drag(-step, 0.0, 0, viewportHeight); break;
+    case NavigationKey::Up: drag(0.0, step, 0, viewportHeight); break;
+    case NavigationKey::Down: drag(0.0, -step, 0, viewportHeight); break;
+    case NavigationKey::Closer: scroll(1.0); break;
+    case NavigationKey::Farther: scroll(-1.0); break;
+    case NavigationKey::Home: break;
+  }
+}
+
+}  // namespace strata::viewer

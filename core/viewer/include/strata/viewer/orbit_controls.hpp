@@ -1,0 +1,25 @@
+#pragma once
+#include <strata/body.hpp>
+#include <strata/camera.hpp>
+#include <strata/window/glfw_window.hpp>
+
+namespace strata::viewer {
+
+// Navigation around a body: drag to orbit, right-drag to turn and tilt, scroll to zoom; the arrows orbit,
+// + and - zoom. Motion scales with altitude, so a drag moves the ground under the pointer by about as much
+// at 10 km as at 10,000 km, and an arrow a tenth of the view's height.
+class OrbitControls {
+ public:
+  OrbitControls(const Body& body, Camera& camera) : body_(body), camera_(camera) {}
+
+  void drag(double dx, double dy, int button, int viewportHeight);
+  void scroll(double steps);
+  // An arrow, + or -, for a viewport `viewportHeight` pixels high; Home is the caller's (its camera).
+  void key(NavigationKey key, int viewportHeight);
+
+ private:
+  const Body& body_;
+  Camera& camera_;
+};
+
+}  // namespace strata::viewer

@@ -1,0 +1,35 @@
+#pragma once
+#include <filesystem>
+
+#include <strata/engine.hpp>
+#include <strata/viewer/panel_overlay.hpp>
+#include <strata/viewer/parameter_panel.hpp>
+#include <strata/viewer/pipeline_watcher.hpp>
+#include <strata/window/glfw_window.hpp>
+
+namespace strata::viewer {
+
+// The viewer (`strata view`, docs/viewer.md): the engine's pipeline in a window, navigated with the mouse
+// and the keyboard (OrbitControls; Home goes back to the pipeline's camera), its parameters and its scene
+// in panels over the frame, and loaded again when its file changes. On the window's GL thread.
+class Viewer {
+ public:
+  Viewer(GlfwWindow& window, Engine& engine);
+
+  // Takes the events since the last frame, draws one with the panels over it and shows it; returns the
+  // engine's frame, or none while the window is minimised.
+  const FrameOutput* frame();
+
+ private:
+  void navigate();
+  void reload();
+
+  GlfwWindow& window_;
+  Engine& engine_;
+  PanelOverlay overlay_;  // after the window's own input callbacks, which ImGui chains
+  ParameterPanel panel_;
+  PipelineWatcher watcher_;
+  int height_ = 0;
+};
+
+}  // namespace strata::viewer

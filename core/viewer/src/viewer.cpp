@@ -1,0 +1,62 @@
+#include <strata/viewer/viewer.hpp>
+
+#include <cstdio>
+
+#include <strata/error.hpp>
+#include <strata/gl.hpp>
+#include <strata/pipeline.hpp>
+#include <strata/viewer/orbit_controls.hpp>
+#include <strata/viewer/scene_panel.hpp>
+
+namespace strata::viewer {
+
+Viewer::Viewer(GlfwWindow& window, Engine& engine)
+    : window_(window), engine_(engine), overlay_(window), watcher_(engine.pipeline().file) {
+  navigate();
+}
+
+// The controls are made per event: a change in the panel may load the pipeline again, and with it the body.
+void Viewer::navigate() {
+  const auto controls = [this] { return OrbitControls(engine_.pipeline().body, engine_.camera()); };
+  window_.setPointerInput({[this, controls](double dx, double dy, int button) {
+                             if (!overlay_.wantsPointer()) controls().drag(dx, dy, button, height_);
+                           },
+                           [this, controls](double steps) {
+                             if (!overlay_.wantsPointer()) controls().scroll(steps);
+                           },
+                           [this, controls](NavigationKey key) {
+                             if (key == NavigationKey::Home) engine_.camera() = engine_.pipeline().camera;
+                             else controls().key(key, height_);
+                           }});
+}
+
+// The pipeline's file was edited: load it again, keeping the camera; a file that no longer loads leaves the
+// pipeline as it was, and says why in the panel and on stderr.
+void Viewer::reload() {
+  try {
+    engine_.reload();
+    panel_.report({});
+  } catch (const Error& error) {
+    std::fprintf(stderr, "%s\n", error.what());
+    panel_.report(error.what());
+  }
+}
+
+const FrameOutput* Viewer::frame() {
+  window_.pollEvents();
+  if (watcher_.changed()) reload();
+  int width = 0;
+  window_.framebufferSize(width, height_);
+  if (width < 1 || height_ < 1) return nullptr;  // minimised
+  const FrameOutput& frame = engine_.render(width, height_);
+  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width, height_, 0, 0, width, height_, GL_COLOR_BUFFER_BIT,
+                         GL_NEAREST);
+  overlay_.begin();
+  panel_.draw(engine_);
+  drawScenePanel(engine_);
+  overlay_.end();
+  window_.swapBuffers();
+  return &frame;
+}
+
+}  // namespace strata::viewer
