@@ -5,9 +5,7 @@
 #include <strata/error.hpp>
 
 namespace strata::cli {
-namespace {
 
-// Reads "1280x720"; returns CLI11's error text or empty.
 std::string parseSize(const std::string& text, FrameSize& size) {
   int width = 0, height = 0;
   char separator = 0, rest = 0;
@@ -18,8 +16,6 @@ std::string parseSize(const std::string& text, FrameSize& size) {
   size = {width, height};
   return {};
 }
-
-}  // namespace
 
 void addPipelineOptions(CLI::App& command, PipelineOptions& options) {
   command.add_option("pipeline", options.pipeline, "the pipeline file (YAML)")->required();  // the loader reports a missing file

@@ -13,6 +13,9 @@ struct FrameSize {
   int height = 720;
 };
 
+// Reads "1280x720" into `size`; returns the problem, for CLI11's error, or empty.
+std::string parseSize(const std::string& text, FrameSize& size);
+
 // What render and view both take: the pipeline, overrides and a size.
 struct PipelineOptions {
   std::string pipeline;

@@ -14,6 +14,7 @@ namespace {
 struct ViewOptions : PipelineOptions {
   int frames = 0;          // 0: until the window closes
   std::string screenshot;  // written after the last frame
+  FrameSize screenshotSize{0, 0};  // 0 x 0: the window's
 };
 
 void view(const ViewOptions& options) {
@@ -22,10 +23,12 @@ void view(const ViewOptions& options) {
   Engine engine;
   engine.load(options.pipeline, options.overrides);
   viewer::Viewer viewer(window, engine);
-  const FrameOutput* frame = nullptr;
   for (int count = 0; !window.shouldClose() && (options.frames == 0 || count < options.frames); ++count)
-    if (const FrameOutput* drawn = viewer.frame()) frame = drawn;
-  if (frame && !options.screenshot.empty()) frame->write(options.screenshot);
+    viewer.frame();
+  if (options.screenshot.empty()) return;
+  FrameSize size = options.screenshotSize;
+  if (size.width == 0) window.framebufferSize(size.width, size.height);
+  viewer.screenshot(options.screenshot, size.width, size.height);
 }
 
 }  // namespace
@@ -38,7 +41,15 @@ void addViewCommand(CLI::App& app, int& exitCode) {
   addPipelineOptions(*command, *options);
   command->add_option("--frames", options->frames, "close after this many frames (default: when the window closes)")
       ->check(CLI::NonNegativeNumber);
-  command->add_option("--screenshot", options->screenshot, "write the last frame to this PNG file");
+  command->add_option("--screenshot", options->screenshot, "write the view when the window closes to this PNG file");
+  command->add_option_function<std::string>(
+             "--screenshot-size",
+             [options](const std::string& text) {
+               if (auto problem = parseSize(text, options->screenshotSize); !problem.empty())
+                 throw CLI::ValidationError("--screenshot-size", problem);
+             },
+             "the screenshot's size WIDTHxHEIGHT, any (default: the window's)")
+      ->type_name("WxH");
   command->callback([options, &exitCode] { exitCode = reportingErrors([&] { view(*options); }); });
 }
 

@@ -97,6 +97,15 @@ TEST_F(ViewerInput, TheWheelAndPlusZoomAndTheArrowsOrbit) {
   EXPECT_EQ(engine_->camera(), engine_->pipeline().camera);
 }
 
+// At any size, through the headless path, whatever the window's.
+TEST_F(ViewerInput, WritesAScreenshotOfAnySize) {
+  viewer_->screenshot(directory_.path() / "wide.png", 400, 100);
+  const Image shot = readImage(directory_.path() / "wide.png");
+  EXPECT_EQ(shot.width, 400);
+  EXPECT_EQ(shot.height, 100);
+  EXPECT_GT(shot.at(200, 50)[0] + shot.at(200, 50)[1] + shot.at(200, 50)[2], 0) << "the globe in its middle";
+}
+
 TEST_F(ViewerInput, WritesTheFrameItShowsAsAScreenshot) {
   const FrameOutput* frame = viewer_->frame();
   ASSERT_NE(frame, nullptr);

@@ -59,4 +59,8 @@ const FrameOutput* Viewer::frame() {
   return &frame;
 }
 
+void Viewer::screenshot(const std::filesystem::path& file, int width, int height) {
+  engine_.renderSettled(width, height).write(file);
+}
+
 }  // namespace strata::viewer

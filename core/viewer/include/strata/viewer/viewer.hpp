@@ -19,6 +19,9 @@ class Viewer {
   // Takes the events since the last frame, draws one with the panels over it and shows it; returns the
   // engine's frame, or none while the window is minimised.
   const FrameOutput* frame();
+  // Writes the view as it is now at width x height, whatever the window's size, through the engine's
+  // headless path: every page loaded and the detail settled (Engine::renderSettled), then a PNG.
+  void screenshot(const std::filesystem::path& file, int width, int height);
 
  private:
   void navigate();
