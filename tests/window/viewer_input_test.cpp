@@ -1,6 +1,6 @@
 // The viewer (issue 9) under Xvfb takes keyboard and mouse events sent to its window through the X server,
-// as a user's hands would send them (XTest): a left drag orbits, the wheel zooms, the arrows orbit and +
-// zooms, Home brings the pipeline's camera back; and the frame it shows is written as a screenshot that
+// as a user's hands would send them (XTest): a left drag orbits, the wheel zooms toward the pointer, the
+// arrows orbit and + zooms, Home brings the pipeline's camera back; and the frame it shows is written as a screenshot that
 // reads back the same.
 #include <gtest/gtest.h>
 
@@ -86,9 +86,11 @@ TEST_F(ViewerInput, ALeftDragOrbitsTheGlobe) {
 TEST_F(ViewerInput, TheWheelAndPlusZoomAndTheArrowsOrbit) {
   const Camera before = engine_->camera();
   pointerTo(200, 150);
-  button(4, true);  // the wheel, away from the user
+  button(4, true);  // the wheel, away from the user, with the pointer right of and below the middle
   button(4, false);
   EXPECT_NEAR(engine_->camera().altitude, before.altitude * 0.85, 1.0);
+  EXPECT_GT(engine_->camera().lon, before.lon + 0.1) << "toward the ground under the pointer: east";
+  EXPECT_LT(engine_->camera().lat, before.lat - 0.1) << "and south";
   key(XK_equal);
   EXPECT_NEAR(engine_->camera().altitude, before.altitude * 0.85 * 0.85, 1.0);
   key(XK_Up);

@@ -2,10 +2,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <glm/glm.hpp>
 
 namespace strata::viewer {
+namespace {
+
+// Longitude and latitude (rad) where the ray through pixel (x, y) meets the sphere of `radius`, or none.
+std::optional<glm::dvec2> groundAt(const View& view, double radius, double x, double y) {
+  const double tanHalf = std::tan(view.verticalFov / 2.0), aspect = double(view.width) / view.height;
+  const double ndcX = (x + 0.5) / view.width * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / view.height * 2.0;
+  const glm::dvec3 d = glm::transpose(view.planetToEye) * glm::normalize(glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0));
+  const double b = glm::dot(view.eye, d), c = glm::dot(view.eye, view.eye) - radius * radius;
+  if (b * b - c < 0.0 || -b - std::sqrt(b * b - c) < 0.0) return std::nullopt;
+  const glm::dvec3 n = glm::normalize(view.eye + (-b - std::sqrt(b * b - c)) * d);
+  return glm::dvec2(std::atan2(n.y, n.x), std::asin(n.z));
+}
+
+}  // namespace
 
 void OrbitControls::drag(double dx, double dy, int button, int viewportHeight) {
   if (button == 0) {
@@ -27,6 +42,25 @@ void OrbitControls::drag(double dx, double dy, int button, int viewportHeight) {
 void OrbitControls::scroll(double steps) {
   // 15% closer per wheel step: about seven steps per factor of three.
   camera_.altitude = std::clamp(camera_.altitude * std::pow(0.85, steps), 1.0, 1.0e9);
+}
+
+// The ground under the pointer, from the ray through it and the body's sphere, computed in double; the point
+// below the eye then moves toward it by the share the altitude falls, so that a view looking down keeps it
+// under the pointer (exactly for a flat ground, nearly for a sphere seen from its own scale).
+void OrbitControls::scrollToward(double steps, double x, double y, int width, int height) {
+  const double before = camera_.altitude;
+  const std::optional<glm::dvec2> target = groundAt(makeView(body_, camera_, width, height), body_.radius, x, y);
+  scroll(steps);
+  if (!target) return;
+  const double share = 1.0 - camera_.altitude / before;  // negative: zooming out moves away
+  const glm::dvec3 from = unitNormal(glm::radians(camera_.lon), glm::radians(camera_.lat));
+  const glm::dvec3 to = unitNormal(target->x, target->y);
+  const double angle = std::acos(std::clamp(glm::dot(from, to), -1.0, 1.0));
+  if (angle < 1e-12) return;
+  const glm::dvec3 moved =
+      (std::sin((1.0 - share) * angle) * from + std::sin(share * angle) * to) / std::sin(angle);  // slerp
+  camera_.lat = glm::degrees(std::asin(std::clamp(moved.z, -1.0, 1.0)));
+  camera_.lon = glm::degrees(std::atan2(moved.y, moved.x));
 }
 
 // An arrow drags the ground by a tenth of the view's height; + and - are a wheel step each.

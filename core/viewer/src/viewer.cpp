@@ -21,8 +21,8 @@ void Viewer::navigate() {
   window_.setPointerInput({[this, controls](double dx, double dy, int button) {
                              if (!overlay_.wantsPointer()) controls().drag(dx, dy, button, height_);
                            },
-                           [this, controls](double steps) {
-                             if (!overlay_.wantsPointer()) controls().scroll(steps);
+                           [this, controls](double steps, double x, double y) {
+                             if (!overlay_.wantsPointer()) controls().scrollToward(steps, x, y, width_, height_);
                            },
                            [this, controls](NavigationKey key) {
                              if (key == NavigationKey::Home) engine_.camera() = engine_.pipeline().camera;
@@ -45,11 +45,10 @@ void Viewer::reload() {
 const FrameOutput* Viewer::frame() {
   window_.pollEvents();
   if (watcher_.changed()) reload();
-  int width = 0;
-  window_.framebufferSize(width, height_);
-  if (width < 1 || height_ < 1) return nullptr;  // minimised
-  const FrameOutput& frame = engine_.render(width, height_);
-  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width, height_, 0, 0, width, height_, GL_COLOR_BUFFER_BIT,
+  window_.framebufferSize(width_, height_);
+  if (width_ < 1 || height_ < 1) return nullptr;  // minimised
+  const FrameOutput& frame = engine_.render(width_, height_);
+  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                          GL_NEAREST);
   overlay_.begin();
   panel_.draw(engine_);

@@ -84,7 +84,10 @@ void GlfwWindow::onCursor(GLFWwindow* window, double x, double y) {
 
 void GlfwWindow::onScroll(GLFWwindow* window, double, double dy) {
   auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(window));
-  if (self->input_.scroll) self->input_.scroll(dy);
+  if (!self->input_.scroll) return;
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  self->input_.scroll(dy, x, y);
 }
 
 void GlfwWindow::onKey(GLFWwindow* window, int key, int, int action, int) {

@@ -5,8 +5,8 @@
 
 namespace strata::viewer {
 
-// Navigation around a body: drag to orbit, right-drag to turn and tilt, scroll to zoom; the arrows orbit,
-// + and - zoom. Motion scales with altitude, so a drag moves the ground under the pointer by about as much
+// Navigation around a body: drag to orbit, right-drag to turn and tilt, scroll to zoom toward the point
+// under the pointer; the arrows orbit, + and - zoom. Motion scales with altitude, so a drag moves the ground under the pointer by about as much
 // at 10 km as at 10,000 km, and an arrow a tenth of the view's height.
 class OrbitControls {
  public:
@@ -14,6 +14,9 @@ class OrbitControls {
 
   void drag(double dx, double dy, int button, int viewportHeight);
   void scroll(double steps);
+  // Zooms as scroll() does, moving toward (or away from) the ground under pixel (x, y) of a viewport
+  // width x height, so that it stays about under the pointer; where the pointer is off the body, as scroll().
+  void scrollToward(double steps, double x, double y, int width, int height);
   // An arrow, + or -, for a viewport `viewportHeight` pixels high; Home is the caller's (its camera).
   void key(NavigationKey key, int viewportHeight);
 

@@ -32,6 +32,7 @@ class Viewer {
   PanelOverlay overlay_;  // after the window's own input callbacks, which ImGui chains
   ParameterPanel panel_;
   PipelineWatcher watcher_;
+  int width_ = 0;  // the window's framebuffer, pixels
   int height_ = 0;
 };
 

@@ -15,7 +15,7 @@ enum class NavigationKey { Left, Right, Up, Down, Closer, Farther, Home };
 // What the window reports of the user's hands, in window pixels.
 struct PointerInput {
   std::function<void(double dx, double dy, int button)> drag;  // button 0 left, 1 right, 2 middle
-  std::function<void(double steps)> scroll;                    // positive: away from the user
+  std::function<void(double steps, double x, double y)> scroll;  // positive: away from the user; at the pointer
   std::function<void(NavigationKey key)> key;                  // pressed, or held and repeating
 };
 
