@@ -36,8 +36,8 @@ void view(const ViewOptions& options) {
 void addViewCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<ViewOptions>();
   CLI::App* command = app.add_subcommand("view", "show a pipeline in a window: drag or the arrows to orbit, "
-                                                 "right-drag to turn and tilt, scroll or + and - to zoom, Home to "
-                                                 "start again; panels of parameters and of the scene");
+                                                 "right-drag to turn and tilt, scroll or + and - to zoom, W and S to "
+                                                 "fly, Home to start again; panels of parameters and of the scene");
   addPipelineOptions(*command, *options);
   command->add_option("--frames", options->frames, "close after this many frames (default: when the window closes)")
       ->check(CLI::NonNegativeNumber);

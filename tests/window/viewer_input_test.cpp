@@ -100,6 +100,19 @@ TEST_F(ViewerInput, TheWheelAndPlusZoomAndTheArrowsOrbit) {
 }
 
 // At any size, through the headless path, whatever the window's.
+// W flies a tenth of the altitude along the line of sight: tilted 60 degrees toward the north, down by
+// half of that and north by the rest; S flies back.
+TEST_F(ViewerInput, WAndSFlyAlongTheLineOfSight) {
+  engine_->camera().tilt = 60.0;
+  const Camera before = engine_->camera();
+  pointerTo(200, 150);
+  key(XK_w);
+  EXPECT_NEAR(engine_->camera().altitude, before.altitude * (1.0 - 0.1 * 0.5), 1.0);
+  EXPECT_GT(engine_->camera().lat, before.lat + 1.0);
+  key(XK_s);
+  EXPECT_NEAR(engine_->camera().lat, before.lat, 0.5) << "back about where it was";
+}
+
 TEST_F(ViewerInput, WritesAScreenshotOfAnySize) {
   viewer_->screenshot(directory_.path() / "wide.png", 400, 100);
   const Image shot = readImage(directory_.path() / "wide.png");

@@ -9,6 +9,8 @@
 namespace strata::viewer {
 namespace {
 
+constexpr double kFlyingShare = 0.1;  // a key press flies a tenth of the altitude: speed follows altitude
+
 // Longitude and latitude (rad) where the ray through pixel (x, y) meets the sphere of `radius`, or none.
 std::optional<glm::dvec2> groundAt(const View& view, double radius, double x, double y) {
   const double tanHalf = std::tan(view.verticalFov / 2.0), aspect = double(view.width) / view.height;
@@ -63,6 +65,17 @@ void OrbitControls::scrollToward(double steps, double x, double y, int width, in
   camera_.lon = glm::degrees(std::atan2(moved.y, moved.x));
 }
 
+// Along the line of sight, tilt from straight down: the altitude falls by cos(tilt) of the distance, and
+// the point below the eye moves forward along the heading by sin(tilt) of it, over the ground.
+void OrbitControls::fly(double share) {
+  const double distance = share * camera_.altitude, tilt = glm::radians(camera_.tilt);
+  camera_.altitude = std::clamp(camera_.altitude - distance * std::cos(tilt), 1.0, 1.0e9);
+  const double ahead = distance * std::sin(tilt) / body_.radius, heading = glm::radians(camera_.heading);
+  camera_.lat = std::clamp(camera_.lat + glm::degrees(ahead * std::cos(heading)), -90.0, 90.0);
+  const double cosLat = std::max(std::cos(glm::radians(camera_.lat)), 1e-3);
+  camera_.lon = std::remainder(camera_.lon + glm::degrees(ahead * std::sin(heading)) / cosLat, 360.0);
+}
+
 // An arrow drags the ground by a tenth of the view's height; + and - are a wheel step each.
 void OrbitControls::key(NavigationKey key, int viewportHeight) {
   const double step = viewportHeight / 10.0;
@@ -73,6 +86,8 @@ void OrbitControls::key(NavigationKey key, int viewportHeight) {
     case NavigationKey::Down: drag(0.0, -step, 0, viewportHeight); break;
     case NavigationKey::Closer: scroll(1.0); break;
     case NavigationKey::Farther: scroll(-1.0); break;
+    case NavigationKey::Forward: fly(kFlyingShare); break;
+    case NavigationKey::Back: fly(-kFlyingShare); break;
     case NavigationKey::Home: break;
   }
 }

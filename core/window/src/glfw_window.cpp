@@ -22,6 +22,8 @@ std::optional<NavigationKey> navigationKeyOf(int key) {
     case GLFW_KEY_DOWN: return NavigationKey::Down;
     case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: case GLFW_KEY_PAGE_UP: return NavigationKey::Closer;
     case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: case GLFW_KEY_PAGE_DOWN: return NavigationKey::Farther;
+    case GLFW_KEY_W: return NavigationKey::Forward;
+    case GLFW_KEY_S: return NavigationKey::Back;
     case GLFW_KEY_HOME: return NavigationKey::Home;
     default: return std::nullopt;
   }

@@ -9,8 +9,8 @@ struct GLFWwindow;
 
 namespace strata {
 
-// The keys the viewer navigates by: the arrows, + and - (or Page Up and Page Down), Home.
-enum class NavigationKey { Left, Right, Up, Down, Closer, Farther, Home };
+// The keys the viewer navigates by: the arrows, + and - (or Page Up and Page Down), W and S, Home.
+enum class NavigationKey { Left, Right, Up, Down, Closer, Farther, Forward, Back, Home };
 
 // What the window reports of the user's hands, in window pixels.
 struct PointerInput {
