@@ -45,7 +45,7 @@ ReliefLayer::Ramp tintOf(const ParameterSet& parameters) {
 ReliefLayer::Lighting lightingOf(const ParameterSet& parameters) {
   return {parameters.real("azimuth"), parameters.real("altitude"), parameters.real("exaggeration"),
           parameters.string("blend") == "multiply", parameters.string("mode") == "multidirectional",
-          outputOf(parameters.string("output")), tintOf(parameters)};
+          outputOf(parameters.string("output")), tintOf(parameters), parameters.boolean("normalise")};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -101,6 +101,11 @@ NodeTypeDeclaration declaration() {
        .doc = "shade: the Lambertian shade; slope: the slope's angle over 90 degrees (0 flat, 1 vertical); aspect: the "
               "downslope direction clockwise from north over 360 degrees",
        .choices = {"shade", "slope", "aspect"}, .live = true},
+      // false: the hillshade as cartographers know it, flat ground at sin(altitude) (0.71 at 45 degrees)
+      {.name = "normalise", .type = ParameterType::Boolean, .defaultValue = false,
+       .doc = "divide the shade by flat ground's, sin(altitude), so that multiplied imagery keeps its colour on "
+              "flat ground and slopes toward the light brighten it (up to white)",
+       .live = true},
       // none: the shade alone reads as relief; a tint is a choice of what to show
       {.name = "tint", .type = ParameterType::Choice, .defaultValue = std::string("none"),
        .doc = "colours the value by tint_ramp: by elevation (m) or by slope (deg); none: grey",

@@ -1,5 +1,6 @@
 #include "relief_layer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -10,6 +11,15 @@
 #include <strata/srgb.hpp>
 
 namespace strata::composite {
+
+namespace {
+
+// Flat ground's shade under a light at `altitude` degrees, sin(altitude), in either mode (Mark's weights sum
+// to 2 there and are halved); at least 0.01, so that a light at the horizon, which leaves flat ground dark
+// either way, divides by no zero.
+float flatShade(double altitude) { return float(std::max(std::sin(altitude * std::numbers::pi / 180.0), 0.01)); }
+
+}  // namespace
 
 ReliefLayer::ReliefLayer(const std::string& nodeId, const Layer& height, const Layer* surface, Lighting lighting,
                          double radius)
@@ -48,8 +58,9 @@ std::string ReliefLayer::value() const {
          "  vec2 slopes = " + p + "_slopes(p, h);\n"
          "  if (" + p + "_output == 1) return reliefSlope(slopes, " + p + "_exaggeration);\n"
          "  if (" + p + "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
-         "  if (" + p + "_multidirectional == 1) return reliefMultidirectional(slopes, " + p + "_exaggeration, " + p + "_altitude);\n"
-         "  return reliefLambert(slopes, " + p + "_exaggeration, " + p + "_light);\n"
+         "  if (" + p + "_multidirectional == 1)\n"
+         "    return reliefMultidirectional(slopes, " + p + "_exaggeration, " + p + "_altitude) / " + p + "_flat;\n"
+         "  return reliefLambert(slopes, " + p + "_exaggeration, " + p + "_light) / " + p + "_flat;\n"
          "}\n";
 }
 
@@ -88,6 +99,7 @@ std::string ReliefLayer::glsl() const {
          "uniform float " + p + "_altitude;\n"
          "uniform int " + p + "_multiply;\n"
          "uniform int " + p + "_multidirectional;\n"
+         "uniform float " + p + "_flat;\n"
          "uniform int " + p + "_output;\n"
          "uniform int " + p + "_tintBy;\n"
          "uniform int " + p + "_rampStops;\n"
@@ -108,6 +120,7 @@ void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   program.set(prefix_ + "_altitude", float(lighting_.altitude * std::numbers::pi / 180.0));
   program.set(prefix_ + "_multiply", lighting_.multiply ? 1 : 0);
   program.set(prefix_ + "_multidirectional", lighting_.multidirectional ? 1 : 0);
+  program.set(prefix_ + "_flat", lighting_.normalised ? flatShade(lighting_.altitude) : 1.0f);
   program.set(prefix_ + "_output", int(lighting_.output));
   bindRamp(program);
 }

@@ -37,6 +37,7 @@ class ReliefLayer : public Layer {
     bool multidirectional = false;  // Mark's four oblique-weighted lights, at `altitude`, not one at `azimuth`
     Output output = Output::Shade;
     Ramp tint;
+    bool normalised = false;  // the shade over flat ground's, sin(altitude): flat ground keeps the surface's colour
   };
 
   // `surface`, or none: the colour layer to shade. `radius`: the body's, to turn angles into metres.

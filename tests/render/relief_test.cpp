@@ -18,7 +18,7 @@
 // 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.52
 // levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.77 for exaggeration 2 under a
 // light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone; 0.50 multidirectional (Mark's four lights);
-// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); tinted by elevation 0.50, by slope
+// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); normalised 0.51; tinted by elevation 0.50, by slope
 // 0.51; the same tolerance.
 #include <gtest/gtest.h>
 
@@ -150,6 +150,15 @@ TEST_F(Relief, ExaggerationAndAltitudeShadeAsASteeperConeUnderALowerLight) {
   const Agreement agreement =
       compare("exaggeration 2, altitude 30", pipeline(file("cone.tif"), ", exaggeration: 2, altitude: 30"),
               [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 30.0, 2.0)); });
+  EXPECT_LE(agreement.largest, 1.0);
+}
+
+// Normalised, the shade is Lambert's over flat ground's, sin(altitude): brighter than 1 on the flank facing
+// the light (white, once encoded) and the surface's own colour on flat ground.
+TEST_F(Relief, NormalisedTheShadeIsOverFlatGrounds) {
+  const Agreement agreement =
+      compare("normalised", pipeline(file("cone.tif"), ", normalise: true"),
+              [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 45.0) / std::sin(45.0 * kDegree)); });
   EXPECT_LE(agreement.largest, 1.0);
 }
 
