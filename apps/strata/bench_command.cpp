@@ -46,6 +46,11 @@ fs::path compareFileOf(const fs::path& csv, const char* extension) {
 }
 
 void checkOptions(const BenchOptions& options, const fs::path& pathFile) {
+  // Named before the path, which is found beside it, as the loader names it.
+  for (const std::string& pipeline : {options.pipeline, options.compare})
+    if (!pipeline.empty() && !fs::exists(pipeline))
+      throw Error(SourceLocation{pipeline}, "pipeline file not found",
+                  "check the path; pipelines/ holds ready-made pipelines");
   if (options.frames < 2)
     throw Error(SourceLocation{"--frames"}, "a benchmark takes at least 2 frames, got " + std::to_string(options.frames),
                 "give --frames N with N >= 2 (seed 000's benchmark: 4800)");
@@ -104,6 +109,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
   options->size = {1024, 768};  // seed 000's baseline benchmark (section 5.1.1, figure 5.2)
   CLI::App* command = app.add_subcommand("bench", "time a pipeline frame by frame along a camera path, to a CSV and a plot");
   addPipelineOptions(*command, *options);
+  command->get_option("--size")->description("frame size WIDTHxHEIGHT (default 1024x768, seed 000's)");
   command->add_option("--path", options->path,
                       "the camera path file (docs/camera-paths.md; default paths/<pipeline name>.yaml beside the pipeline)")
       ->type_name("FILE");
@@ -114,7 +120,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
   command->add_option("--compare", options->compare,
                       "a second pipeline run along the same path; prints and writes its frame times over the first's")
       ->type_name("PIPELINE");
-  command->footer("The default size is 1024x768, seed 000's; on a CPU renderer give a smaller --size and fewer --frames.");
+  command->footer("On a CPU renderer give a smaller --size and fewer --frames, e.g. --size 256x192 --frames 480.");
   command->callback([options, &exitCode] { exitCode = reportingErrors([&] { bench(*options); }); });
 }
 

@@ -112,6 +112,9 @@ TEST_F(StrataCommandTest, BenchRefusesAMissingPathAndBadNumbers) {
   EXPECT_EQ(missing.exitCode, 1);
   EXPECT_TRUE(contains(missing.err, file("none.yaml").string() + ": error: no camera path file here")) << missing.err;
   EXPECT_TRUE(contains(missing.err, "fix:")) << missing.err;
+  const CommandResult pipeline = run({"bench", "none.yaml"});
+  EXPECT_EQ(pipeline.exitCode, 1);
+  EXPECT_TRUE(contains(pipeline.err, "none.yaml: error: pipeline file not found")) << pipeline.err;
   const CommandResult implicit = run({"bench", "pipelines/procedural.yaml"});
   EXPECT_EQ(implicit.exitCode, 1);
   EXPECT_TRUE(contains(implicit.err, "pipelines/paths/procedural.yaml")) << implicit.err;
