@@ -35,7 +35,8 @@ BenchFrame measuredFrame(Engine& engine, double frameMs, std::uint64_t uploadedB
 
 }  // namespace
 
-std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height) {
+std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height,
+                                       const std::function<void(int)>& progress) {
   const PathFrames spacing = pathFrames(path, frames);
   std::vector<BenchFrame> measured;
   measured.reserve(std::size_t(spacing.count));
@@ -49,6 +50,7 @@ std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, i
     row.seconds = fraction * spacing.duration;
     row.altitude = engine.camera().altitude;
     measured.push_back(row);
+    if (progress) progress(frame);
   }
   return measured;
 }

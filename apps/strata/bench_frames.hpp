@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -35,8 +36,9 @@ struct BenchFrame {
 
 // Renders `frames` frames evenly spaced in time along `path` as a viewer draws them (Engine::render: pages
 // load asynchronously and coarser ones stand in), timing each, from the cache the engine has (empty just
-// after load).
-std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height);
+// after load). `progress`, when given, is told the number of each frame done.
+std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height,
+                                       const std::function<void(int)>& progress = {});
 
 // The process's resident set in bytes, from /proc/self/status (VmRSS); 0 where there is none.
 std::uint64_t processResidentBytes();
