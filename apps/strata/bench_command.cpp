@@ -53,20 +53,24 @@ void checkOptions(const BenchOptions& options, const fs::path& pathFile) {
       throw Error(SourceLocation{pipeline}, "pipeline file not found",
                   "check the path; pipelines/ holds ready-made pipelines");
   if (options.frames < 2)
-    throw Error(SourceLocation{"--frames"}, "a benchmark takes at least 2 frames, got " + std::to_string(options.frames),
+    throw Error(SourceLocation{"--frames"},
+                "a benchmark takes at least 2 frames, got " + std::to_string(options.frames),
                 "give --frames N with N >= 2 (seed 000's benchmark: 4800)");
   if (options.average < 1)
-    throw Error(SourceLocation{"--average"}, "frames are averaged over at least 1, got " + std::to_string(options.average),
+    throw Error(SourceLocation{"--average"},
+                "frames are averaged over at least 1, got " + std::to_string(options.average),
                 "give --average K with K >= 1 (seed 000's figures: 10)");
   if (!fs::exists(pathFile))
     throw Error(SourceLocation{pathFile.string()}, "no camera path file here",
-                options.path.empty() ? "give --path FILE (without it the path is paths/<pipeline name>.yaml beside the pipeline)"
-                                     : "give --path an existing file (docs/camera-paths.md)");
+                options.path.empty()
+                    ? "give --path FILE (without it the path is paths/<pipeline name>.yaml beside the pipeline)"
+                    : "give --path an existing file (docs/camera-paths.md)");
   readCameraPath(pathFile, Body{});  // a mistake in the path costs no time; it is read again over the body
 }
 
 // One pipeline, loaded into an engine of its own (an empty page cache), timed along the path.
-std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOptions& options, const fs::path& pathFile) {
+std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOptions& options,
+                                      const fs::path& pathFile) {
   Engine engine;
   engine.load(pipeline, options.overrides);
   const CameraPath path = readCameraPath(pathFile, engine.pipeline().body);
@@ -80,7 +84,8 @@ std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOp
 
 std::string summaryLine(const FrameTimeSummary& s) {
   char text[160];
-  std::snprintf(text, sizeof text, "frame ms mean %.2f, median %.2f, p95 %.2f, max %.2f", s.mean, s.median, s.p95, s.max);
+  std::snprintf(text, sizeof text, "frame ms mean %.2f, median %.2f, p95 %.2f, max %.2f", s.mean, s.median, s.p95,
+                s.max);
   return text;
 }
 
@@ -113,18 +118,24 @@ void bench(const BenchOptions& options) {
 void addBenchCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<BenchOptions>();
   options->size = {1024, 768};  // seed 000's baseline benchmark (section 5.1.1, figure 5.2)
-  CLI::App* command = app.add_subcommand("bench", "time a pipeline frame by frame along a camera path, to a CSV and a plot");
+  CLI::App* command =
+      app.add_subcommand("bench", "time a pipeline frame by frame along a camera path, to a CSV and a plot");
   addPipelineOptions(*command, *options);
   command->get_option("--size")->description("frame size WIDTHxHEIGHT (default 1024x768, seed 000's)");
-  command->add_option("--path", options->path,
-                      "the camera path file (docs/camera-paths.md; default paths/<pipeline name>.yaml beside the pipeline)")
+  command
+      ->add_option(
+          "--path", options->path,
+          "the camera path file (docs/camera-paths.md; default paths/<pipeline name>.yaml beside the pipeline)")
       ->type_name("FILE");
-  command->add_option("--frames", options->frames, "frames along the path, evenly spaced in time (default 4800, seed 000's)");
-  command->add_option("--average", options->average, "frames averaged into each point of the plot (default 10, seed 000's)");
+  command->add_option("--frames", options->frames,
+                      "frames along the path, evenly spaced in time (default 4800, seed 000's)");
+  command->add_option("--average", options->average,
+                      "frames averaged into each point of the plot (default 10, seed 000's)");
   command->add_option("-o,--output", options->output, "the per-frame CSV (default out/bench/<pipeline name>.csv)");
   command->add_option("--plot", options->plot, "the plot, SVG (default the CSV's name with .svg)");
-  command->add_option("--compare", options->compare,
-                      "a second pipeline run along the same path; prints and writes its frame times over the first's")
+  command
+      ->add_option("--compare", options->compare,
+                   "a second pipeline run along the same path; prints and writes its frame times over the first's")
       ->type_name("PIPELINE");
   command->footer("On a CPU renderer give a smaller --size and fewer --frames, e.g. --size 256x192 --frames 480.");
   command->callback([options, &exitCode] { exitCode = reportingErrors([&] { bench(*options); }); });

@@ -24,12 +24,21 @@ BenchFrame measuredFrame(Engine& engine, double frameMs, std::uint64_t uploadedB
   const FrameStatistics& frame = engine.statistics();
   const GeometryStatistics geometry = engine.geometryStatistics();
   const PageCacheStatistics& pages = engine.pageCacheStatistics();
-  return {.frameMs = frameMs, .prepareMs = frame.prepareMs, .renderMs = frame.renderMs,
-          .visibilityMs = geometry.visibilityMs, .subdivisionMs = geometry.subdivisionMs,
-          .rasterisationMs = geometry.rasterisationMs, .patches = geometry.patches, .vertices = geometry.vertices,
-          .triangles = geometry.triangles, .pagesResident = pages.resident, .pagesWanted = pages.wanted,
-          .pageFaults = pages.loading, .pagesUploaded = pages.uploaded,
-          .uploadedThisFrame = pages.uploaded - uploadedBefore, .gpuBytes = pages.gpuBytes,
+  return {.frameMs = frameMs,
+          .prepareMs = frame.prepareMs,
+          .renderMs = frame.renderMs,
+          .visibilityMs = geometry.visibilityMs,
+          .subdivisionMs = geometry.subdivisionMs,
+          .rasterisationMs = geometry.rasterisationMs,
+          .patches = geometry.patches,
+          .vertices = geometry.vertices,
+          .triangles = geometry.triangles,
+          .pagesResident = pages.resident,
+          .pagesWanted = pages.wanted,
+          .pageFaults = pages.loading,
+          .pagesUploaded = pages.uploaded,
+          .uploadedThisFrame = pages.uploaded - uploadedBefore,
+          .gpuBytes = pages.gpuBytes,
           .processBytes = processResidentBytes()};
 }
 

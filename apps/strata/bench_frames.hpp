@@ -28,10 +28,10 @@ struct BenchFrame {
   // Page faults: pages the frame wanted that were not resident, queued for or being read by the loaders
   // when it ended (PageCacheStatistics::loading); a faulting page stays one until it is uploaded.
   int pageFaults = 0;
-  std::uint64_t pagesUploaded = 0;      // since the pipeline loaded
+  std::uint64_t pagesUploaded = 0;  // since the pipeline loaded
   std::uint64_t uploadedThisFrame = 0;
-  std::uint64_t gpuBytes = 0;       // the page cache's atlases, index and upload buffers
-  std::uint64_t processBytes = 0;   // resident set of the process (VmRSS)
+  std::uint64_t gpuBytes = 0;      // the page cache's atlases, index and upload buffers
+  std::uint64_t processBytes = 0;  // resident set of the process (VmRSS)
 };
 
 // Renders `frames` frames evenly spaced in time along `path` as a viewer draws them (Engine::render: pages

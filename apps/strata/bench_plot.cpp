@@ -12,9 +12,9 @@ namespace strata::cli {
 namespace {
 
 constexpr double kWidth = 960, kHeight = 650;
-constexpr double kLeft = 80, kRight = 880;             // the panels' x extent
-constexpr double kTimeTop = 80, kTimeBottom = 380;     // frame time panel; legends and title above
-constexpr double kDataTop = 450, kDataBottom = 600;    // pages and vertices panel
+constexpr double kLeft = 80, kRight = 880;           // the panels' x extent
+constexpr double kTimeTop = 80, kTimeBottom = 380;   // frame time panel; legends and title above
+constexpr double kDataTop = 450, kDataBottom = 600;  // pages and vertices panel
 constexpr const char* kRunColours[] = {"#000000", "#d62728"};
 constexpr const char* kPhaseColours[] = {"#1f77b4", "#2ca02c", "#ff7f0e"};
 
@@ -28,10 +28,12 @@ std::string number(double value) {
 std::string escaped(const std::string& words) {
   std::string result;
   for (char c : words) {
-    if (c == '&') result += "&amp;";
-    else if (c == '<') result += "&lt;";
-    else if (c == '>') result += "&gt;";
-    else result += c;
+    switch (c) {
+      case '&': result += "&amp;"; break;
+      case '<': result += "&lt;"; break;
+      case '>': result += "&gt;"; break;
+      default: result += c;
+    }
   }
   return result;
 }
@@ -54,8 +56,8 @@ std::string text(double x, double y, const std::string& words, const std::string
 }
 
 std::string gridLine(double y) {
-  return "<line x1=\"" + number(kLeft) + "\" y1=\"" + number(y) + "\" x2=\"" + number(kRight) + "\" y2=\"" +
-         number(y) + "\" stroke=\"#cccccc\"/>\n";
+  return "<line x1=\"" + number(kLeft) + "\" y1=\"" + number(y) + "\" x2=\"" + number(kRight) + "\" y2=\"" + number(y) +
+         "\" stroke=\"#cccccc\"/>\n";
 }
 
 // Gridlines at the top, middle and bottom of the frame time axis, labelled in ms and Hz.
@@ -74,9 +76,9 @@ std::string frameTimeAxis(double top) {
 std::string frameTimePanel(const std::vector<PlotRun>& runs, double top) {
   std::string svg = "<g id=\"frame-time\">\n" + frameTimeAxis(top);
   const PlotRun& first = runs.front();
-  const std::function<double(const AveragedPoint&)> phases[] = {
-      [](const AveragedPoint& p) { return p.prepareMs; }, [](const AveragedPoint& p) { return p.renderMs; },
-      [](const AveragedPoint& p) { return p.visibilityMs; }};
+  const std::function<double(const AveragedPoint&)> phases[] = {[](const AveragedPoint& p) { return p.prepareMs; },
+                                                                [](const AveragedPoint& p) { return p.renderMs; },
+                                                                [](const AveragedPoint& p) { return p.visibilityMs; }};
   const char* phaseNames[] = {"prepare (CPU)", "render (CPU, submit)", "visibility (CPU)"};
   for (int i = 0; i < 3; ++i) {
     svg += polyline(first, phases[i], top, kTimeTop, kTimeBottom,
@@ -84,8 +86,9 @@ std::string frameTimePanel(const std::vector<PlotRun>& runs, double top) {
     svg += text(kLeft + 10 + 170 * i, kTimeTop - 10, phaseNames[i], std::string("fill=\"") + kPhaseColours[i] + "\"");
   }
   for (std::size_t r = 0; r < runs.size() && r < 2; ++r) {
-    svg += polyline(runs[r], [](const AveragedPoint& p) { return p.frameMs; }, top, kTimeTop, kTimeBottom,
-                    std::string("stroke=\"") + kRunColours[r] + "\" stroke-width=\"2\"");
+    svg += polyline(
+        runs[r], [](const AveragedPoint& p) { return p.frameMs; }, top, kTimeTop, kTimeBottom,
+        std::string("stroke=\"") + kRunColours[r] + "\" stroke-width=\"2\"");
     svg += text(kLeft + 10, kTimeTop - 26 - 16 * double(r), "frame: " + escaped(runs[r].name),
                 std::string("fill=\"") + kRunColours[r] + "\"");
   }
@@ -95,12 +98,15 @@ std::string frameTimePanel(const std::vector<PlotRun>& runs, double top) {
 // Pages uploaded per frame and vertices, each scaled to its own largest value over the first run.
 std::string dataPanel(const PlotRun& run) {
   double pages = 1.0, vertices = 1.0;
-  for (const AveragedPoint& p : run.points) pages = std::max(pages, p.pagesUploaded), vertices = std::max(vertices, p.vertices);
+  for (const AveragedPoint& p : run.points)
+    pages = std::max(pages, p.pagesUploaded), vertices = std::max(vertices, p.vertices);
   std::string svg = "<g id=\"pages-and-vertices\">\n" + gridLine(kDataTop) + gridLine(kDataBottom);
-  svg += polyline(run, [](const AveragedPoint& p) { return p.pagesUploaded; }, pages, kDataTop, kDataBottom,
-                  "stroke=\"#9467bd\" stroke-width=\"1.5\"");
-  svg += polyline(run, [](const AveragedPoint& p) { return p.vertices; }, vertices, kDataTop, kDataBottom,
-                  "stroke=\"#8c564b\" stroke-width=\"1.5\"");
+  svg += polyline(
+      run, [](const AveragedPoint& p) { return p.pagesUploaded; }, pages, kDataTop, kDataBottom,
+      "stroke=\"#9467bd\" stroke-width=\"1.5\"");
+  svg += polyline(
+      run, [](const AveragedPoint& p) { return p.vertices; }, vertices, kDataTop, kDataBottom,
+      "stroke=\"#8c564b\" stroke-width=\"1.5\"");
   svg += text(kLeft - 6, kDataTop + 4, number(pages), "text-anchor=\"end\" fill=\"#9467bd\"");
   svg += text(kRight + 6, kDataTop + 4, number(vertices / 1000.0) + "k", "fill=\"#8c564b\"");
   svg += text(kLeft + 10, kDataTop - 8, "pages uploaded per frame", "fill=\"#9467bd\"");
@@ -135,11 +141,14 @@ void writeBenchPlot(const std::filesystem::path& file, const std::vector<PlotRun
       << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kWidth << "\" height=\"" << kHeight
       << "\" font-family=\"sans-serif\" font-size=\"12\">\n"
       << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-      << text(kLeft, 18, "strata bench: " + std::to_string(runs.front().frames) + " frames, averaged over " +
-                             std::to_string(averagedOver), "font-size=\"14\"")
+      << text(kLeft, 18,
+              "strata bench: " + std::to_string(runs.front().frames) + " frames, averaged over " +
+                  std::to_string(averagedOver),
+              "font-size=\"14\"")
       << frameTimePanel(runs, frameTimeAxisTop(slowest)) << dataPanel(runs.front()) << frameAxis(runs.front().frames)
       << "</svg>\n";
-  if (!out) throw Error(SourceLocation{file.string()}, "cannot write the benchmark's plot", "give --plot a writable path");
+  if (!out)
+    throw Error(SourceLocation{file.string()}, "cannot write the benchmark's plot", "give --plot a writable path");
 }
 
 }  // namespace strata::cli

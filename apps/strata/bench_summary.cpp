@@ -16,8 +16,8 @@ FrameTimeSummary summarise(const std::vector<BenchFrame>& frames) {
   const std::size_t n = ms.size();
   const double median = n % 2 == 1 ? ms[n / 2] : 0.5 * (ms[n / 2 - 1] + ms[n / 2]);
   const std::size_t p95Rank = std::size_t(std::ceil(0.95 * double(n)));
-  return {.mean = sum / double(n), .median = median, .p95 = ms[std::max<std::size_t>(p95Rank, 1) - 1],
-          .max = ms.back()};
+  return {
+      .mean = sum / double(n), .median = median, .p95 = ms[std::max<std::size_t>(p95Rank, 1) - 1], .max = ms.back()};
 }
 
 std::vector<AveragedPoint> averageFrames(const std::vector<BenchFrame>& frames, int over) {

@@ -57,8 +57,8 @@ int countElements(const CPLXMLNode* node, const std::string& name) {
 }
 
 TEST_F(StrataCommandTest, BenchWritesARowPerFrameAndAPlot) {
-  const CommandResult result = run({"bench", "pipelines/bench-flyin.yaml", "--frames", std::to_string(kFrames), "--size",
-                                    "96x54", "--average", "4", "-o", file("bench/flyin.csv").string()});
+  const CommandResult result = run({"bench", "pipelines/bench-flyin.yaml", "--frames", std::to_string(kFrames),
+                                    "--size", "96x54", "--average", "4", "-o", file("bench/flyin.csv").string()});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "frame ms mean")) << result.out;
   const auto rows = readCsv(file("bench/flyin.csv"));
@@ -93,8 +93,8 @@ TEST_F(StrataCommandTest, BenchWritesARowPerFrameAndAPlot) {
 
 TEST_F(StrataCommandTest, BenchComparesTwoPipelinesOnOnePath) {
   const CommandResult result =
-      run({"bench", "pipelines/procedural.yaml", "--path", "pipelines/paths/flyin.yaml", "--compare", "pipelines/pgm.yaml",
-           "--frames", "4", "--size", "64x36", "-o", file("a.csv").string()});
+      run({"bench", "pipelines/procedural.yaml", "--path", "pipelines/paths/flyin.yaml", "--compare",
+           "pipelines/pgm.yaml", "--frames", "4", "--size", "64x36", "-o", file("a.csv").string()});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "ratio (second / first)")) << result.out;
   EXPECT_TRUE(contains(result.out, "second: pipelines/pgm.yaml")) << result.out;
