@@ -10,5 +10,6 @@ void addViewCommand(CLI::App& app, int& exitCode);
 void addPluginsCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addTileCommand(CLI::App& app, int& exitCode);
+void addBenchCommand(CLI::App& app, int& exitCode);
 
 }  // namespace strata::cli

@@ -1,4 +1,4 @@
-// strata: render pipelines headless, view them in a window, list plugins, describe the machine.
+// strata: render pipelines headless, view them in a window, time them, list plugins, describe the machine.
 #include <CLI/CLI.hpp>
 
 #include <strata/version.hpp>
@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   strata::cli::addViewCommand(app, exitCode);
   strata::cli::addPluginsCommand(app, exitCode);
   strata::cli::addTileCommand(app, exitCode);
+  strata::cli::addBenchCommand(app, exitCode);
   strata::cli::addInfoCommand(app, exitCode);
   try {
     app.parse(argc, argv);

@@ -309,7 +309,7 @@ TEST_F(StrataCommandTest, CommandLineMistakesExitWithOne) {
 TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
   const CommandResult result = run({"--help"});
   EXPECT_EQ(result.exitCode, 0) << result.err;
-  for (const char* command : {"render", "view", "plugins", "info"})
+  for (const char* command : {"render", "view", "bench", "plugins", "info"})
     EXPECT_TRUE(contains(result.out, command)) << "no " << command << " in:\n" << result.out;
 }
 
