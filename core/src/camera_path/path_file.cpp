@@ -10,12 +10,9 @@
 //     duration: 10                         # s
 //
 // Every mistake is a strata::Error with the file, line and column and a fix, as in pipelines.
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "camera_path/path_sections.hpp"
+#include "pipeline/text_file.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
 
@@ -66,21 +63,6 @@ CameraPath readBody(const YAML::Node& root, const SourceMap& source, const Body&
                      std::string("add a `keyframes:` list of cameras or a `fly_to:` map; ") + kExample);
 }
 
-std::string readFile(const std::filesystem::path& file) {
-  const SourceLocation where{file.string()};
-  std::error_code error;
-  if (!std::filesystem::exists(file, error))
-    throw Error(where, "camera path file not found", "check the path; pipelines/paths/ holds sample paths");
-  if (std::filesystem::is_directory(file, error))
-    throw Error(where, "this is a directory, not a camera path file", "give the path of a path .yaml file");
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream)
-    throw Error(where, std::string("cannot read the camera path file: ") + std::strerror(errno),
-                "check the file's permissions");
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
 
 }  // namespace
 
@@ -92,7 +74,7 @@ CameraPath parseCameraPath(const std::string& text, const std::filesystem::path&
 }
 
 CameraPath readCameraPath(const std::filesystem::path& file, const Body& body) {
-  return parseCameraPath(readFile(file), file, body);
+  return parseCameraPath(loader::readTextFile(file, "camera path", "pipelines/paths/ holds sample paths"), file, body);
 }
 
 }  // namespace strata

@@ -15,10 +15,6 @@
 // apply the --set overrides to the tree (overrides.hpp); check the top-level keys; read the version,
 // body and camera; read each node on its own; check how the nodes connect and order them
 // (graph_checks.hpp). In every map a key may appear only once, and an unknown key gets a did-you-mean.
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <strata/pipeline.hpp>
@@ -27,6 +23,7 @@
 #include "pipeline/graph_checks.hpp"
 #include "pipeline/overrides.hpp"
 #include "pipeline/scene_parsing.hpp"
+#include "pipeline/text_file.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
 
@@ -106,21 +103,6 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std
   return pipeline;
 }
 
-std::string readFile(const std::filesystem::path& file) {
-  const SourceLocation where{file.string()};
-  std::error_code error;
-  if (!std::filesystem::exists(file, error))
-    throw Error(where, "pipeline file not found", "check the path; pipelines/ holds ready-made pipelines");
-  if (std::filesystem::is_directory(file, error))
-    throw Error(where, "this is a directory, not a pipeline file", "give the path of a pipeline .yaml file");
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream)
-    throw Error(where, std::string("cannot read the pipeline file: ") + std::strerror(errno),
-                "check the file's permissions");
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
 
 }  // namespace
 
@@ -135,7 +117,7 @@ Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fil
 
 Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                       const PluginRegistry& registry) {
-  return parsePipeline(readFile(file), file, overrides, registry);
+  return parsePipeline(loader::readTextFile(file, "pipeline", "pipelines/ holds ready-made pipelines"), file, overrides, registry);
 }
 
 const NodeDescription* Pipeline::find(const std::string& id) const {

@@ -1,0 +1,12 @@
+#pragma once
+#include <filesystem>
+#include <string>
+
+namespace strata::loader {
+
+// The whole of `file` as text, for the loaders of pipelines and camera paths. Throws strata::Error at the
+// file when it is missing, a directory or unreadable, calling it a `what` file ("pipeline", "camera path")
+// and, when it is missing, saying where `samples` are.
+std::string readTextFile(const std::filesystem::path& file, const std::string& what, const std::string& samples);
+
+}  // namespace strata::loader
