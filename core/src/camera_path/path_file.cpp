@@ -25,16 +25,6 @@ constexpr std::int64_t kFormatVersion = 1;
 const std::vector<std::string> kTopLevelKeys{"strata-path", "keyframes", "fly_to"};
 constexpr const char* kExample = "see pipelines/paths/flyin.yaml";
 
-YAML::Node parseYaml(const std::string& text, const std::string& file) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& exception) {
-    throw Error(SourceLocation{file, exception.mark.line + 1, exception.mark.column + 1},
-                "invalid YAML: " + exception.msg,
-                "correct the YAML near this line and column (check indentation, ':' after keys and closing brackets)");
-  }
-}
-
 void requireVersion(const YAML::Node& root, const SourceMap& source) {
   if (!root.IsMap())
     throw source.error(root, {}, root.IsNull() ? "the path file is empty" : "a path must be a map of keys",
@@ -68,7 +58,7 @@ CameraPath readBody(const YAML::Node& root, const SourceMap& source, const Body&
 
 CameraPath parseCameraPath(const std::string& text, const std::filesystem::path& fileName, const Body& body) {
   const SourceMap source(fileName.string());
-  const YAML::Node root = parseYaml(text, fileName.string());
+  const YAML::Node root = loader::parseYamlText(text, fileName.string());
   requireVersion(root, source);
   return readBody(root, source, body);
 }

@@ -35,17 +35,6 @@ using loader::SourceMap;
 constexpr std::int64_t kFormatVersion = 1;
 const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "date", "colour", "nodes"};
 
-YAML::Node parseYaml(const std::string& text, const std::string& file) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& exception) {
-    // yaml-cpp counts from 0; an exception without a mark has -1, which becomes "no line".
-    throw Error(SourceLocation{file, exception.mark.line + 1, exception.mark.column + 1},
-                "invalid YAML: " + exception.msg,
-                "correct the YAML near this line and column (check indentation, ':' after keys and closing brackets)");
-  }
-}
-
 void requireRootMap(const YAML::Node& root, const SourceMap& source) {
   if (root.IsMap()) return;
   const std::string problem =
@@ -109,7 +98,7 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std
 Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
                        const std::vector<std::string>& overrides, const PluginRegistry& registry) {
   SourceMap source(fileName.string());
-  YAML::Node root = parseYaml(text, fileName.string());
+  YAML::Node root = loader::parseYamlText(text, fileName.string());
   requireRootMap(root, source);
   loader::applyOverrides(root, overrides, source);
   return readDocument(root, source, fileName, registry);

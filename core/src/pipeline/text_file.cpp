@@ -23,4 +23,15 @@ std::string readTextFile(const std::filesystem::path& file, const std::string& w
   return text.str();
 }
 
+YAML::Node parseYamlText(const std::string& text, const std::string& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& exception) {
+    // yaml-cpp counts from 0; an exception without a mark has -1, which becomes "no line".
+    throw Error(SourceLocation{file, exception.mark.line + 1, exception.mark.column + 1},
+                "invalid YAML: " + exception.msg,
+                "correct the YAML near this line and column (check indentation, ':' after keys and closing brackets)");
+  }
+}
+
 }  // namespace strata::loader
