@@ -76,6 +76,7 @@ TEST_F(LiveParameters, TheLightMovesInTheNextFrameWithNothingRebuilt) {
   EXPECT_EQ(output(), made) << "the same nodes draw it";
   EXPECT_GT(meanDifference(before, after, "the light to the south-east"), 1.0);
   EXPECT_EQ(engine_->pipeline().find("shaded")->parameters.real("azimuth"), 135.0);
+  directory_.write("live.yaml", "strata: 1\nnodes: {broken\n");  // a live change reads no file
   EXPECT_TRUE(engine_->set("nodes.shaded.azimuth=315"));
   EXPECT_EQ(meanDifference(before, frame()), 0.0) << "undone, the first frame again";
 }

@@ -88,19 +88,15 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
 
 bool Engine::set(const std::string& override) {
   if (!impl_->pipeline) throw std::logic_error("Engine::set() before a pipeline was loaded");
-  std::vector<std::string> overrides = impl_->overrides;
-  overrides.push_back(override);
-  Pipeline changed = loadPipeline(impl_->pipeline->file, overrides, impl_->registry);
-  const auto id = liveParameterNode(override, changed, impl_->registry);
-  // Live only when the override's parameter is all that changed (the file may have been edited since).
-  NodeDescription* node = id ? findNode(*impl_->pipeline, *id) : nullptr;
-  if (node && node->parameters.differences(changed.find(*id)->parameters).size() <= 1) {
-    impl_->graph->update(*id, changed.find(*id)->parameters);
-    node->parameters = changed.find(*id)->parameters;
-    impl_->overrides = overrides;
+  if (const std::optional<LiveChange> change = liveChange(override, *impl_->pipeline, impl_->registry)) {
+    impl_->graph->update(change->node, change->parameters);
+    findNode(*impl_->pipeline, change->node)->parameters = change->parameters;
+    impl_->overrides.push_back(override);
     return true;
   }
-  reloadWith(changed, overrides);
+  std::vector<std::string> overrides = impl_->overrides;
+  overrides.push_back(override);
+  reloadWith(loadPipeline(impl_->pipeline->file, overrides, impl_->registry), overrides);
   return false;
 }
 

@@ -46,15 +46,6 @@ const ParameterValue& ParameterSet::value(const std::string& name) const { retur
 
 const SourceLocation& ParameterSet::where(const std::string& name) const { return entry(name).where; }
 
-std::vector<std::string> ParameterSet::differences(const ParameterSet& other) const {
-  std::vector<std::string> names;
-  for (const auto& [name, held] : entries_)
-    if (!other.has(name) || other.value(name) != held.value) names.push_back(name);
-  for (const auto& [name, held] : other.entries_)
-    if (!has(name)) names.push_back(name);
-  return names;
-}
-
 const ParameterSet::Entry& ParameterSet::entry(const std::string& name) const {
   auto found = entries_.find(name);
   if (found == entries_.end()) throw std::logic_error("no parameter '" + name + "' in this set");

@@ -50,8 +50,6 @@ class ParameterSet {
   const ParameterValue& value(const std::string& name) const;
   // Where the value came from (the YAML scalar, a --set override, or the node for defaults).
   const SourceLocation& where(const std::string& name) const;
-  // The names of the parameters whose values differ from `other`'s (or that only one of the two has).
-  std::vector<std::string> differences(const ParameterSet& other) const;
 
  private:
   struct Entry {
