@@ -1,6 +1,7 @@
 #include "gdal_page_source.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include "quiet_gdal_errors.hpp"
@@ -28,10 +29,10 @@ PageFormat GdalPageSource::format() const { return pageFormatOf(kind_); }
 // A level texel covers 2^level raster texels; the raster's edge cuts the last row and column short,
 // and GDAL spreads what remains over them (under one level texel of shift, at the far edges only).
 void GdalPageSource::read(const LevelWindow& window, std::span<std::byte> texels) const {
-  const int scale = 1 << window.level;
-  const int x = window.x * scale, y = window.y * scale;
-  const RasterWindow raster{x, y, std::min(window.width * scale, pyramid_.width() - x),
-                            std::min(window.height * scale, pyramid_.height() - y)};
+  const std::int64_t scale = std::int64_t{1} << window.level;  // in 64 bits: a page of level 22 spans 2^31 texels
+  const int x = int(window.x * scale), y = int(window.y * scale);
+  const RasterWindow raster{x, y, int(std::min(window.width * scale, std::int64_t{pyramid_.width()} - x)),
+                            int(std::min(window.height * scale, std::int64_t{pyramid_.height()} - y))};
   const Borrowed dataset(*this);
   const QuietGdalErrors quiet;
   readWindow(*dataset.handle, kind_, raster, window.width, window.height, texels);

@@ -3,6 +3,7 @@
 #include <ogr_spatialref.h>
 
 #include <cmath>
+#include <cstdint>
 
 #include <strata/crs.hpp>
 
@@ -50,7 +51,7 @@ std::array<double, 6> geotransformOf(GDALDataset& dataset, const Projection& pro
                   "warp it to a north-up grid: gdalwarp in.tif out.tif (or strata tile)");
     return t;
   }
-  if (geographic && dataset.GetRasterXSize() == 2 * dataset.GetRasterYSize())
+  if (geographic && dataset.GetRasterXSize() == 2 * std::int64_t{dataset.GetRasterYSize()})
     return geographicGeotransform({}, dataset.GetRasterXSize(), dataset.GetRasterYSize());
   throw Error(options.fileWhere,
               "'" + describe(dataset) + "' has no geotransform" +

@@ -10,6 +10,8 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include "raster_size.hpp"
+
 namespace strata::gdal {
 namespace {
 
@@ -147,6 +149,7 @@ void checkRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& whe
                 "point `path` at a raster (gdalinfo FILE lists its bands)");
   for (int band = 1; band <= dataset.GetRasterCount(); ++band) checkNodata(*dataset.GetRasterBand(band), where);
   if (pageFormatOf(kind) == PageFormat::Colour) checkColourBands(dataset, where);
+  checkPageableSize(dataset, where);
 }
 
 void readWindow(GDALDataset& dataset, LayerKind kind, const RasterWindow& window, int width, int height,

@@ -11,8 +11,8 @@
 namespace strata::gdal {
 
 // Checks, when the source opens, that `dataset` can be read as `kind` (colour kinds: 1 to 4 bands of 8
-// or 16 bits, in any colour space; other kinds: band 1, any numeric type) and that its nodata values fit
-// its bands. Throws strata::Error at `where`.
+// or 16 bits, in any colour space; other kinds: band 1, any numeric type), that its nodata values fit
+// its bands, and that its pages can be read (checkPageableSize). Throws strata::Error at `where`.
 void checkRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where);
 
 // The page format a layer of `kind` is stored in.
