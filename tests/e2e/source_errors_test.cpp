@@ -4,7 +4,7 @@
 // reported once, with the file and a fix, and the coarser level stands in for it (or the layer is masked
 // there when there is none). Never a crash or a silent picture. A vector file is read as a mask of its
 // polygons; one that has none, no layer of the name given, or no CRS, or one not asked for as a mask, is an
-// error naming the file and what to do.
+// error naming the file and what to do; so is a raster too large to page.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -141,6 +141,22 @@ TEST_F(SourceErrors, AVectorFileWithoutACrsAsksForOne) {
 TEST_F(SourceErrors, AVectorFileNotReadAsAMaskAsksForOne) {
   const fs::path triangle = write("triangle.geojson", geojson(kTriangle));
   expectRefused(renderMask(triangle, ""), {"triangle.geojson", "is a vector file", "kind: mask"});
+}
+
+// Absurd sizes in a few hundred bytes of TIFF header, found by fuzzing (tests/fuzz/regressions): refused at
+// load rather than read for minutes or into a gigabyte.
+fs::path fuzzRegression(const std::string& name) {
+  return fs::path(STRATA_SOURCE_DIR) / "tests/fuzz/regressions/raster_page" / name;
+}
+
+TEST_F(SourceErrors, ARasterWhoseCoarsestPageWouldAverageBillionsOfTexelsIsRefused) {
+  expectRefused(renderRaster(fuzzRegression("slow-100000-square-without-overviews.tif")),
+                {"100000x100000", "more than 2^30 texels", "strata tile", "gdaladdo"});
+}
+
+TEST_F(SourceErrors, ARasterStoredInGiantBlocksIsRefused) {
+  expectRefused(renderRaster(fuzzRegression("oom-interleaved-giant-block.tif")),
+                {"32x32784", "blocks of 1268 MiB", "strata tile", "TILED=YES"});
 }
 
 }  // namespace
