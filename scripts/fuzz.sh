@@ -11,7 +11,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STRATA_FUZZ_BUILD:-$root/build-fuzz}
 [[ -d $root/tests/fuzz/corpus/$name ]] || { echo "fuzz.sh: no target '$name' (pipeline, raster_page)" >&2; exit 2; }
 
-CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DSTRATA_FUZZ=ON -DSTRATA_SANITIZE=ON -DSTRATA_BUILD_TESTS=OFF \
+CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DSTRATA_FUZZ=ON -DSTRATA_SANITIZERS=address,undefined -DSTRATA_BUILD_TESTS=OFF \
   -DSTRATA_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j "$(nproc)" --target "strata_fuzz_$name"
 

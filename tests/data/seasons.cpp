@@ -69,7 +69,7 @@ void writeSeasons(const std::filesystem::path& directory) {
                        GDT_Byte, 4, nullptr, 4, std::int64_t(width) * 4, 1) != CE_None)
     throw std::runtime_error("cannot read '" + global.string() + "'");
   for (int month = 1; month <= 12; ++month) {
-    char name[32];
+    char name[48];  // room for any int, as GCC checks under -O1
     std::snprintf(name, sizeof name, "season-2004%02d-color.tif", month);
     writeMonth(*source, rgba, width, height, month, directory / name);
   }

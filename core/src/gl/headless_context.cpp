@@ -8,6 +8,8 @@
 
 #include <strata/gl/context.hpp>
 
+#include "gl/resident_libraries.hpp"
+
 namespace strata {
 namespace {
 
@@ -84,6 +86,7 @@ std::unique_ptr<GlContext> tryDisplay(EGLDisplay display, const std::string& pla
   auto result = std::make_unique<HeadlessContext>(display, context,
                                                   platform + " (" + (vendor ? vendor : "?") + ")");
   result->makeCurrent();
+  keepLoadedLibrariesResident();
   return result;
 }
 

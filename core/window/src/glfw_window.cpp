@@ -5,6 +5,8 @@
 
 #include <strata/window/glfw_window.hpp>
 
+#include "gl/resident_libraries.hpp"
+
 namespace strata {
 namespace {
 
@@ -52,6 +54,7 @@ GlfwWindow::GlfwWindow(int width, int height, const std::string& title, bool deb
   glfwSetKeyCallback(window_, onKey);
   makeCurrent();
   glfwSwapInterval(1);
+  keepLoadedLibrariesResident();
 }
 
 GlfwWindow::~GlfwWindow() {

@@ -1,0 +1,13 @@
+#pragma once
+
+namespace strata {
+
+// In AddressSanitizer builds only (docs/robustness.md, "Sanitizers"): keeps every shared library loaded
+// now, the GL driver's among them, loaded until the process ends. Mesa's EGL and GLX vendor libraries and
+// its DRI driver leave allocations behind when they are unloaded (at eglTerminate, or at exit), which
+// LeakSanitizer then reports as leaks of an unknown module that no suppression can name. Resident, what
+// they hold stays reachable, and a real leak's stack keeps its library's name. Call once a GL context
+// exists. Does nothing in other builds.
+void keepLoadedLibrariesResident();
+
+}  // namespace strata
