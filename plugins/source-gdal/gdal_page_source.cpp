@@ -33,9 +33,14 @@ void GdalPageSource::read(const LevelWindow& window, std::span<std::byte> texels
   const int x = int(window.x * scale), y = int(window.y * scale);
   const RasterWindow raster{x, y, int(std::min(window.width * scale, std::int64_t{pyramid_.width()} - x)),
                             int(std::min(window.height * scale, std::int64_t{pyramid_.height()} - y))};
-  const Borrowed dataset(*this);
-  const QuietGdalErrors quiet;
+  Borrowed dataset(*this);
+  const RecordedGdalErrors recorded;
   readWindow(*dataset.handle, kind_, raster, window.width, window.height, texels);
+  if (!recorded.first()) return;
+  // Damaged data decoded with a warning: the dataset's block cache now holds what was decoded, which a
+  // second read would return without the warning, so the dataset is closed rather than given back.
+  dataset.handle.reset();
+  throw std::runtime_error(*recorded.first());
 }
 
 std::string GdalPageSource::toSceneLinearGlsl(const std::string& functionName) const {
@@ -44,7 +49,9 @@ std::string GdalPageSource::toSceneLinearGlsl(const std::string& functionName) c
 
 GdalPageSource::Borrowed::Borrowed(const GdalPageSource& source) : owner(source), handle(source.borrow()) {}
 
-GdalPageSource::Borrowed::~Borrowed() { owner.giveBack(std::move(handle)); }
+GdalPageSource::Borrowed::~Borrowed() {
+  if (handle) owner.giveBack(std::move(handle));
+}
 
 std::unique_ptr<GDALDataset> GdalPageSource::borrow() const {
   {

@@ -2,8 +2,10 @@
 
 #include <ogr_spatialref.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 #include <strata/crs.hpp>
 
@@ -19,8 +21,32 @@ bool isGeographic(const Projection& projection) {
 std::unique_ptr<Projection> projectionOf(GDALDataset& dataset, const PluginRegistry& plugins,
                                          const GeoreferenceOptions& options) {
   if (!options.crs.empty()) return projectionOfCrs(plugins, options.crs, options.crsWhere);
-  if (const OGRSpatialReference* crs = dataset.GetSpatialRef()) return projectionOfCrs(plugins, *crs, options.fileWhere);
+  if (const OGRSpatialReference* crs = dataset.GetSpatialRef()) {
+    try {
+      return projectionOfCrs(plugins, *crs, options.fileWhere);
+    } catch (const Error& error) {
+      throw Error(options.fileWhere, "'" + describe(dataset) + "': " + error.problem(), error.fix());
+    }
+  }
   return geographicProjection(plugins);
+}
+
+// A raster without a CRS is read as longitude/latitude; a geotransform reaching beyond degrees says it is
+// something else (metres of a projection), which would be drawn as garbage.
+void refuseNonDegrees(GDALDataset& dataset, const std::array<double, 6>& t, const SourceLocation& where) {
+  const double x0 = t[0], x1 = t[0] + t[1] * dataset.GetRasterXSize();
+  const double y0 = t[3], y1 = t[3] + t[5] * dataset.GetRasterYSize();
+  const double slack = 1e-6;  // degrees: rounding in geotransforms written as text
+  if (std::min(x0, x1) >= -180.0 - slack && std::max(x0, x1) <= 360.0 + slack && std::min(y0, y1) >= -90.0 - slack &&
+      std::max(y0, y1) <= 90.0 + slack)
+    return;
+  std::array<char, 160> span{};
+  std::snprintf(span.data(), span.size(), "x %g to %g, y %g to %g", std::min(x0, x1), std::max(x0, x1),
+                std::min(y0, y1), std::max(y0, y1));
+  throw Error(where,
+              "'" + describe(dataset) + "' has no CRS, and its geotransform spans " + span.data() +
+                  ": not degrees of longitude and latitude",
+              "assign its CRS: gdal_edit.py -a_srs CRS " + describe(dataset) + ", or give the source's `projection`");
 }
 
 GeographicExtent checkedExtent(const std::vector<double>& v, const SourceLocation& where) {
@@ -66,6 +92,7 @@ RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& pl
                                   const GeoreferenceOptions& options) {
   std::unique_ptr<Projection> projection = projectionOf(dataset, plugins, options);
   const std::array<double, 6> geotransform = geotransformOf(dataset, *projection, options);
+  if (options.crs.empty() && !dataset.GetSpatialRef()) refuseNonDegrees(dataset, geotransform, options.fileWhere);
   return makeGeoreference(std::move(projection), geotransform, dataset.GetRasterXSize());
 }
 

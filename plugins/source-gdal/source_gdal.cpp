@@ -4,7 +4,9 @@
 #include <gdal_priv.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include <strata/paged_raster_layer.hpp>
@@ -38,6 +40,7 @@ class GdalSource : public Node {
     checkRaster(*dataset, kind_, where);
     if (kind_ != LayerKind::Color)
       if (const std::optional<ValueRange> raw = exactRawRange(*dataset)) layer_.setRawRange(*raw);
+    if (kind_ == LayerKind::Height) refuseHeightsNoTerrainHas(where);
     if (std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where)) {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
@@ -60,6 +63,8 @@ class GdalSource : public Node {
   // The raster at `path`, or the mask of its polygons where GDAL opens it only as a vector file.
   std::unique_ptr<GDALDataset> openDataset(const SourceLocation& where) {
     const std::string path = parameters_.path("path").string();
+    if (std::error_code error; std::filesystem::file_size(path, error) == 0 && !error)
+      throw Error(where, "'" + path + "' is empty (0 bytes)", "the file was not written out: copy or make it again");
     std::string rasterError;
     {
       const QuietGdalErrors quiet;  // a vector file is no raster: not worth a message of GDAL's own
@@ -100,6 +105,25 @@ class GdalSource : public Node {
                 "'" + parameters_.path("path").string() + "' is " + what + ", which says where its texels lie",
                 "remove `" + name + "`");
   }
+
+  // Heights beyond any body's relief are a fill value the file does not declare as nodata, or not metres;
+  // drawn, they would be spikes to the stars, and the generator's height range would have to take them in.
+  void refuseHeightsNoTerrainHas(const SourceLocation& where) const {
+    const std::optional<ValueRange> range = layer_.valueRange();
+    if (!range || (range->least >= -kMostRelief && range->greatest <= kMostRelief)) return;
+    std::array<char, 96> extremes{};
+    std::snprintf(extremes.data(), extremes.size(), "%g to %g m", range->least, range->greatest);
+    const std::string path = parameters_.path("path").string();
+    throw Error(where,
+                "'" + path + "' holds heights from " + extremes.data() +
+                    " (after scale and offset), beyond any terrain: a fill value not declared as nodata, or not metres",
+                "declare the fill value: gdal_edit.py -a_nodata VALUE " + path +
+                    ", or convert to metres with `scale` and `offset`");
+  }
+
+  // 1000 km: far above the relief mapped on any body, tens of kilometres (Mars' 30 km, Vesta's about 40),
+  // yet far below the fill values files use (-3.4e38, -1e20, 9.97e36).
+  static constexpr double kMostRelief = 1.0e6;
 
   static LayerKind kindOf(const NodeSetup& setup) {
     LayerKind kind = LayerKind::Color;

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -16,7 +17,9 @@ namespace strata::paging {
 // in for everything else) are never taken.
 class PageAtlas {
  public:
-  PageAtlas(PageFormat format, int capacity);
+  // The atlas of `capacity` slots, or of fewer, halving down to `fewest`, where the GL answers
+  // GL_OUT_OF_MEMORY; none where even `fewest` do not fit.
+  static std::unique_ptr<PageAtlas> largestFitting(PageFormat format, int capacity, int fewest);
   ~PageAtlas();
   PageAtlas(const PageAtlas&) = delete;
   PageAtlas& operator=(const PageAtlas&) = delete;
@@ -34,6 +37,8 @@ class PageAtlas {
   void touch(int slot, std::uint64_t frame) { slots_[std::size_t(slot)].lastUsed = frame; }
 
  private:
+  PageAtlas(PageFormat format, int capacity);  // texture() is 0 where the GL has no memory for it
+
   struct Slot {
     std::optional<LayerPage> page;
     std::uint64_t lastUsed = 0;

@@ -1,4 +1,6 @@
 #include <algorithm>
+#include <cstdio>
+#include <string>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -40,6 +42,7 @@ struct PageCache::Impl {
 
   void allocate();
   std::map<PageFormat, int> capacities() const;
+  std::unique_ptr<paging::PageAtlas> fittingAtlas(PageFormat format, int capacity, int coarsest) const;
   void loadCoarsest();
   std::vector<paging::WantedPage> select(const Body& body, const View& view);
   void request(const std::vector<paging::WantedPage>& wanted, std::uint64_t frame);
@@ -138,6 +141,31 @@ std::map<PageFormat, int> PageCache::Impl::capacities() const {
   return capacity;
 }
 
+namespace {
+
+std::string mebibytes(int pages) { return std::to_string((std::uint64_t(pages) * kPageBytes) >> 20) + " MiB"; }
+
+}  // namespace
+
+// The budget is what the cache asks for; a GL with less free memory gets a smaller atlas, down to the
+// coarsest levels, which must always fit. Fewer slots only mean more reloads as the view moves.
+std::unique_ptr<paging::PageAtlas> PageCache::Impl::fittingAtlas(PageFormat format, int capacity, int coarsest) const {
+  const std::string kind = format == PageFormat::Colour ? "colour" : "value";
+  std::unique_ptr<paging::PageAtlas> atlas = paging::PageAtlas::largestFitting(format, capacity, coarsest);
+  if (!atlas)
+    throw Error(settings.where,
+                "the GPU has no memory for even the " + std::to_string(coarsest) + " pages (" + mebibytes(coarsest) +
+                    ") of the coarsest levels of the " + kind + " layers",
+                "close what else uses the GPU, or give the layers coarser overviews (strata tile)");
+  if (atlas->capacity() < capacity)
+    std::fprintf(stderr,
+                 "strata: warning: the GPU has no memory for the page cache's %d %s pages (%s); it holds %d (%s), "
+                 "so pages are read again more often as the view moves\n",
+                 capacity, kind.c_str(), mebibytes(capacity).c_str(), atlas->capacity(),
+                 mebibytes(atlas->capacity()).c_str());
+  return atlas;
+}
+
 void PageCache::Impl::allocate() {
   for (const auto& [format, capacity] : capacities()) {
     int coarsest = 0;
@@ -149,7 +177,7 @@ void PageCache::Impl::allocate() {
                       std::to_string(capacity) + " pages for " + (format == PageFormat::Colour ? "colour" : "value") +
                       " layers, fewer than the " + std::to_string(coarsest) + " pages of their coarsest levels",
                   "raise `cache: {budget: MiB}` (each page takes " + std::to_string(kPageBytes >> 10) + " KiB)");
-    atlases[format] = std::make_unique<paging::PageAtlas>(format, capacity);
+    atlases[format] = fittingAtlas(format, capacity, coarsest);
   }
   index.allocate();
   uploads = std::make_unique<paging::PageUploads>(settings.uploadsPerFrame);

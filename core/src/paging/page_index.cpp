@@ -1,6 +1,8 @@
 #include "paging/page_index.hpp"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 namespace strata::paging {
 namespace {
@@ -9,6 +11,20 @@ constexpr std::uint32_t kLoaded = 0x80000000u;
 
 std::uint32_t reference(int level, int slot) { return kLoaded | (std::uint32_t(level) << 16) | std::uint32_t(slot); }
 
+// The index is one texture of kIndexWidth entries a row, as many rows as the GL allows, addressed by
+// 32-bit offsets.
+std::size_t mostEntries() {
+  GLint rows = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &rows);
+  return std::min<std::size_t>(std::size_t(rows) * PageIndex::kIndexWidth, 0xFFFFFFFFu);
+}
+
+std::size_t entriesOf(const PagePyramid& pyramid) {
+  std::size_t entries = std::size_t(pyramid.levels());
+  for (int level = 0; level < pyramid.levels(); ++level) entries += pyramid.pageCount(level);
+  return entries;
+}
+
 }  // namespace
 
 PageIndex::~PageIndex() {
@@ -16,6 +32,12 @@ PageIndex::~PageIndex() {
 }
 
 unsigned PageIndex::add(const PagePyramid& pyramid) {
+  const std::size_t most = mostEntries();
+  if (entriesOf(pyramid) > most - std::min(most, entries_.size()))
+    throw std::length_error("a raster of " + std::to_string(pyramid.width()) + "x" + std::to_string(pyramid.height()) +
+                            " texels has " + std::to_string(entriesOf(pyramid)) +
+                            " pages in all, more than the page index holds with the layers before it (" +
+                            std::to_string(most) + " on this GL); make a coarser copy: gdal_translate -outsize");
   const auto base = unsigned(entries_.size());
   std::size_t next = base + std::size_t(pyramid.levels());
   entries_.resize(next);

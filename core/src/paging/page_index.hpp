@@ -24,7 +24,8 @@ class PageIndex {
   PageIndex(const PageIndex&) = delete;
   PageIndex& operator=(const PageIndex&) = delete;
 
-  // Adds a layer's pyramid before allocate(); returns the index of its first entry.
+  // Adds a layer's pyramid before allocate(); returns the index of its first entry. Throws
+  // std::length_error for a pyramid with more pages than the index can still hold.
   unsigned add(const PagePyramid& pyramid);
   // Creates the texture for every layer added.
   void allocate();

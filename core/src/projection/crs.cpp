@@ -35,7 +35,9 @@ std::unique_ptr<Projection> projectionOfCrs(const PluginRegistry& plugins, const
                                             const SourceLocation& where) {
   const std::string proj = projStringOf(crs);
   if (proj.empty())
-    throw Error(where, std::string("the CRS '") + (crs.GetName() ? crs.GetName() : "?") + "' has no PROJ form",
+    throw Error(where,
+                std::string("the CRS '") + (crs.GetName() ? crs.GetName() : "?") +
+                    "' has no PROJ form: it is incomplete, or a kind PROJ cannot use",
                 kReprojectFix);
   const ProjParameters terms = ProjParameters::parse(proj);
   // The built-in forms produce metres (degrees for geographic CRSs) on east/north axes from Greenwich.

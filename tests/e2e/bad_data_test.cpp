@@ -1,0 +1,188 @@
+// End-to-end tests of rasters with bad values or bad structure (docs/robustness.md): each is a clear error
+// at load naming the file and a fix, or drawn with the bad texels masked, never a crash, a hang or a
+// picture of garbage. Damaged files of the formats read page by page (TIFF in source_errors_test.cpp, PNG
+// and JPEG here) draw with each unreadable page reported.
+#include <gtest/gtest.h>
+
+#include <gdal.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <string>
+
+#include "strata_command.hpp"
+#include "test_rasters.hpp"
+
+namespace strata::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::array<double, 4> kGlobe{-180.0, -90.0, 180.0, 90.0};
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// Heights of 1000 m with `bad` on every other 8x8 block of a 64x32 global raster.
+std::function<float(int, int)> blocksOf(float bad) {
+  return [bad](int column, int row) { return (column / 8 + row / 8) % 2 ? bad : 1000.0f; };
+}
+
+// A raster GDAL describes in a few lines of VRT: a band of zeros with no file behind it (and `band`, its
+// overviews for one).
+std::string vrt(const std::string& size, const std::string& srs, const std::string& geotransform,
+                const std::string& band = "") {
+  return "<VRTDataset " + size + ">" + (srs.empty() ? "" : "<SRS>" + srs + "</SRS>") +
+         (geotransform.empty() ? "" : "<GeoTransform>" + geotransform + "</GeoTransform>") +
+         "<VRTRasterBand dataType=\"Float32\" band=\"1\">" + band + "</VRTRasterBand></VRTDataset>";
+}
+
+const std::string kGlobalGeotransform = "-180, 5.625, 0, 90, 0, -5.625";
+
+class BadData : public StrataCommandTest {
+ protected:
+  CommandResult renderHeights(const fs::path& raster, const std::string& size = "32x18") const {
+    const fs::path pipeline = write("p.yaml", "strata: 1\nnodes:\n"
+                                              "  data: {type: source.gdal, path: " + raster.string() + ", kind: height}\n"
+                                              "  globe: {type: geometry.icosahedral, height: data, highest: 2000}\n"
+                                              "  frame: {type: output.image, geometry: globe}\n");
+    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string()});
+  }
+
+  CommandResult renderColour(const fs::path& raster, const std::string& size) const {
+    const fs::path pipeline = write("p.yaml", "strata: 1\nnodes:\n"
+                                              "  data: {type: source.gdal, path: " + raster.string() + "}\n"
+                                              "  globe: {type: geometry.icosahedral}\n"
+                                              "  frame: {type: output.image, geometry: globe, surface: [data]}\n");
+    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string()});
+  }
+
+  // Renders heights with `bad` in half the blocks, and the same with those blocks declared nodata: the
+  // bad values must be masked exactly as nodata is, with nothing said about them.
+  void expectMaskedAsNodata(float bad) const {
+    writeFloatRaster(file("bad.tif"), 64, 32, kGlobe, blocksOf(bad));
+    writeFloatRaster(file("nodata.tif"), 64, 32, kGlobe, blocksOf(-9999.0f), -9999.0);
+    const CommandResult badRun = renderHeights(file("bad.tif"), "96x54");
+    ASSERT_EQ(badRun.exitCode, 0) << badRun.err;
+    EXPECT_FALSE(contains(badRun.err, "warning")) << badRun.err;
+    const Image drawn = readImage(file("x.png"));
+    const CommandResult nodataRun = renderHeights(file("nodata.tif"), "96x54");
+    ASSERT_EQ(nodataRun.exitCode, 0) << nodataRun.err;
+    EXPECT_EQ(drawn.rgba, readImage(file("x.png")).rgba);
+  }
+
+  void expectRefused(const CommandResult& result, const std::vector<std::string>& parts) const {
+    EXPECT_EQ(result.exitCode, 1) << result.err;
+    EXPECT_TRUE(contains(result.err, "p.yaml:3")) << "the pipeline line of the source: " << result.err;
+    for (const std::string& part : parts) EXPECT_TRUE(contains(result.err, part)) << part << " in: " << result.err;
+  }
+};
+
+TEST_F(BadData, NaNHeightsAreMaskedAsNodataIs) { expectMaskedAsNodata(kNaN); }
+
+TEST_F(BadData, InfiniteHeightsAreMaskedAsNodataIsAndBoundNothing) { expectMaskedAsNodata(kInfinity); }
+
+TEST_F(BadData, HugeHeightsAreRefusedAsAnUndeclaredFillValue) {
+  writeFloatRaster(file("fill.tif"), 64, 32, kGlobe, blocksOf(-3.4e38f));
+  expectRefused(renderHeights(file("fill.tif")), {"fill.tif", "-3.4e+38", "gdal_edit.py -a_nodata"});
+}
+
+TEST_F(BadData, TinyHeightsDraw) {
+  writeFloatRaster(file("tiny.tif"), 64, 32, kGlobe, [](int column, int) { return 1e-38f * float(column % 3); });
+  const CommandResult result = renderHeights(file("tiny.tif"));
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+}
+
+TEST_F(BadData, AllNodataDrawsTheBareSphere) {
+  writeFloatRaster(file("none.tif"), 64, 32, kGlobe, [](int, int) { return -9999.0f; }, -9999.0);
+  const CommandResult result = renderHeights(file("none.tif"));
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+}
+
+TEST_F(BadData, AnEmptyFileIsRefusedAsEmpty) {
+  expectRefused(renderHeights(write("empty.tif", "")), {"empty.tif' is empty (0 bytes)"});
+}
+
+TEST_F(BadData, ARasterOfNoTexelsIsRefused) {
+  expectRefused(renderHeights(write("zero.vrt", vrt("rasterXSize=\"0\" rasterYSize=\"0\"", "EPSG:4326",
+                                                    kGlobalGeotransform))),
+                {"zero.vrt", "gdalinfo"});
+}
+
+const std::string kAbsurdSize = "rasterXSize=\"2000000000\" rasterYSize=\"1000000000\"";
+const std::string kAbsurdGeotransform = "-180, 1.8e-7, 0, 90, 0, -1.8e-7";
+
+TEST_F(BadData, AbsurdDimensionsWithoutOverviewsAreRefusedWithTheirSize) {
+  const CommandResult result = renderHeights(write("absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform)));
+  expectRefused(result, {"absurd.vrt' (2000000000x1000000000)", "more than 2^30 texels", "gdaladdo"});
+}
+
+// With an overview a page across, the coarsest page is cheap to read, but the page index cannot hold the
+// pyramid's 10^13 pages (was: std::bad_alloc).
+TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
+  writeFloatRaster(file("overview.tif"), 512, 256, kGlobe, [](int, int) { return 0.0f; });
+  const CommandResult result = renderHeights(write(
+      "absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform,
+                        "<Overview><SourceFilename>" + file("overview.tif").string() +
+                            "</SourceFilename><SourceBand>1</SourceBand></Overview>")));
+  expectRefused(result, {"2000000000x1000000000", "more than the page index holds", "gdal_translate -outsize"});
+}
+
+TEST_F(BadData, ABrokenCrsIsRefusedNamingTheFile) {
+  const CommandResult result = renderHeights(
+      write("broken.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"", "GEOGCS[\"broken\",DATUM[\"nothing\"",
+                              kGlobalGeotransform)));
+  expectRefused(result, {"broken.vrt", "no PROJ form", "projection"});
+}
+
+TEST_F(BadData, NoCrsWithAGeotransformInMetresIsRefused) {
+  const CommandResult result = renderHeights(
+      write("metres.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"", "", "-2e6, 62500, 0, 1e6, 0, -62500")));
+  expectRefused(result, {"metres.vrt' has no CRS", "not degrees", "gdal_edit.py -a_srs"});
+}
+
+TEST_F(BadData, NoCrsNorGeotransformAndNot2To1AsksForAnExtent) {
+  const CommandResult result = renderHeights(write("bare.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"48\"", "", "")));
+  expectRefused(result, {"bare.vrt' has no geotransform and is not 2:1", "extent: [west, south, east, north]"});
+}
+
+TEST_F(BadData, AColourRasterOfFloatsIsRefusedWithAFix) {
+  writeFloatRaster(file("floats.tif"), 64, 32, kGlobe, blocksOf(0.5f));
+  expectRefused(renderColour(file("floats.tif"), "32x18"), {"floats.tif' holds Float32", "gdal_translate -ot Byte"});
+}
+
+// A global colour raster written in `format` (PNG, JPEG) beside a world file, cut to half its length.
+fs::path truncatedCopy(const fs::path& directory, const std::string& format, const std::string& extension) {
+  const fs::path tiff = directory / "colour.tif", copy = directory / ("cut." + extension);
+  writeColourRaster(tiff, 512, 256, {-180.0, -90.0, 180.0, 90.0}, [](int column, int row) {
+    return Rgb8{static_cast<unsigned char>(column / 2), static_cast<unsigned char>(row), 90};
+  });
+  GDALDatasetH source = GDALOpen(tiff.c_str(), GA_ReadOnly);
+  GDALDatasetH written = GDALCreateCopy(GDALGetDriverByName(format.c_str()), copy.c_str(), source, FALSE, nullptr,
+                                        nullptr, nullptr);
+  GDALClose(written);
+  GDALClose(source);
+  fs::resize_file(copy, fs::file_size(copy) / 2);
+  return copy;
+}
+
+void expectPagesReported(const CommandResult& result, const std::string& name) {
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.err, "strata: warning: cannot read")) << result.err;
+  EXPECT_TRUE(contains(result.err, name)) << result.err;
+  EXPECT_TRUE(contains(result.err, "gdalinfo -checksum")) << result.err;
+}
+
+TEST_F(BadData, ATruncatedPngDrawsWithItsUnreadablePagesReported) {
+  GDALAllRegister();
+  expectPagesReported(renderColour(truncatedCopy(scratch_.path(), "PNG", "png"), "640x360"), "cut.png");
+}
+
+// libjpeg decodes a truncated JPEG as grey with a warning only; the warning must fail the page.
+TEST_F(BadData, ATruncatedJpegDrawsWithItsUnreadablePagesReportedNotGrey) {
+  GDALAllRegister();
+  expectPagesReported(renderColour(truncatedCopy(scratch_.path(), "JPEG", "jpg"), "640x360"), "cut.jpg");
+}
+
+}  // namespace
+}  // namespace strata::test
