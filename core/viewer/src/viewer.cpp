@@ -1,5 +1,6 @@
 #include <strata/viewer/viewer.hpp>
 
+#include <array>
 #include <cstdio>
 
 #include <strata/error.hpp>
@@ -35,10 +36,25 @@ void Viewer::navigate() {
 void Viewer::reload() {
   try {
     engine_.reload();
+    failed_ = false;
     panel_.report({});
   } catch (const Error& error) {
     std::fprintf(stderr, "%s\n", error.what());
     panel_.report(error.what());
+  }
+}
+
+// A node that throws while rendering (a plugin's fault, a file gone) would throw again next frame: the
+// viewer shows the panels over a blank frame, with the error, until the file is edited.
+const FrameOutput* Viewer::renderedFrame() {
+  if (failed_) return nullptr;
+  try {
+    return &engine_.render(width_, height_);
+  } catch (const Error& error) {
+    std::fprintf(stderr, "%s\n", error.what());
+    panel_.report(error.what());
+    failed_ = true;
+    return nullptr;
   }
 }
 
@@ -47,15 +63,18 @@ const FrameOutput* Viewer::frame() {
   if (watcher_.changed()) reload();
   window_.framebufferSize(width_, height_);
   if (width_ < 1 || height_ < 1) return nullptr;  // minimised
-  const FrameOutput& frame = engine_.render(width_, height_);
-  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
-                         GL_NEAREST);
+  const FrameOutput* frame = renderedFrame();
+  if (frame)
+    glBlitNamedFramebuffer(frame->frame().id(), 0, 0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                           GL_NEAREST);
+  else
+    glClearNamedFramebufferfv(0, GL_COLOR, 0, std::array<GLfloat, 4>{0.0f, 0.0f, 0.0f, 1.0f}.data());
   overlay_.begin();
   panel_.draw(engine_);
   drawScenePanel(engine_);
   overlay_.end();
   window_.swapBuffers();
-  return &frame;
+  return frame;
 }
 
 void Viewer::screenshot(const std::filesystem::path& file, int width, int height) {

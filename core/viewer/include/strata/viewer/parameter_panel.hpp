@@ -19,6 +19,8 @@ class ParameterPanel {
   void draw(Engine& engine);
   // Shows `problem` under the panel until the next change succeeds (a pipeline file that no longer loads).
   void report(std::string problem) { refusal_ = std::move(problem); }
+  // What the panel shows under it: the last refusal or report, or "".
+  const std::string& reported() const { return refusal_; }
 
  private:
   void drawControl(Engine& engine, const ParameterControl& control);

@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <string>
 
 #include <strata/engine.hpp>
 #include <strata/viewer/panel_overlay.hpp>
@@ -17,8 +18,11 @@ class Viewer {
   Viewer(GlfwWindow& window, Engine& engine);
 
   // Takes the events since the last frame, draws one with the panels over it and shows it; returns the
-  // engine's frame, or none while the window is minimised.
+  // engine's frame, or none while the window is minimised or the pipeline fails to render (a node's error,
+  // shown in the panel until the pipeline's file changes and loads).
   const FrameOutput* frame();
+  // What the parameter panel says is wrong: a refused change, a file that no longer loads, a failed frame.
+  const std::string& problem() const { return panel_.reported(); }
   // Writes the view as it is now at width x height, whatever the window's size, through the engine's
   // headless path: every page loaded and the detail settled (Engine::renderSettled), then a PNG.
   void screenshot(const std::filesystem::path& file, int width, int height);
@@ -26,6 +30,7 @@ class Viewer {
  private:
   void navigate();
   void reload();
+  const FrameOutput* renderedFrame();
 
   GlfwWindow& window_;
   Engine& engine_;
@@ -34,6 +39,7 @@ class Viewer {
   PipelineWatcher watcher_;
   int width_ = 0;  // the window's framebuffer, pixels
   int height_ = 0;
+  bool failed_ = false;  // the pipeline threw while rendering: not tried again until it loads anew
 };
 
 }  // namespace strata::viewer
