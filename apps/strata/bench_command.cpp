@@ -26,6 +26,7 @@ struct BenchOptions : PipelineOptions {
   std::string path;     // default: paths/<pipeline name>.yaml beside the pipeline
   int frames = 4800;    // seed 000 section 5.1's benchmark: 4800 frames in and back out
   int average = 10;     // ... averaged over 10 frames into 480 points
+  int laps = 1;         // the path flown this many times: a soak run
   std::string output;   // default: out/bench/<pipeline name>.csv
   std::string plot;     // default: the CSV's name with .svg
   std::string compare;  // a second pipeline run on the same path
@@ -60,6 +61,11 @@ void checkOptions(const BenchOptions& options, const fs::path& pathFile) {
     throw Error(SourceLocation{"--average"},
                 "frames are averaged over at least 1, got " + std::to_string(options.average),
                 "give --average K with K >= 1 (seed 000's figures: 10)");
+  if (options.laps < 1 || options.frames < 2 * options.laps)
+    throw Error(SourceLocation{"--laps"},
+                "the path is flown at least once, in at least 2 frames a lap; got " + std::to_string(options.laps) +
+                    " laps of " + std::to_string(options.frames) + " frames",
+                "give --laps N with 1 <= N <= frames / 2");
   if (!fs::exists(pathFile))
     throw Error(SourceLocation{pathFile.string()}, "no camera path file here",
                 options.path.empty()
@@ -79,7 +85,8 @@ std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOp
     if ((frame + 1) % std::max(options.frames / 10, 1) == 0)
       std::fprintf(stderr, "strata: %s: frame %d of %d\n", pipeline.c_str(), frame + 1, options.frames);
   };
-  return benchAlongPath(engine, path, options.frames, options.size.width, options.size.height, progress);
+  return benchAlongPath(engine, path, options.frames, options.laps, options.size.width, options.size.height,
+                        progress);
 }
 
 std::string summaryLine(const FrameTimeSummary& s) {
@@ -131,6 +138,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                       "frames along the path, evenly spaced in time (default 4800, seed 000's)");
   command->add_option("--average", options->average,
                       "frames averaged into each point of the plot (default 10, seed 000's)");
+  command->add_option("--laps", options->laps,
+                      "fly the path this many times, --frames in all (default 1); with many, a soak run whose plot "
+                      "shows memory and open files");
   command->add_option("-o,--output", options->output, "the per-frame CSV (default out/bench/<pipeline name>.csv)");
   command->add_option("--plot", options->plot, "the plot, SVG (default the CSV's name with .svg)");
   command

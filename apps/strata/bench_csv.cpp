@@ -11,17 +11,17 @@ namespace {
 constexpr const char* kHeader =
     "frame,seconds,altitude_m,frame_ms,prepare_ms,render_ms,visibility_ms,subdivision_ms,rasterisation_ms,patches,"
     "vertices,triangles,pages_resident,pages_wanted,page_faults,pages_uploaded,pages_uploaded_total,gpu_bytes,"
-    "process_rss_bytes";
+    "process_rss_bytes,open_files";
 
 std::string row(const BenchFrame& f) {
   char text[512];
   std::snprintf(text, sizeof text,
-                "%d,%.4f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%llu,%llu,%d,%d,%d,%llu,%llu,%llu,%llu", f.frame,
+                "%d,%.4f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%llu,%llu,%d,%d,%d,%llu,%llu,%llu,%llu,%d", f.frame,
                 f.seconds, f.altitude, f.frameMs, f.prepareMs, f.renderMs, f.visibilityMs, f.subdivisionMs,
                 f.rasterisationMs, f.patches, static_cast<unsigned long long>(f.vertices),
                 static_cast<unsigned long long>(f.triangles), f.pagesResident, f.pagesWanted, f.pageFaults,
                 static_cast<unsigned long long>(f.uploadedThisFrame), static_cast<unsigned long long>(f.pagesUploaded),
-                static_cast<unsigned long long>(f.gpuBytes), static_cast<unsigned long long>(f.processBytes));
+                static_cast<unsigned long long>(f.gpuBytes), static_cast<unsigned long long>(f.processBytes), f.openFiles);
   return text;
 }
 

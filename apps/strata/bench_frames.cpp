@@ -1,6 +1,9 @@
 #include "bench_frames.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <iterator>
 #include <fstream>
 #include <string>
 
@@ -39,18 +42,19 @@ BenchFrame measuredFrame(Engine& engine, double frameMs, std::uint64_t uploadedB
           .pagesUploaded = pages.uploaded,
           .uploadedThisFrame = pages.uploaded - uploadedBefore,
           .gpuBytes = pages.gpuBytes,
-          .processBytes = processResidentBytes()};
+          .processBytes = processResidentBytes(),
+          .openFiles = openFileCount()};
 }
 
 }  // namespace
 
-std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height,
-                                       const std::function<void(int)>& progress) {
-  const PathFrames spacing = pathFrames(path, frames);
+std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int laps, int width,
+                                       int height, const std::function<void(int)>& progress) {
+  const PathFrames spacing = pathFrames(path, std::max(2, (frames + laps - 1) / laps));
   std::vector<BenchFrame> measured;
-  measured.reserve(std::size_t(spacing.count));
-  for (int frame = 0; frame < spacing.count; ++frame) {
-    const double fraction = spacing.fractionOf(frame);
+  measured.reserve(std::size_t(frames));
+  for (int frame = 0; frame < frames; ++frame) {
+    const double fraction = spacing.fractionOf(frame % spacing.count);
     engine.camera() = path.atFraction(fraction);
     const std::uint64_t uploadedBefore = engine.pageCacheStatistics().uploaded;
     const double frameMs = timedFrameMs(engine, width, height);
@@ -76,6 +80,13 @@ std::uint64_t processResidentBytes() {
     status.ignore(4096, '\n');
   }
   return 0;
+}
+
+int openFileCount() {
+  std::error_code error;
+  const std::filesystem::directory_iterator descriptors("/proc/self/fd", error);
+  if (error) return 0;
+  return int(std::distance(begin(descriptors), end(descriptors))) - 1;  // less the iterator's own
 }
 
 }  // namespace strata::cli

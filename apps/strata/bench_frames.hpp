@@ -32,15 +32,19 @@ struct BenchFrame {
   std::uint64_t uploadedThisFrame = 0;
   std::uint64_t gpuBytes = 0;      // the page cache's atlases, index and upload buffers
   std::uint64_t processBytes = 0;  // resident set of the process (VmRSS)
+  int openFiles = 0;               // the process's open file descriptors (/proc/self/fd)
 };
 
-// Renders `frames` frames evenly spaced in time along `path` as a viewer draws them (Engine::render: pages
-// load asynchronously and coarser ones stand in), timing each, from the cache the engine has (empty just
-// after load). `progress`, when given, is told the number of each frame done.
-std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int width, int height,
-                                       const std::function<void(int)>& progress = {});
+// Renders `frames` frames evenly spaced in time along `path`, flown `laps` times one after another, as a
+// viewer draws them (Engine::render: pages load asynchronously and coarser ones stand in), timing each,
+// from the cache the engine has (empty just after load). `progress`, when given, is told the number of
+// each frame done. Many laps make a soak run: the cache fills, and memory must then stay flat.
+std::vector<BenchFrame> benchAlongPath(Engine& engine, const CameraPath& path, int frames, int laps, int width,
+                                       int height, const std::function<void(int)>& progress = {});
 
 // The process's resident set in bytes, from /proc/self/status (VmRSS); 0 where there is none.
 std::uint64_t processResidentBytes();
+// The process's open file descriptors; 0 where /proc/self/fd cannot be read.
+int openFileCount();
 
 }  // namespace strata::cli

@@ -11,10 +11,11 @@
 namespace strata::cli {
 namespace {
 
-constexpr double kWidth = 960, kHeight = 650;
+constexpr double kWidth = 960, kHeight = 830;
 constexpr double kLeft = 80, kRight = 880;           // the panels' x extent
 constexpr double kTimeTop = 80, kTimeBottom = 380;   // frame time panel; legends and title above
 constexpr double kDataTop = 450, kDataBottom = 600;  // pages and vertices panel
+constexpr double kMemoryTop = 640, kMemoryBottom = 780;  // memory and open files panel
 constexpr const char* kRunColours[] = {"#000000", "#d62728"};
 constexpr const char* kPhaseColours[] = {"#1f77b4", "#2ca02c", "#ff7f0e"};
 
@@ -114,13 +115,38 @@ std::string dataPanel(const PlotRun& run) {
   return svg + "</g>\n";
 }
 
+// The process's resident set and the page cache's GPU memory on one axis from 0 MiB, and open files on
+// their own from 0: in a soak run all three must level off once the cache is full.
+std::string memoryPanel(const PlotRun& run) {
+  double mebibytes = 1.0, files = 1.0;
+  for (const AveragedPoint& p : run.points)
+    mebibytes = std::max({mebibytes, p.processMiB, p.gpuMiB}), files = std::max(files, p.openFiles);
+  std::string svg = "<g id=\"memory\">\n" + gridLine(kMemoryTop) + gridLine(kMemoryBottom);
+  svg += polyline(
+      run, [](const AveragedPoint& p) { return p.processMiB; }, mebibytes, kMemoryTop, kMemoryBottom,
+      "stroke=\"#17becf\" stroke-width=\"1.5\"");
+  svg += polyline(
+      run, [](const AveragedPoint& p) { return p.gpuMiB; }, mebibytes, kMemoryTop, kMemoryBottom,
+      "stroke=\"#e377c2\" stroke-width=\"1.5\"");
+  svg += polyline(
+      run, [](const AveragedPoint& p) { return p.openFiles; }, files, kMemoryTop, kMemoryBottom,
+      "stroke=\"#7f7f7f\" stroke-width=\"1.5\" stroke-dasharray=\"4 2\"");
+  svg += text(kLeft - 6, kMemoryTop + 4, number(mebibytes) + " MiB", "text-anchor=\"end\"");
+  svg += text(kLeft - 6, kMemoryBottom + 4, "0", "text-anchor=\"end\"");
+  svg += text(kRight + 6, kMemoryTop + 4, number(files) + " files", "fill=\"#7f7f7f\"");
+  svg += text(kLeft + 10, kMemoryTop - 8, "process resident set", "fill=\"#17becf\"");
+  svg += text(kLeft + 190, kMemoryTop - 8, "page cache GPU memory", "fill=\"#e377c2\"");
+  svg += text(kLeft + 380, kMemoryTop - 8, "open files", "fill=\"#7f7f7f\"");
+  return svg + "</g>\n";
+}
+
 std::string frameAxis(int frames) {
   std::string svg;
   for (int i = 0; i <= 4; ++i) {
     const int frame = (frames - 1) * i / 4;
-    svg += text(xOf(frame, frames), kDataBottom + 18, std::to_string(frame), "text-anchor=\"middle\"");
+    svg += text(xOf(frame, frames), kMemoryBottom + 18, std::to_string(frame), "text-anchor=\"middle\"");
   }
-  return svg + text((kLeft + kRight) / 2, kDataBottom + 40, "frame", "text-anchor=\"middle\"");
+  return svg + text((kLeft + kRight) / 2, kMemoryBottom + 40, "frame", "text-anchor=\"middle\"");
 }
 
 }  // namespace
@@ -145,7 +171,7 @@ void writeBenchPlot(const std::filesystem::path& file, const std::vector<PlotRun
               "strata bench: " + std::to_string(runs.front().frames) + " frames, averaged over " +
                   std::to_string(averagedOver),
               "font-size=\"14\"")
-      << frameTimePanel(runs, frameTimeAxisTop(slowest)) << dataPanel(runs.front()) << frameAxis(runs.front().frames)
+      << frameTimePanel(runs, frameTimeAxisTop(slowest)) << dataPanel(runs.front()) << memoryPanel(runs.front()) << frameAxis(runs.front().frames)
       << "</svg>\n";
   if (!out)
     throw Error(SourceLocation{file.string()}, "cannot write the benchmark's plot", "give --plot a writable path");

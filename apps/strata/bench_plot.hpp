@@ -17,7 +17,8 @@ struct PlotRun {
 // An SVG like seed 000's figures 5.2 to 5.6 (section 5.1): frame time per averaged point over the run, on
 // their scale, 30 Hz (33.3 ms) at the top and 60 Hz at the middle, doubled until the slowest point fits
 // (a CPU renderer's frames take far longer); the first run's phases beside it; below, pages uploaded and
-// vertices per frame. Written by hand: no plotting dependency. Throws strata::Error naming the file when it
+// vertices per frame; at the bottom, process and page-cache memory and open files (flat in a soak run once
+// the cache is full). Written by hand: no plotting dependency. Throws strata::Error naming the file when it
 // cannot be written.
 void writeBenchPlot(const std::filesystem::path& file, const std::vector<PlotRun>& runs, int averagedOver);
 

@@ -5,6 +5,11 @@
 #include <cstdio>
 
 namespace strata::cli {
+namespace {
+
+constexpr double kMebibyte = 1024.0 * 1024.0;
+
+}  // namespace
 
 FrameTimeSummary summarise(const std::vector<BenchFrame>& frames) {
   if (frames.empty()) return {};
@@ -32,10 +37,14 @@ std::vector<AveragedPoint> averageFrames(const std::vector<BenchFrame>& frames, 
       point.visibilityMs += frames[i].visibilityMs;
       point.vertices += double(frames[i].vertices);
       point.pagesUploaded += double(frames[i].uploadedThisFrame);
+      point.processMiB += double(frames[i].processBytes) / kMebibyte;
+      point.gpuMiB += double(frames[i].gpuBytes) / kMebibyte;
+      point.openFiles += frames[i].openFiles;
     }
     const double n = point.count;
     point.frameMs /= n, point.prepareMs /= n, point.renderMs /= n, point.visibilityMs /= n;
     point.vertices /= n, point.pagesUploaded /= n;
+    point.processMiB /= n, point.gpuMiB /= n, point.openFiles /= n;
     points.push_back(point);
   }
   return points;

@@ -24,6 +24,9 @@ struct AveragedPoint {
   double frameMs = 0.0, prepareMs = 0.0, renderMs = 0.0, visibilityMs = 0.0;
   double vertices = 0.0;
   double pagesUploaded = 0.0;  // per frame
+  double processMiB = 0.0;     // resident set
+  double gpuMiB = 0.0;         // the page cache's GPU memory
+  double openFiles = 0.0;
 };
 
 std::vector<AveragedPoint> averageFrames(const std::vector<BenchFrame>& frames, int over);

@@ -71,6 +71,7 @@ TEST_F(StrataCommandTest, BenchWritesARowPerFrameAndAPlot) {
     EXPECT_GT(row.at("vertices"), 0.0) << frame;
     EXPECT_GT(row.at("process_rss_bytes"), 1.0e6) << frame;
     EXPECT_GT(row.at("gpu_bytes"), 0.0) << frame;
+    EXPECT_GE(row.at("open_files"), 3.0) << "stdin, stdout and stderr at least: " << frame;
     if (frame > 0) {
       EXPECT_GT(row.at("seconds"), rows[std::size_t(frame - 1)].at("seconds"));
       EXPECT_GE(row.at("pages_uploaded_total"), rows[std::size_t(frame - 1)].at("pages_uploaded_total"));
@@ -85,7 +86,7 @@ TEST_F(StrataCommandTest, BenchWritesARowPerFrameAndAPlot) {
   CPLXMLNode* svg = CPLParseXMLString(readText(file("bench/flyin.svg")).c_str());
   ASSERT_NE(svg, nullptr) << "the plot is not XML";
   EXPECT_NE(CPLSearchXMLNode(svg, "=svg"), nullptr);
-  EXPECT_EQ(countElements(svg, "polyline"), 6);  // frame time, three phases, pages, vertices
+  EXPECT_EQ(countElements(svg, "polyline"), 9);  // frame time, three phases, pages, vertices, memory, files
   EXPECT_GE(countElements(svg, "text"), 10);
   CPLDestroyXMLNode(svg);
   EXPECT_TRUE(contains(readText(file("bench/flyin.svg")), " Hz<")) << "the frame time axis is labelled in Hz";
@@ -103,8 +104,22 @@ TEST_F(StrataCommandTest, BenchComparesTwoPipelinesOnOnePath) {
   EXPECT_TRUE(contains(readText(file("a_compare.txt")), "median")) << "the comparison is written too";
   CPLXMLNode* svg = CPLParseXMLString(readText(file("a.svg")).c_str());
   ASSERT_NE(svg, nullptr);
-  EXPECT_EQ(countElements(svg, "polyline"), 7);  // a frame time line for each pipeline
+  EXPECT_EQ(countElements(svg, "polyline"), 10);  // a frame time line for each pipeline
   CPLDestroyXMLNode(svg);
+}
+
+// A soak run flies the path lap after lap: each lap starts where the path does, 20,000 km up.
+TEST_F(StrataCommandTest, BenchFliesThePathLapAfterLap) {
+  const CommandResult result = run({"bench", "pipelines/bench-flyin.yaml", "--frames", "12", "--laps", "3", "--size",
+                                    "48x27", "-o", file("soak.csv").string()});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  const auto rows = readCsv(file("soak.csv"));
+  ASSERT_EQ(rows.size(), 12u);
+  for (const std::size_t lap : {0u, 4u, 8u}) EXPECT_NEAR(rows[lap].at("altitude_m"), 2.0e7, 1.0) << lap;
+  EXPECT_LT(rows[2].at("altitude_m"), 1.0e6);
+  const CommandResult refused = run({"bench", "pipelines/bench-flyin.yaml", "--frames", "12", "--laps", "7"});
+  EXPECT_EQ(refused.exitCode, 1);
+  EXPECT_TRUE(contains(refused.err, "--laps: error")) << refused.err;
 }
 
 TEST_F(StrataCommandTest, BenchRefusesAMissingPathAndBadNumbers) {
