@@ -6,17 +6,17 @@
 #include <cstddef>
 
 #if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define STRATA_ADDRESS_SANITIZER 1
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
+#define STRATA_SANITIZED 1
 #endif
 #endif
-#if defined(__SANITIZE_ADDRESS__)
-#define STRATA_ADDRESS_SANITIZER 1
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define STRATA_SANITIZED 1
 #endif
 
 namespace strata {
 
-#if defined(STRATA_ADDRESS_SANITIZER)
+#if defined(STRATA_SANITIZED)
 void keepLoadedLibrariesResident() {
   dl_iterate_phdr(
       [](dl_phdr_info* library, std::size_t, void*) {

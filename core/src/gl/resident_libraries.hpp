@@ -2,12 +2,13 @@
 
 namespace strata {
 
-// In AddressSanitizer builds only (docs/robustness.md, "Sanitizers"): keeps every shared library loaded
-// now, the GL driver's among them, loaded until the process ends. Mesa's EGL and GLX vendor libraries and
-// its DRI driver leave allocations behind when they are unloaded (at eglTerminate, or at exit), which
-// LeakSanitizer then reports as leaks of an unknown module that no suppression can name. Resident, what
-// they hold stays reachable, and a real leak's stack keeps its library's name. Call once a GL context
-// exists. Does nothing in other builds.
+// In AddressSanitizer and ThreadSanitizer builds only (docs/robustness.md, "Sanitizers"): keeps every
+// shared library loaded now, the GL driver's among them, loaded until the process ends. Mesa's EGL and GLX
+// vendor libraries and its DRI driver leave allocations behind when they are unloaded (at eglTerminate, or
+// at exit), which LeakSanitizer then reports as leaks of an unknown module that no suppression can name;
+// resident, what they hold stays reachable, and a real leak's stack keeps its library's name. ThreadSanitizer
+// ends the process when a library its suppressions ignore (the driver, tests/sanitizers/tsan.supp) is
+// unloaded. Call once a GL context exists. Does nothing in other builds.
 void keepLoadedLibrariesResident();
 
 }  // namespace strata
