@@ -71,6 +71,18 @@ class BadData : public StrataCommandTest {
     EXPECT_EQ(drawn.rgba, readImage(file("x.png")).rgba);
   }
 
+  // Heights of 1e-38 m, or none at all, draw exactly what heights of 0 m draw: the sphere, nothing said.
+  void expectDrawnAsTheBareSphere(const fs::path& raster) const {
+    writeFloatRaster(file("zero.tif"), 64, 32, kGlobe, [](int, int) { return 0.0f; });
+    const CommandResult zeroRun = renderHeights(file("zero.tif"), "96x54");
+    ASSERT_EQ(zeroRun.exitCode, 0) << zeroRun.err;
+    const Image sphere = readImage(file("x.png"));
+    const CommandResult result = renderHeights(raster, "96x54");
+    ASSERT_EQ(result.exitCode, 0) << result.err;
+    EXPECT_FALSE(contains(result.err, "warning")) << result.err;
+    EXPECT_EQ(readImage(file("x.png")).rgba, sphere.rgba);
+  }
+
   void expectRefused(const CommandResult& result, const std::vector<std::string>& parts) const {
     EXPECT_EQ(result.exitCode, 1) << result.err;
     EXPECT_TRUE(contains(result.err, "p.yaml:3")) << "the pipeline line of the source: " << result.err;
@@ -87,16 +99,14 @@ TEST_F(BadData, HugeHeightsAreRefusedAsAnUndeclaredFillValue) {
   expectRefused(renderHeights(file("fill.tif")), {"fill.tif", "-3.4e+38", "gdal_edit.py -a_nodata"});
 }
 
-TEST_F(BadData, TinyHeightsDraw) {
+TEST_F(BadData, TinyHeightsDrawAsTheBareSphere) {
   writeFloatRaster(file("tiny.tif"), 64, 32, kGlobe, [](int column, int) { return 1e-38f * float(column % 3); });
-  const CommandResult result = renderHeights(file("tiny.tif"));
-  EXPECT_EQ(result.exitCode, 0) << result.err;
+  expectDrawnAsTheBareSphere(file("tiny.tif"));
 }
 
 TEST_F(BadData, AllNodataDrawsTheBareSphere) {
   writeFloatRaster(file("none.tif"), 64, 32, kGlobe, [](int, int) { return -9999.0f; }, -9999.0);
-  const CommandResult result = renderHeights(file("none.tif"));
-  EXPECT_EQ(result.exitCode, 0) << result.err;
+  expectDrawnAsTheBareSphere(file("none.tif"));
 }
 
 TEST_F(BadData, AnEmptyFileIsRefusedAsEmpty) {
