@@ -3,55 +3,11 @@
 # sdk/examples/graticule against that prefix out of tree (find_package(Strata)), and runs the INSTALLED
 # strata with the example plugin on STRATA_PLUGIN_PATH. Catches install rules, the package config and the
 # installed headers drifting from what an out-of-tree plugin needs.
-#   out_of_tree_example.sh BUILD_DIR SOURCE_DIR
+#   graticule_example.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 
-build=$1
-source=$2
-example=$source/sdk/examples/graticule
-work=$(mktemp -d "${TMPDIR:-/tmp}/strata-sdk-test.XXXXXX")
-trap 'rm -rf "$work"' EXIT
-prefix=$work/prefix
-strata=$prefix/bin/strata
-
-step() { printf '\n=== %s\n' "$*"; }
-fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
-
-# One line "r g b" per pixel of an 8-bit image, row by row. (python3 here has no GDAL bindings; GDAL's XYZ
-# driver prints one band at a time as "x y value".)
-pixels() {
-  paste -d ' ' <(gdal_translate -q -of XYZ -b 1 "$1" /vsistdout/ | cut -d ' ' -f 3) \
-               <(gdal_translate -q -of XYZ -b 2 "$1" /vsistdout/ | cut -d ' ' -f 3) \
-               <(gdal_translate -q -of XYZ -b 3 "$1" /vsistdout/ | cut -d ' ' -f 3)
-}
-
-# How many pixels of an image are within TOLERANCE levels of R G B in every channel.
-count_near() {
-  local image=$1 r=$2 g=$3 b=$4 tolerance=$5
-  pixels "$image" | awk -v r="$r" -v g="$g" -v b="$b" -v t="$tolerance" '
-    function near(value, wanted) { return value >= wanted - t && value <= wanted + t }
-    near($1, r) && near($2, g) && near($3, b) { n++ }
-    END { print n + 0 }'
-}
-
-step "install $build into $prefix"
-cmake --install "$build" --prefix "$prefix"
-
-# The installed command must not reach back into the build tree: its RPATH is relative to itself.
-step "the installed strata links the installed libstrata_core"
-core=$(ldd "$strata" | awk '/libstrata_core/ { print $3 }')
-echo "libstrata_core: $core"
-[[ -n $core && $(realpath "$core") == "$(realpath "$prefix/lib")"/* ]] ||
-  fail "$strata links '$core', not the libstrata_core in $prefix/lib"
-
-# With the warnings Strata builds its own plugins with (cmake/StrataWarnings.cmake), as errors; GCC's
-# -Wmissing-field-initializers would flag every designated initializer that leaves a member to its default.
-step "build the graticule example against the installed package, warnings as errors"
-cmake -S "$example" -B "$work/graticule" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-missing-field-initializers -Werror"
-cmake --build "$work/graticule" -j2
-[[ -f $work/graticule/strata-graticule.so ]] || fail "the build made no strata-graticule.so"
-export STRATA_PLUGIN_PATH=$work/graticule
+source "$(dirname "$0")/sdk_test_functions.sh"
+set_up_example "$1" "$2" graticule
 
 step "the installed strata loads its built-in plugins from $prefix and the example from the build"
 "$strata" plugins | tee "$work/plugins.txt"
