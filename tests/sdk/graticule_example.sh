@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Checks the SDK the way a plugin author uses it: installs the build tree into a scratch prefix, builds
 # sdk/examples/graticule against that prefix out of tree (find_package(Strata)), and runs the INSTALLED
-# strata with the example plugin on STRATA_PLUGIN_PATH. Catches install rules, the package config and the
-# installed headers drifting from what an out-of-tree plugin needs.
+# strata with the example plugin on STRATA_PLUGIN_PATH; builds it once more with pkg-config's flags alone.
+# Catches install rules, the package configs and the installed headers drifting from what an out-of-tree
+# plugin needs.
 #   graticule_example.sh BUILD_DIR SOURCE_DIR
 set -euo pipefail
 
@@ -16,6 +17,19 @@ for module in source-gdal geometry-icosahedral output-image; do
     fail "strata-$module.so was not loaded from $prefix/lib/strata/plugins"
 done
 grep -q "^source.graticule " "$work/plugins.txt" || fail "source.graticule is not listed"
+
+# Without CMake: the same source built by the compiler alone with pkg-config's flags (strata.pc), loaded
+# in place of the CMake build.
+step "build the example with pkg-config instead, and load that"
+export PKG_CONFIG_PATH=$prefix/lib/pkgconfig
+pkg-config --modversion strata
+mkdir "$work/pkg-config"
+# shellcheck disable=SC2046  # the flags are words
+c++ -std=c++20 -shared -fPIC -fvisibility=hidden -Werror "$example/graticule_source.cpp" \
+  $(pkg-config --cflags --libs strata) -o "$work/pkg-config/strata-graticule.so"
+STRATA_PLUGIN_PATH=$work/pkg-config "$strata" plugins >"$work/pkg-config/plugins.txt"
+grep -q "^  graticule .* $work/pkg-config/strata-graticule.so\$" "$work/pkg-config/plugins.txt" ||
+  fail "strata did not load the graticule plugin built with pkg-config's flags"
 
 step "describe source.graticule"
 "$strata" plugins --describe source.graticule | tee "$work/describe.txt"
