@@ -57,30 +57,28 @@ class BadData : public StrataCommandTest {
     return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string()});
   }
 
-  // Renders heights with `bad` in half the blocks, and the same with those blocks declared nodata: the
-  // bad values must be masked exactly as nodata is, with nothing said about them.
-  void expectMaskedAsNodata(float bad) const {
-    writeFloatRaster(file("bad.tif"), 64, 32, kGlobe, blocksOf(bad));
-    writeFloatRaster(file("nodata.tif"), 64, 32, kGlobe, blocksOf(-9999.0f), -9999.0);
-    const CommandResult badRun = renderHeights(file("bad.tif"), "96x54");
-    ASSERT_EQ(badRun.exitCode, 0) << badRun.err;
-    EXPECT_FALSE(contains(badRun.err, "warning")) << badRun.err;
-    const Image drawn = readImage(file("x.png"));
-    const CommandResult nodataRun = renderHeights(file("nodata.tif"), "96x54");
-    ASSERT_EQ(nodataRun.exitCode, 0) << nodataRun.err;
-    EXPECT_EQ(drawn.rgba, readImage(file("x.png")).rgba);
-  }
-
-  // Heights of 1e-38 m, or none at all, draw exactly what heights of 0 m draw: the sphere, nothing said.
-  void expectDrawnAsTheBareSphere(const fs::path& raster) const {
-    writeFloatRaster(file("zero.tif"), 64, 32, kGlobe, [](int, int) { return 0.0f; });
-    const CommandResult zeroRun = renderHeights(file("zero.tif"), "96x54");
-    ASSERT_EQ(zeroRun.exitCode, 0) << zeroRun.err;
-    const Image sphere = readImage(file("x.png"));
+  // `raster` draws exactly what `reference` draws, with nothing said about it.
+  void expectDrawnAlike(const fs::path& raster, const fs::path& reference) const {
     const CommandResult result = renderHeights(raster, "96x54");
     ASSERT_EQ(result.exitCode, 0) << result.err;
     EXPECT_FALSE(contains(result.err, "warning")) << result.err;
-    EXPECT_EQ(readImage(file("x.png")).rgba, sphere.rgba);
+    const Image drawn = readImage(file("x.png"));
+    const CommandResult referenceRun = renderHeights(reference, "96x54");
+    ASSERT_EQ(referenceRun.exitCode, 0) << referenceRun.err;
+    EXPECT_EQ(drawn.rgba, readImage(file("x.png")).rgba);
+  }
+
+  // Heights with `bad` in half the blocks must be masked exactly as those blocks declared nodata are.
+  void expectMaskedAsNodata(float bad) const {
+    writeFloatRaster(file("bad.tif"), 64, 32, kGlobe, blocksOf(bad));
+    writeFloatRaster(file("nodata.tif"), 64, 32, kGlobe, blocksOf(-9999.0f), -9999.0);
+    expectDrawnAlike(file("bad.tif"), file("nodata.tif"));
+  }
+
+  // Heights of 1e-38 m, or none at all, draw exactly what heights of 0 m draw: the bare sphere.
+  void expectDrawnAsTheBareSphere(const fs::path& raster) const {
+    writeFloatRaster(file("zero.tif"), 64, 32, kGlobe, [](int, int) { return 0.0f; });
+    expectDrawnAlike(raster, file("zero.tif"));
   }
 
   void expectRefused(const CommandResult& result, const std::vector<std::string>& parts) const {
