@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/height_slopes.hpp>
 #include <strata/srgb.hpp>
 
 namespace strata::composite {
@@ -34,29 +35,13 @@ glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegr
           float(std::sin(altitude))};
 }
 
-// The height's slopes east and north (metres per metre) at `p`, where it is `h`: central differences of the
-// composed height one footprint away each way along the ground, the footprint's longer axis, so that it
-// filters like a pixel; east, that is d / cos(latitude) of longitude (as height_sampling.glsl's
-// shadingNormal steps).
-std::string ReliefLayer::slopes() const {
-  const std::string& p = prefix_;
-  const std::string h = height_.samplingFunction();
-  return "vec2 " + p + "_slopes(SurfacePoint p, float h) {\n"
-         "  float d = reliefStep(p);\n"
-         "  vec2 east = vec2(d / max(cos(p.lonlat.y), 1e-4), 0.0), north = vec2(0.0, d);\n"
-         "  float eastRise = reliefDifference(" + h + "(reliefNeighbour(p, east)), h, " + h + "(reliefNeighbour(p, -east)));\n"
-         "  float northRise = reliefDifference(" + h + "(reliefNeighbour(p, north)), h, " + h + "(reliefNeighbour(p, -north)));\n"
-         "  return vec2(eastRise, northRise) / (d * " + p + "_radius);\n"
-         "}\n";
-}
-
 // What the layer shows where the height is `h`: the Lambertian shade (from one light, or Mark's four), or
 // the slope or the aspect, each from 0 to 1.
 std::string ReliefLayer::value() const {
   const std::string& p = prefix_;
   return "float " + p + "_value(SurfacePoint p, float h) {\n"
          "  vec2 slopes = " + p + "_slopes(p, h);\n"
-         "  if (" + p + "_output == 1) return reliefSlope(slopes, " + p + "_exaggeration);\n"
+         "  if (" + p + "_output == 1) return slopeAngle(slopes, " + p + "_exaggeration) / (0.5 * PI);\n"
          "  if (" + p + "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
          "  if (" + p + "_multidirectional == 1)\n"
          "    return reliefMultidirectional(slopes, " + p + "_exaggeration, " + p + "_altitude) / " + p + "_flat;\n"
@@ -70,7 +55,7 @@ std::string ReliefLayer::tint() const {
   const std::string& p = prefix_;
   return "vec3 " + p + "_tint(SurfacePoint p, float h) {\n"
          "  if (" + p + "_tintBy == 0) return vec3(1.0);\n"
-         "  float x = " + p + "_tintBy == 1 ? h : degrees(atan(length(" + p + "_slopes(p, h))));\n"
+         "  float x = " + p + "_tintBy == 1 ? h : degrees(slopeAngle(" + p + "_slopes(p, h), 1.0));\n"
          "  return reliefRamp(" + p + "_ramp, " + p + "_rampStops, x);\n"
          "}\n";
 }
@@ -104,7 +89,7 @@ std::string ReliefLayer::glsl() const {
          "uniform int " + p + "_tintBy;\n"
          "uniform int " + p + "_rampStops;\n"
          "uniform vec4 " + p + "_ramp[RELIEF_RAMP_STOPS];\n" +
-         slopes() + value() + tint() +
+         heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + value() + tint() +
          "vec4 " + p + "(SurfacePoint p) {\n"
          "  vec4 height = " + height_.samplingFunction() + "(p);\n" +
          shaded() +

@@ -55,7 +55,6 @@ class ReliefLayer : public Layer {
   static glm::vec3 lightDirection(double azimuthDegrees, double altitudeDegrees);
 
  private:
-  std::string slopes() const;
   std::string value() const;
   std::string tint() const;
   void bindRamp(ShaderProgram& program) const;

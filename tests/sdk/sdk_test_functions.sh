@@ -29,7 +29,8 @@ build_example() {
   [[ -f $work/$name/strata-$name.so ]] || fail "the build made no strata-$name.so"
 }
 
-# Sets up the test of sdk/examples/NAME: a scratch directory $work, removed at exit; BUILD_DIR installed
+# Sets up the test of sdk/examples/NAME: a scratch directory $work, removed at exit (kept, to look into,
+# when KEEP_WORK is set); BUILD_DIR installed
 # into $prefix, whose command is $strata; the example ($example) built against it and its directory put on
 # STRATA_PLUGIN_PATH.
 #   set_up_example BUILD_DIR SOURCE_DIR NAME
@@ -37,7 +38,7 @@ set_up_example() {
   local build=$1 name=$3
   example=$2/sdk/examples/$name
   work=$(mktemp -d "${TMPDIR:-/tmp}/strata-sdk-test.XXXXXX")
-  trap 'rm -rf "$work"' EXIT
+  trap '[[ -n ${KEEP_WORK:-} ]] || rm -rf "$work"' EXIT
   prefix=$work/prefix
   strata=$prefix/bin/strata
   install_strata "$build"

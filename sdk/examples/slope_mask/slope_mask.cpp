@@ -1,0 +1,145 @@
+// composite.slope_mask: paints the ground steeper than a threshold over a colour layer, from any height
+// layer (a landing-site or trafficability map: where a lander or a rover may not go). An example of a
+// compositor built out of tree against an installed Strata SDK: a layer whose GLSL samples two input layers
+// and combines them, with every parameter a uniform that the viewer's controls change live.
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include <strata/body.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/height_slopes.hpp>
+#include <strata/layer.hpp>
+#include <strata/plugin.hpp>
+#include <strata/srgb.hpp>
+
+namespace slope_mask {
+namespace {
+
+// What to paint, read from the node's validated parameters; all of it reaches the GPU as uniforms.
+struct MaskStyle {
+  double threshold = 0.0;  // rad: slopes steeper than this are painted
+  glm::vec3 colour{};      // scene-linear RGB, as layers' values are
+  double opacity = 0.0;    // the paint's share over the surface, 0 to 1
+};
+
+MaskStyle styleOf(const strata::ParameterSet& parameters) {
+  const std::vector<double>& colour = parameters.reals("colour");  // exactly 3: the declaration's count
+  return {parameters.real("threshold") * std::numbers::pi / 180.0,
+          strata::srgbToSceneLinear(colour[0], colour[1], colour[2]), parameters.real("opacity")};
+}
+
+// The layer: its GLSL samples the surface and the heights at a point, and the heights one footprint away
+// each way for the slope (strata::heightSlopesGlsl), then lays the paint over the surface where the slope
+// is steeper than the threshold, weighted by the heights' coverage (no data, no paint).
+class SlopeMaskLayer : public strata::Layer {
+ public:
+  SlopeMaskLayer(const std::string& nodeId, const strata::Layer& height, const strata::Layer& surface,
+                 MaskStyle style, double radius)
+      : name_("layer_" + strata::glslIdentifier(nodeId)), height_(height), surface_(surface), style_(style),
+        radius_(radius) {}
+
+  strata::LayerKind kind() const override { return strata::LayerKind::Color; }
+  std::string samplingFunction() const override { return name_; }
+
+  // Every name is prefixed by the node's, so that two slope masks in one program do not clash.
+  std::string glsl() const override {
+    const std::string& p = name_;
+    return height_.glslOnce() + surface_.glslOnce() +
+           "uniform float " + p + "_radius;\n"
+           "uniform float " + p + "_threshold;\n"
+           "uniform vec3 " + p + "_colour;\n"
+           "uniform float " + p + "_opacity;\n" +
+           strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius") +
+           "vec4 " + p + "(SurfacePoint p) {\n"
+           "  vec4 surface = " + surface_.samplingFunction() + "(p);\n"
+           "  vec4 height = " + height_.samplingFunction() + "(p);\n"
+           "  if (height.a <= 0.0 || slopeAngle(" + p + "_slopes(p, height.r), 1.0) <= " + p + "_threshold)\n"
+           "    return surface;\n"
+           "  float paint = " + p + "_opacity * height.a, rest = surface.a * (1.0 - paint);\n"
+           "  float coverage = paint + rest;  // the paint over the surface (values are not premultiplied)\n"
+           "  return coverage > 0.0 ? vec4((" + p + "_colour * paint + surface.rgb * rest) / coverage, coverage)\n"
+           "                        : vec4(0.0);\n"
+           "}\n";
+  }
+
+  void bind(strata::ShaderProgram& program, strata::TextureUnits& units) const override {
+    height_.bind(program, units);
+    surface_.bind(program, units);
+    program.set(name_ + "_radius", static_cast<float>(radius_));
+    program.set(name_ + "_threshold", static_cast<float>(style_.threshold));
+    program.set(name_ + "_colour", style_.colour);
+    program.set(name_ + "_opacity", static_cast<float>(style_.opacity));
+  }
+
+  // A compositor wants what its inputs hold as much as it is wanted itself (paged inputs load for it).
+  void setPageDemand(strata::PageDemand demand) const override {
+    height_.setPageDemand(demand);
+    surface_.setPageDemand(demand);
+  }
+
+  void restyle(MaskStyle style) { style_ = style; }  // for the next bind(): uniforms only
+
+ private:
+  std::string name_;
+  const strata::Layer& height_;
+  const strata::Layer& surface_;
+  MaskStyle style_;
+  double radius_;  // m, the body's: slopes are rise over distance along the ground
+};
+
+// The node: its inputs' layers exist when it is made; update() takes live parameter changes between frames.
+class SlopeMask : public strata::Node {
+ public:
+  explicit SlopeMask(const strata::NodeSetup& setup)
+      : layer_(setup.id, *setup.input("height")->layer(), *setup.input("surface")->layer(),
+               styleOf(setup.parameters), setup.body->radius) {}
+
+  strata::Layer* layer() override { return &layer_; }
+  void update(const strata::ParameterSet& parameters) override { layer_.restyle(styleOf(parameters)); }
+
+ private:
+  SlopeMaskLayer layer_;
+};
+
+// The one declaration from which the core derives validation, error messages and `strata plugins --describe`.
+strata::NodeTypeDeclaration declaration() {
+  using strata::LayerKind, strata::ParameterType, strata::PortType;
+  strata::NodeTypeDeclaration type;
+  type.type = "composite.slope_mask";
+  type.category = strata::NodeCategory::Compositor;
+  type.summary = "Paints ground steeper than a threshold over a colour layer, from any height layer";
+  type.inputs = {{.name = "height", .type = PortType::Layer, .kinds = {LayerKind::Height},
+                  .doc = "the heights whose slopes are measured: any height layer, composed ones included"},
+                 {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color},
+                  .doc = "the colour layer painted over; it shows unchanged where the ground is not steep"}};
+  type.output = PortType::Layer;
+  // Every parameter is a uniform (.live): changing one redraws the next frame with no program rebuilt.
+  type.parameters = {
+      // 15: the order of the limits Mars landing sites were chosen by (InSight's was 15), a first cut of a site map
+      {.name = "threshold", .type = ParameterType::Real, .defaultValue = 15.0, .minimum = 0.0, .maximum = 90.0,
+       .units = "deg", .doc = "ground steeper than this is painted; slopes are measured over a pixel's footprint",
+       .live = true},
+      // A saturated magenta: no terrain or imagery has it, so painted ground reads at a glance
+      {.name = "colour", .type = ParameterType::RealList, .defaultValue = std::vector<double>{1.0, 0.0, 1.0},
+       .minimum = 0.0, .maximum = 1.0, .doc = "the paint, as sRGB red, green, blue, each from 0 to 1", .count = 3,
+       .live = true},
+      // 0.6: the paint dominates, yet the imagery below still shows what makes the ground steep
+      {.name = "opacity", .type = ParameterType::Real, .defaultValue = 0.6, .minimum = 0.0, .maximum = 1.0,
+       .doc = "the paint's share over the surface on steep ground: 0 shows the surface alone, 1 the paint alone",
+       .live = true},
+  };
+  type.create = [](const strata::NodeSetup& setup) { return std::make_unique<SlopeMask>(setup); };
+  return type;
+}
+
+void registerTypes(strata::PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace slope_mask
+
+STRATA_PLUGIN("slope_mask", "0.1.0", slope_mask::registerTypes)

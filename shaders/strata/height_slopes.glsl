@@ -1,0 +1,32 @@
+// The pieces of strata::heightSlopesGlsl (strata/height_slopes.hpp): a height layer's slopes at a surface
+// point, from its samples one footprint away along the ground each way.
+
+// The sample's footprint along the ground, rad: the longer of its two steps (SurfacePoint), so that the
+// height's differences span a pixel.
+float slopeStep(SurfacePoint p) {
+  float c = cos(p.lonlat.y);
+  return max(max(length(vec2(p.lonlatDx.x * c, p.lonlatDx.y)), length(vec2(p.lonlatDy.x * c, p.lonlatDy.y))), 1e-12);
+}
+
+// The point `step` (rad of longitude, latitude) from `p`, with the same footprint. Its normal is turned
+// from p's along the local east and north rather than rebuilt from lonlat, which float resolves to about a
+// metre on Earth.
+SurfacePoint slopeNeighbour(SurfacePoint p, vec2 step) {
+  vec3 east = vec3(-sin(p.lonlat.x), cos(p.lonlat.x), 0.0);
+  vec3 north = cross(p.normal, east);
+  p.normal = normalize(p.normal + east * (step.x * cos(p.lonlat.y)) + north * step.y);
+  p.lonlat += step;
+  p.fromReference += step;
+  return p;
+}
+
+// The rise of the height over one step, from the samples one step ahead and behind (.r, coverage in .a) and
+// `h` between: central where both have data, one-sided where one has, flat where neither has.
+float slopeRise(vec4 ahead, float h, vec4 behind) {
+  if (ahead.a > 0.0 && behind.a > 0.0) return 0.5 * (ahead.r - behind.r);
+  if (ahead.a > 0.0) return ahead.r - h;
+  return behind.a > 0.0 ? h - behind.r : 0.0;
+}
+
+// The slope's angle, rad (0 flat, pi/2 vertical), of slopes east and north times `exaggeration`.
+float slopeAngle(vec2 slopes, float exaggeration) { return atan(exaggeration * length(slopes)); }
