@@ -35,12 +35,11 @@ glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegr
           float(std::sin(altitude))};
 }
 
-// What the layer shows where the height is `h`: the Lambertian shade (from one light, or Mark's four), or
-// the slope or the aspect, each from 0 to 1.
+// What the layer shows where the height's slopes are `slopes`: the Lambertian shade (from one light, or
+// Mark's four), or the slope or the aspect, each from 0 to 1.
 std::string ReliefLayer::value() const {
   const std::string& p = prefix_;
-  return "float " + p + "_value(SurfacePoint p, float h) {\n"
-         "  vec2 slopes = " + p + "_slopes(p, h);\n"
+  return "float " + p + "_value(vec2 slopes) {\n"
          "  if (" + p + "_output == 1) return slopeAngle(slopes, " + p + "_exaggeration) / (0.5 * PI);\n"
          "  if (" + p + "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
          "  if (" + p + "_multidirectional == 1)\n"
@@ -53,25 +52,26 @@ std::string ReliefLayer::value() const {
 // slope (deg), or white.
 std::string ReliefLayer::tint() const {
   const std::string& p = prefix_;
-  return "vec3 " + p + "_tint(SurfacePoint p, float h) {\n"
+  return "vec3 " + p + "_tint(vec2 slopes, float h) {\n"
          "  if (" + p + "_tintBy == 0) return vec3(1.0);\n"
-         "  float x = " + p + "_tintBy == 1 ? h : degrees(slopeAngle(" + p + "_slopes(p, h), 1.0));\n"
+         "  float x = " + p + "_tintBy == 1 ? h : degrees(slopeAngle(slopes, 1.0));\n"
          "  return reliefRamp(" + p + "_ramp, " + p + "_rampStops, x);\n"
          "}\n";
 }
 
 // The layer's value, grey where the height has data, or multiplying the surface's colour (which shows
-// unshaded where the height has none).
+// unshaded where the height has none). The slopes are found once: each costs four samples of the height,
+// which for procedural heights are loops of noise that llvmpipe's compiler takes minutes over when inlined
+// twice more.
 std::string ReliefLayer::shaded() const {
   const std::string& p = prefix_;
-  const std::string shade = p + "_tint(p, height.r) * " + p + "_value(p, height.r)";
-  if (!surface_)
-    return "  if (height.a <= 0.0) return vec4(0.0);\n"
-           "  return vec4(" + shade + ", height.a);\n";
+  const std::string shade = "  vec2 slopes = " + p + "_slopes(p, height.r);\n"
+                            "  vec3 shade = " + p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
+  if (!surface_) return "  if (height.a <= 0.0) return vec4(0.0);\n" + shade + "  return vec4(shade, height.a);\n";
   return "  vec4 surface = " + surface_->samplingFunction() + "(p);\n"
-         "  if (" + p + "_multiply == 0) return height.a > 0.0 ? vec4(" + shade + ", height.a) : vec4(0.0);\n"
-         "  if (height.a <= 0.0) return surface;\n"
-         "  return vec4(surface.rgb * mix(vec3(1.0), " + shade + ", height.a), surface.a);\n";
+         "  if (height.a <= 0.0) return " + p + "_multiply == 0 ? vec4(0.0) : surface;\n" + shade +
+         "  if (" + p + "_multiply == 0) return vec4(shade, height.a);\n"
+         "  return vec4(surface.rgb * mix(vec3(1.0), shade, height.a), surface.a);\n";
 }
 
 std::string ReliefLayer::glsl() const {

@@ -17,33 +17,34 @@ install_strata() {
     fail "$strata links '$core', not the libstrata_core in $prefix/lib"
 }
 
-# Builds EXAMPLE_DIR against the installed package into $work/NAME, making strata-NAME.so, with the warnings
-# Strata builds its own plugins with (cmake/StrataWarnings.cmake) as errors; GCC's
-# -Wmissing-field-initializers would flag every designated initializer that leaves a member to its default.
+# Builds EXAMPLE_DIR against the installed package into $work/NAME, where it must make ARTEFACT (a plugin
+# strata-NAME.so, or an application), with the warnings Strata builds its own code with
+# (cmake/StrataWarnings.cmake) as errors; GCC's -Wmissing-field-initializers would flag every designated
+# initializer that leaves a member to its default.
 build_example() {
-  local example=$1 name=$2
+  local example=$1 name=$2 artefact=$3
   step "build the $name example against the installed package, warnings as errors"
   cmake -S "$example" -B "$work/$name" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_CXX_FLAGS="-Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wno-missing-field-initializers -Werror"
   cmake --build "$work/$name" -j2
-  [[ -f $work/$name/strata-$name.so ]] || fail "the build made no strata-$name.so"
+  [[ -f $work/$name/$artefact ]] || fail "the build made no $artefact"
 }
 
 # Sets up the test of sdk/examples/NAME: a scratch directory $work, removed at exit (kept, to look into,
-# when KEEP_WORK is set); BUILD_DIR installed
-# into $prefix, whose command is $strata; the example ($example) built against it and its directory put on
-# STRATA_PLUGIN_PATH.
-#   set_up_example BUILD_DIR SOURCE_DIR NAME
+# when KEEP_WORK is set); BUILD_DIR installed into $prefix, whose command is $strata; the example
+# ($example) built against it, making ARTEFACT (by default the plugin strata-NAME.so, whose directory is
+# put on STRATA_PLUGIN_PATH).
+#   set_up_example BUILD_DIR SOURCE_DIR NAME [ARTEFACT]
 set_up_example() {
-  local build=$1 name=$3
+  local build=$1 name=$3 artefact=${4:-strata-$3.so}
   example=$2/sdk/examples/$name
   work=$(mktemp -d "${TMPDIR:-/tmp}/strata-sdk-test.XXXXXX")
   trap '[[ -n ${KEEP_WORK:-} ]] || rm -rf "$work"' EXIT
   prefix=$work/prefix
   strata=$prefix/bin/strata
   install_strata "$build"
-  build_example "$example" "$name"
-  export STRATA_PLUGIN_PATH=$work/$name
+  build_example "$example" "$name" "$artefact"
+  [[ $artefact != *.so ]] || export STRATA_PLUGIN_PATH=$work/$name
 }
 
 # One line "r g b" per pixel of an 8-bit image, row by row. (python3 here has no GDAL bindings; GDAL's XYZ

@@ -11,6 +11,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/page_cache.hpp>
 
+#include "engine/host_gl_state.hpp"
 #include "engine/live_parameter.hpp"
 #include "engine/node_graph.hpp"
 #include "engine/worker_pool.hpp"
@@ -137,6 +138,7 @@ const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
+  const HostGlState hostState;  // put back when the frame is done, or a node throws
   impl_->pages->update(*frame.body, frame.view, frame.index);
   for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)

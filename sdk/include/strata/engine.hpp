@@ -58,7 +58,9 @@ class Engine {
   // change it between frames to step or animate through time with no reload.
   std::optional<DayNumber>& date();
   // Renders one frame of width x height pixels and returns the pipeline's output. Paged layers show what
-  // the cache holds: pages still loading are stood in for by coarser ones.
+  // the cache holds: pages still loading are stood in for by coarser ones. The caller's framebuffer
+  // bindings, viewport and clip control are as they were when it returns; other GL state (programs,
+  // textures, depth test, blending) is the engine's, for the caller's drawing to set as it needs.
   const FrameOutput& render(int width, int height);
   // Renders until every page the view wants is loaded (or found unreadable) and returns the last frame:
   // for still images.

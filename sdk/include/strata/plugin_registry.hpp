@@ -52,7 +52,9 @@ class PluginRegistry : public PluginRegistrar {
 };
 
 // Where plugins are looked for: each entry of $STRATA_PLUGIN_PATH (colon-separated), then the plugin
-// directory beside the running program (<bin>/../lib/strata/plugins), then the install directory.
+// directory beside the running program (<bin>/../lib/strata/plugins), then the one beside the
+// libstrata_core it links (<lib>/strata/plugins: a host application built against an install finds that
+// install's plugins, wherever it was moved), then the directory Strata was configured to install into.
 std::vector<std::filesystem::path> defaultPluginDirectories();
 
 }  // namespace strata
