@@ -20,6 +20,7 @@ packages=(
   xvfb xauth                                    # window tests without a display
   libxtst-dev                                   # window tests send keys and pointer events (XTest)
   xplanet-images                                # the Earth image the demo drapes
+  doxygen                                       # the SDK's API reference (target sdk-reference)
 )
 
 missing=()
