@@ -1,5 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 
+// Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // In AddressSanitizer and ThreadSanitizer builds only (docs/robustness.md, "Sanitizers"): keeps every
@@ -12,3 +15,4 @@ namespace strata {
 void keepLoadedLibrariesResident();
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,9 +1,12 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstddef>
 #include <span>
 
 #include <strata/page_source.hpp>
 
+// Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
+STRATA_EXPORTS_BEGIN
 namespace strata::paging {
 
 // Fills one atlas slot (kPageSide x kPageSide texels) with page `key` of `source`: slot texel (i, j)
@@ -17,3 +20,4 @@ namespace strata::paging {
 void assemblePage(const PageSource& source, const PageKey& key, bool wrapX, std::span<std::byte> slot);
 
 }  // namespace strata::paging
+STRATA_EXPORTS_END

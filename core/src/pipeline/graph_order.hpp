@@ -1,8 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstddef>
 #include <vector>
 
 // Ordering a pipeline's nodes so that every node comes after its inputs.
+// Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
+STRATA_EXPORTS_BEGIN
 namespace strata::loader {
 
 // Nodes are numbered 0..n-1 in the order the file lists them; inputsOf[i] holds the nodes node i takes
@@ -22,3 +25,4 @@ struct DependencyOrder {
 DependencyOrder orderByDependencies(const InputGraph& inputsOf);
 
 }  // namespace strata::loader
+STRATA_EXPORTS_END

@@ -1,10 +1,13 @@
 #pragma once
+#include <strata/export.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 // "Did you mean" for names a user mistyped: keys, node ids, node types, choices.
+// Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
+STRATA_EXPORTS_BEGIN
 namespace strata::loader {
 
 // Edits (insert, delete, substitute, swap two neighbours) that turn one word into the other, ignoring
@@ -22,3 +25,4 @@ std::string didYouMean(std::string_view word, const std::vector<std::string>& ca
 std::string quotedList(const std::vector<std::string>& names);
 
 }  // namespace strata::loader
+STRATA_EXPORTS_END

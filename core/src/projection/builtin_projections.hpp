@@ -1,8 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <vector>
 
 #include <strata/projection.hpp>
 
+// Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The projections built into Strata (DESIGN.md "Projections"): equirectangular, polar-stereographic,
@@ -10,3 +13,4 @@ namespace strata {
 std::vector<ProjectionDeclaration> builtinProjections();
 
 }  // namespace strata
+STRATA_EXPORTS_END

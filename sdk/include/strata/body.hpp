@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The planet or moon a pipeline shows: a sphere of the given mean radius. Planet-fixed coordinates are
@@ -12,3 +14,4 @@ struct Body {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,8 +1,10 @@
 #pragma once
+#include <strata/export.hpp>
 #include <glm/glm.hpp>
 
 #include <strata/body.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Where a view looks from, as a user says it: above a point of the surface, turned and tilted.
@@ -48,3 +50,4 @@ glm::dvec3 unitNormal(double lonRad, double latRad);
 glm::dmat3 planetToLocal(glm::dvec2 lonlat);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -7,6 +8,7 @@
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A camera at a moment of a path, in seconds from the path's own zero.
@@ -58,3 +60,4 @@ CameraPath readCameraPath(const std::filesystem::path& file, const Body& body);
 CameraPath parseCameraPath(const std::string& text, const std::filesystem::path& fileName, const Body& body);
 
 }  // namespace strata
+STRATA_EXPORTS_END

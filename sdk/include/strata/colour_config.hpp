@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -6,6 +7,7 @@
 
 #include <strata/error.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Colour management through OpenColorIO (issue 8; docs/colour.md): an OCIO config, and the GLSL that converts
@@ -45,3 +47,4 @@ class ColourConfig {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

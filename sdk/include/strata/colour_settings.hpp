@@ -1,8 +1,10 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 
 #include <strata/error.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The pipeline's `colour:` section (docs/colour.md): which OpenColorIO config colours are managed with.
@@ -12,3 +14,4 @@ struct ColourSettings {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <memory>
 #include <string>
 
@@ -7,6 +8,7 @@
 
 class OGRSpatialReference;
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class PluginRegistry;
@@ -29,3 +31,4 @@ std::unique_ptr<Projection> geographicProjection(const PluginRegistry& plugins);
 std::string projStringOf(const OGRSpatialReference& crs);
 
 }  // namespace strata
+STRATA_EXPORTS_END

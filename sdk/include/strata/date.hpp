@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <optional>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A moment in UTC as days since 2000-01-01T00:00:00Z, negative before it: the unit time series are stepped
@@ -23,3 +25,4 @@ std::string formatIsoDate(DayNumber days);
 double yearFraction(DayNumber days);
 
 }  // namespace strata
+STRATA_EXPORTS_END

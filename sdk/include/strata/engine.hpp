@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -12,6 +13,7 @@
 #include <strata/pipeline.hpp>
 #include <strata/plugin_registry.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 struct EngineOptions {
@@ -85,3 +87,4 @@ class Engine {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <stdexcept>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Where something a user wrote lives: a file with line and column (1-based), or a pipeline node.
@@ -31,3 +33,4 @@ class Error : public std::runtime_error {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <optional>
 
@@ -6,6 +7,7 @@
 #include <strata/camera.hpp>
 #include <strata/date.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // What every node sees of the frame being made.
@@ -20,3 +22,4 @@ struct FrameState {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

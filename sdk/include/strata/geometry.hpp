@@ -1,8 +1,10 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 
 #include <strata/gl/framebuffer.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // What a geometry generator made and spent on its last frame (`strata render --stats`, the benchmarks).
@@ -30,3 +32,4 @@ class SurfaceGeometry {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

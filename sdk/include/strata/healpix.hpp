@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 // The HEALPix grid in double precision: the twelve base faces, the face-local coordinates the HEALPix terrain
 // generator (issue 6, digest 004) tessellates, the NESTED and RING pixel numbering of the HEALPix library
 // (Gorski et al. 2005, ApJ 622, 759), and the planar HEALPix projection (Calabretta & Roukema 2007, MNRAS
@@ -10,6 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata::healpix {
 
 // The largest nside the 64-bit pixel numbers hold (12 nside^2 < 2^63, as in the HEALPix library).
@@ -62,3 +64,4 @@ glm::dvec2 planeOf(const FacePoint& point);
 std::optional<FacePoint> faceOfPlane(glm::dvec2 xy);
 
 }  // namespace strata::healpix
+STRATA_EXPORTS_END

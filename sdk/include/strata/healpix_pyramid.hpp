@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 // The HEALPix pyramid that `strata tile --to healpix` writes and source.gdal pages from (issue 6; digest 004
 // section 1.1: twelve base faces, each a quadtree of tiles, NESTED numbering). One Cloud Optimized GeoTIFF
 // holds the twelve faces side by side, face f in columns [f nside, (f + 1) nside), each an nside x nside grid
@@ -21,6 +22,7 @@
 #include <strata/page_pyramid.hpp>
 #include <strata/projection.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata::healpix {
 
 // Metadata items (GDAL's default domain) that mark a file as a HEALPix pyramid and say how to read it.
@@ -103,3 +105,4 @@ class PageRanges {
 };
 
 }  // namespace strata::healpix
+STRATA_EXPORTS_END

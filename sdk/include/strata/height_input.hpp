@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <map>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 #include <strata/parameter.hpp>
 #include <strata/port.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Layer;
@@ -51,3 +53,4 @@ class HeightInput {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

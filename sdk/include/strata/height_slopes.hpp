@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Layer;
@@ -17,3 +19,4 @@ class Layer;
 std::string heightSlopesGlsl(const std::string& name, const Layer& height, const std::string& radius);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -8,6 +9,7 @@
 #include <strata/port.hpp>
 #include <strata/projection.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Node;
@@ -91,3 +93,4 @@ std::optional<ValueRange> spanningRange(const std::vector<const Layer*>& layers)
 std::string glslIdentifier(const std::string& nodeId);
 
 }  // namespace strata
+STRATA_EXPORTS_END

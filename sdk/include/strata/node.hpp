@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <strata/frame.hpp>
 #include <strata/parameter.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Layer;
@@ -72,3 +74,4 @@ class Node {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <strata/parameter.hpp>
 #include <strata/port.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Node;
@@ -35,3 +37,4 @@ struct NodeTypeDeclaration {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,9 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <vector>
 
 #include <strata/gl/framebuffer.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The end of a pipeline: a finished frame the host shows (a window) or saves (strata render).
@@ -23,3 +25,4 @@ void writePng(const std::filesystem::path& file, int width, int height,
               const std::vector<unsigned char>& rgba);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -11,6 +12,7 @@
 #include <strata/page_source.hpp>
 #include <strata/raster_georeference.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class ShaderProgram;
@@ -95,3 +97,4 @@ class PageCache {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,8 +1,10 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 
 #include <strata/error.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The pipeline's `cache:` section (docs/data.md, "How the cache is sized").
@@ -20,3 +22,4 @@ struct PageCacheSettings {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

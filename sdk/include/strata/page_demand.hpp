@@ -1,5 +1,7 @@
 #pragma once
+#include <strata/export.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // How much a layer's pages are wanted (composite.temporal_blend steps a series through its layers):
@@ -9,3 +11,4 @@ namespace strata {
 enum class PageDemand { Shown, Prefetched, Idle };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <compare>
 #include <cstddef>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Pages of 512x512 texels plus a 1-texel border copied from their neighbours, 514x514 in the cache, so
@@ -49,3 +51,4 @@ class PagePyramid {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstddef>
 #include <optional>
 #include <span>
@@ -8,6 +9,7 @@
 
 #include <strata/page_pyramid.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // How a page's texels are stored; both are 8 bytes a texel and carry coverage (0 at nodata) so that
@@ -59,3 +61,4 @@ class PageSource {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

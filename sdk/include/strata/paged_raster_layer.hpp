@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <memory>
 #include <string>
 
@@ -6,6 +7,7 @@
 #include <strata/page_cache.hpp>
 #include <strata/projected_raster_layer.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A layer sampled through the page cache (DESIGN.md "Data and paging"): like RasterLayer, per sample the
@@ -39,3 +41,4 @@ class PagedRasterLayer : public ProjectedRasterLayer {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

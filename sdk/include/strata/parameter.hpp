@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <map>
@@ -9,6 +10,7 @@
 
 #include <strata/error.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // DateList: ISO 8601 dates in the file (strata/date.hpp), held as their day numbers in a std::vector<double>.
@@ -63,3 +65,4 @@ class ParameterSet {
 std::string formatValue(const ParameterValue& value);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -13,6 +14,7 @@
 #include <strata/page_cache_settings.hpp>
 #include <strata/parameter.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class PluginRegistry;
@@ -53,3 +55,4 @@ Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fil
                        const std::vector<std::string>& overrides, const PluginRegistry& registry);
 
 }  // namespace strata
+STRATA_EXPORTS_END

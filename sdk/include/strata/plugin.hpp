@@ -1,9 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
 #include <strata/projection.hpp>
 #include <strata/version.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Receives the node types and projections a plugin provides.
@@ -15,6 +17,7 @@ class PluginRegistrar {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END
 
 // The one C entry point of a plugin module. The core reads abiVersion before it touches anything else,
 // so a plugin built against another SDK is refused cleanly instead of crashing.

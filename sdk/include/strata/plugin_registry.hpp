@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -6,6 +7,7 @@
 
 #include <strata/plugin.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The node types and projections known to an engine: the built-in projections, those of every plugin
@@ -58,3 +60,4 @@ class PluginRegistry : public PluginRegistrar {
 std::vector<std::filesystem::path> defaultPluginDirectories();
 
 }  // namespace strata
+STRATA_EXPORTS_END

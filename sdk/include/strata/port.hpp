@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // What a layer holds. Heights feed geometry; the other kinds are sampled per screen pixel.
@@ -29,3 +31,4 @@ struct PortDeclaration {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <array>
 #include <string>
 
@@ -7,6 +8,7 @@
 #include <strata/layer.hpp>
 #include <strata/raster_georeference.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class ShaderProgram;
@@ -66,3 +68,4 @@ class ProjectedRasterLayer : public Layer {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

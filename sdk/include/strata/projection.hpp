@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <array>
 #include <functional>
 #include <map>
@@ -10,6 +11,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The figure a projection is defined on: a sphere (inverseFlattening 0) or an oblate ellipsoid of
@@ -107,3 +109,4 @@ struct ProjectionDeclaration {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

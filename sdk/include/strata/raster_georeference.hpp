@@ -1,9 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <array>
 #include <memory>
 
 #include <strata/projection.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class PluginRegistry;
@@ -36,3 +38,4 @@ RasterGeoreference geographicGeoreference(const PluginRegistry& plugins, const G
                                           int height);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <array>
 #include <memory>
 #include <string>
@@ -8,6 +9,7 @@
 #include <strata/projected_raster_layer.hpp>
 #include <strata/raster_georeference.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A raster held in memory, ready for the GPU. Texels are row-major in the geotransform's row order, and
@@ -40,3 +42,4 @@ class RasterLayer : public ProjectedRasterLayer {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <glm/vec3.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A colour a pipeline gives as numbers (a relief's tint ramp, a peel's cut faces): red, green and blue
@@ -10,3 +12,4 @@ namespace strata {
 glm::vec3 srgbToSceneLinear(double red, double green, double blue);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -6,6 +7,7 @@
 
 #include <strata/error.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class PluginRegistry;
@@ -41,3 +43,4 @@ struct TilingResult {
 TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& request);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <memory>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // An OpenGL 4.5 core context, current on the thread that made it.
@@ -29,3 +31,4 @@ GlInfo currentGlInfo();
 void enableGlDebugOutput(bool verbose);
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,9 +1,11 @@
 #pragma once
+#include <strata/export.hpp>
 #include <vector>
 
 #include <strata/gl.hpp>
 #include <strata/gl/texture.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // An off-screen render target: colour attachments of the given formats and an optional depth attachment.
@@ -50,3 +52,4 @@ class FullscreenTriangle {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <strata/gl.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Times GPU work between begin() and end() with a GL_TIME_ELAPSED query, on the GL thread. Reading the
@@ -22,3 +24,4 @@ class GpuTimer {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

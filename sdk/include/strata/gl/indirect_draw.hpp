@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <cstdint>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // One draw of glMultiDrawElementsIndirect, laid out as OpenGL reads it from GL_DRAW_INDIRECT_BUFFER.
@@ -13,3 +15,4 @@ struct DrawElementsIndirectCommand {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

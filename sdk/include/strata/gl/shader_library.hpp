@@ -1,7 +1,9 @@
 #pragma once
+#include <strata/export.hpp>
 #include <map>
 #include <string>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Named GLSL sources. The built-in ones come from shaders/ (embedded at build time); plugins may add
@@ -23,3 +25,4 @@ class ShaderLibrary {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,4 +1,5 @@
 #pragma once
+#include <strata/export.hpp>
 #include <set>
 #include <string>
 #include <vector>
@@ -7,6 +8,7 @@
 
 #include <strata/gl.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A linked GLSL 4.50 program. A compile or link failure throws std::runtime_error quoting the driver's log
@@ -61,3 +63,4 @@ class TextureUnits {
 };
 
 }  // namespace strata
+STRATA_EXPORTS_END

@@ -1,6 +1,8 @@
 #pragma once
+#include <strata/export.hpp>
 #include <strata/gl.hpp>
 
+STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Owns one GL texture name (GL_TEXTURE_2D, immutable storage).
@@ -29,3 +31,4 @@ class Texture {
 int mipLevels(int width, int height);
 
 }  // namespace strata
+STRATA_EXPORTS_END
