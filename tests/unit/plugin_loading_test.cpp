@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include <strata/node.hpp>
 #include <strata/plugin_registry.hpp>
@@ -82,6 +83,17 @@ TEST(PluginLoading, FileThatIsNoSharedObjectIsRefused) {
 TEST(PluginLoading, MissingDirectoriesAreSkipped) {
   PluginRegistry registry;
   registry.loadDirectories({"/nonexistent/strata/plugins", STRATA_TEST_PLUGIN_DIR});
+  EXPECT_NE(registry.find("source.gdal"), nullptr);
+}
+
+// The test program's plugin directory beside it and the one beside libstrata_core are the same directory
+// (build/lib/strata/plugins): it is searched once, and each module loads once.
+TEST(PluginLoading, DefaultDirectoriesLoadEachModuleOnce) {
+  PluginRegistry registry;
+  registry.loadDirectories(defaultPluginDirectories());
+  std::set<fs::path> files;
+  for (const PluginRegistry::Module& module : registry.modules())
+    EXPECT_TRUE(files.insert(fs::weakly_canonical(module.file)).second) << module.file << " loaded twice";
   EXPECT_NE(registry.find("source.gdal"), nullptr);
 }
 

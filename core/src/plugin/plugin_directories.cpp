@@ -18,6 +18,18 @@ std::filesystem::path coreLibraryFile() {
   return error ? std::filesystem::path() : file;
 }
 
+// Adds `directory` unless it is one already listed under another spelling (an installed strata's program
+// and its libstrata_core name the same <prefix>/lib/strata/plugins), so that no module loads twice.
+void addDirectory(std::vector<std::filesystem::path>& directories, const std::filesystem::path& directory) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(directory, error);
+  for (const std::filesystem::path& listed : directories) {
+    std::error_code listedError;
+    if (!error && std::filesystem::weakly_canonical(listed, listedError) == canonical && !listedError) return;
+  }
+  directories.push_back(directory);
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> defaultPluginDirectories() {
@@ -26,16 +38,16 @@ std::vector<std::filesystem::path> defaultPluginDirectories() {
     std::istringstream entries(path);
     std::string entry;
     while (std::getline(entries, entry, ':'))
-      if (!entry.empty()) directories.emplace_back(entry);
+      if (!entry.empty()) addDirectory(directories, entry);
   }
   std::error_code error;
   auto program = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) directories.push_back(program.parent_path().parent_path() / STRATA_RELATIVE_PLUGIN_DIR);
+  if (!error) addDirectory(directories, program.parent_path().parent_path() / STRATA_RELATIVE_PLUGIN_DIR);
   // The plugins lie in strata/plugins beside libstrata_core, in an install (STRATA_PLUGIN_SUBDIR) as in
   // the build tree.
   if (const std::filesystem::path core = coreLibraryFile(); !core.empty())
-    directories.push_back(core.parent_path() / "strata" / "plugins");
-  directories.emplace_back(STRATA_INSTALL_PLUGIN_DIR);
+    addDirectory(directories, core.parent_path() / "strata" / "plugins");
+  addDirectory(directories, STRATA_INSTALL_PLUGIN_DIR);
   return directories;
 }
 
