@@ -68,6 +68,14 @@ panel=$(mean_difference "$work/start.png" "$work/start-reference.png" 10 200)
 echo "left: mean difference $panel levels from strata render"
 at_most 10 "$panel" || fail "no panel drawn over the top left (only $panel levels from the bare frame)"
 
+# The sample scene built in code (sample_scene.cpp) is mars_explorer.yaml's pipeline: the same engine on
+# the same kind of context draws the same window, panel included, to the level (bound 0).
+step "the explorer with no file shows the sample scene it builds in code, the scene of mars_explorer.yaml"
+xvfb-run -a -s "-screen 0 1024x768x24" "$explorer" --size 640x360 --screenshot "$work/built.png"
+built=$(mean_difference "$work/built.png" "$work/start.png" 0 640)
+echo "whole window: mean difference $built levels from the file's"
+at_most "$built" 0 || fail "the scene built in code differs from mars_explorer.yaml's ($built levels apart)"
+
 # Each control changes the scene as the same change made with --set does, and changes what is seen: by at
 # least a level on average, where the same scene measures 0.00 (measured 3.84 with the dust hidden, 2.39 in
 # July, 49.7 from closer).

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <set>
 #include <string>
 #include <thread>
@@ -10,6 +11,7 @@
 #include <strata/output.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/page_cache.hpp>
+#include <strata/pipeline_builder.hpp>
 
 #include "engine/host_gl_state.hpp"
 #include "engine/live_parameter.hpp"
@@ -26,6 +28,7 @@ struct Engine::Impl {
   WorkerPool workers;
   ShaderLibrary shaders;
   std::unique_ptr<Pipeline> pipeline;
+  std::optional<PipelineBuilder> builder;  // the pipeline's when it was built in code; none: read from its file
   std::vector<std::string> overrides;  // the pipeline's, as load() and set() were given them
   std::unique_ptr<PageCache> pages;
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
@@ -69,7 +72,19 @@ Engine::~Engine() = default;
 PluginRegistry& Engine::plugins() { return impl_->registry; }
 
 void Engine::load(const std::filesystem::path& file, const std::vector<std::string>& overrides) {
-  auto pipeline = std::make_unique<Pipeline>(loadPipeline(file, overrides, impl_->registry));
+  install(loadPipeline(file, overrides, impl_->registry), overrides);
+  impl_->builder.reset();
+}
+
+void Engine::load(const PipelineBuilder& pipeline, const std::vector<std::string>& overrides) {
+  install(pipeline.build(impl_->registry, overrides), overrides);
+  impl_->builder = pipeline;
+}
+
+// Makes the pipeline's nodes and their resources, then puts them in place of the loaded ones: whatever
+// throws leaves the engine as it was.
+void Engine::install(Pipeline loaded, const std::vector<std::string>& overrides) {
+  auto pipeline = std::make_unique<Pipeline>(std::move(loaded));
   for (const ProjectionDeclaration* projection : impl_->registry.projections())
     for (const auto& [name, source] : projection->shaderSources) impl_->shaders.add(name, source);
   auto pages = std::make_unique<PageCache>(pipeline->cache);
@@ -87,6 +102,12 @@ void Engine::load(const std::filesystem::path& file, const std::vector<std::stri
   impl_->sourcesAdvised.clear();
 }
 
+// The loaded pipeline read again from where it came from, its file or its builder, with `overrides`.
+Pipeline Engine::read(const std::vector<std::string>& overrides) const {
+  if (impl_->builder) return impl_->builder->build(impl_->registry, overrides);
+  return loadPipeline(impl_->pipeline->file, overrides, impl_->registry);
+}
+
 bool Engine::set(const std::string& override) {
   if (!impl_->pipeline) throw std::logic_error("Engine::set() before a pipeline was loaded");
   if (const std::optional<LiveChange> change = liveChange(override, *impl_->pipeline, impl_->registry)) {
@@ -97,22 +118,22 @@ bool Engine::set(const std::string& override) {
   }
   std::vector<std::string> overrides = impl_->overrides;
   overrides.push_back(override);
-  reloadWith(loadPipeline(impl_->pipeline->file, overrides, impl_->registry), overrides);
+  reloadWith(read(overrides), overrides);
   return false;
 }
 
 void Engine::reload() {
   if (!impl_->pipeline) throw std::logic_error("Engine::reload() before a pipeline was loaded");
-  reloadWith(loadPipeline(impl_->pipeline->file, impl_->overrides, impl_->registry), impl_->overrides);
+  reloadWith(read(impl_->overrides), impl_->overrides);
 }
 
-// Loads the pipeline's file again with `overrides`, which give `changed`; the camera and the date a user
+// Puts `changed` (the pipeline read again with `overrides`) in place; the camera and the date a user
 // moved stay where `changed` leaves them as the pipeline had them.
-void Engine::reloadWith(const Pipeline& changed, const std::vector<std::string>& overrides) {
+void Engine::reloadWith(Pipeline changed, const std::vector<std::string>& overrides) {
   const Camera camera = impl_->camera;
   const std::optional<DayNumber> date = impl_->date;
   const bool keepCamera = changed.camera == impl_->pipeline->camera, keepDate = changed.date == impl_->pipeline->date;
-  load(impl_->pipeline->file, overrides);
+  install(std::move(changed), overrides);
   if (keepCamera) impl_->camera = camera;
   if (keepDate) impl_->date = date;
 }

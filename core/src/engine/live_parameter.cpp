@@ -35,14 +35,14 @@ std::optional<LiveChange> liveChange(const std::string& override, const Pipeline
   const ParameterDeclaration* declared = type ? type->findParameter(path->name) : nullptr;
   if (!declared || !declared->live) return std::nullopt;
   // The override applied to a tree holding just that entry, so its value and its errors are --set's.
-  loader::SourceMap source(pipeline.file.string());
+  loader::SourceMap source(pipeline.name);
   YAML::Node root;
   root["nodes"][path->node][path->name] = YAML::Node();
   loader::applyOverrides(root, {override}, source);
   const YAML::Node value = root["nodes"][path->node][path->name];
   LiveChange change{path->node, node->parameters};
   const loader::ValueContext context{source, "parameter '" + path->name + "'", path->node};
-  change.parameters.set(path->name, loader::parseParameter(value, *declared, context, pipeline.file.parent_path()),
+  change.parameters.set(path->name, loader::parseParameter(value, *declared, context, pipeline.directory),
                         source.at(value, path->node));
   return change;
 }

@@ -64,7 +64,7 @@ void NodeGraph::make(const Pipeline& pipeline, const PluginRegistry& registry) {
   for (const NodeDescription& description : pipeline.nodes) {
     const NodeTypeDeclaration& type = *registry.find(description.type);
     NodeSetup setup{description.id, description.where, description.parameters, {}, &pipeline.body,
-                    pipeline.file.parent_path(), &registry, pipeline.date, pipeline.colour};
+                    pipeline.directory, &registry, pipeline.date, pipeline.colour};
     int depth = 0;
     for (const auto& [port, ids] : description.inputs)
       for (const std::string& id : ids) {

@@ -17,21 +17,12 @@ Error overrideError(const Override& entry, const std::string& problem, const std
   return Error(SourceLocation{kOverrideFile}, "cannot apply --set '" + entry.text + "': " + problem, fix);
 }
 
-std::vector<std::string> splitPath(const std::string& path) {
-  std::vector<std::string> keys;
-  std::size_t start = 0;
-  for (std::size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
-    keys.push_back(path.substr(start, dot - start));
-  keys.push_back(path.substr(start));
-  return keys;
-}
-
 Override parseOverride(const std::string& text) {
   const std::size_t equals = text.find('=');
   Override entry{text, {}, {}};
   const std::string fix = "write --set PATH=VALUE, e.g. --set camera.altitude=5000";
   if (equals == std::string::npos) throw overrideError(entry, "it has no '='", fix);
-  entry.path = splitPath(text.substr(0, equals));
+  entry.path = splitKeyPath(text.substr(0, equals));
   entry.value = text.substr(equals + 1);
   for (const auto& key : entry.path)
     if (key.empty()) throw overrideError(entry, "PATH has an empty key", fix);
@@ -87,6 +78,15 @@ YAML::Node parentMap(const YAML::Node& root, const Override& entry) {
 }
 
 }  // namespace
+
+std::vector<std::string> splitKeyPath(const std::string& path) {
+  std::vector<std::string> keys;
+  std::size_t start = 0;
+  for (std::size_t dot; (dot = path.find('.', start)) != std::string::npos; start = dot + 1)
+    keys.push_back(path.substr(start, dot - start));
+  keys.push_back(path.substr(start));
+  return keys;
+}
 
 void applyOverrides(YAML::Node& root, const std::vector<std::string>& overrides, SourceMap& source) {
   for (const auto& text : overrides) {

@@ -8,6 +8,9 @@
 
 namespace strata::loader {
 
+// The keys of a dot-separated PATH ("nodes.relief.scale"), empty ones included for the caller to refuse.
+std::vector<std::string> splitKeyPath(const std::string& path);
+
 // Applies --set overrides to the pipeline's YAML tree before it is validated, so an overridden value is
 // checked exactly like one written in the file. Each override is "PATH=VALUE":
 //  - PATH is dot-separated keys from the top of the file (camera.altitude, nodes.relief.scale). Every

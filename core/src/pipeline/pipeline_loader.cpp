@@ -22,6 +22,7 @@
 
 #include "pipeline/graph_checks.hpp"
 #include "pipeline/overrides.hpp"
+#include "pipeline/pipeline_document.hpp"
 #include "pipeline/scene_parsing.hpp"
 #include "pipeline/text_file.hpp"
 #include "pipeline/value_reading.hpp"
@@ -69,39 +70,43 @@ std::vector<NodeDescription> parseNodes(const YAML::Node& root, const loader::No
   return loader::connectNodes(std::move(parsed), nodes, context.source);
 }
 
-std::filesystem::path baseDirectory(const std::filesystem::path& file) {
-  return file.empty() ? std::filesystem::current_path() : std::filesystem::absolute(file).parent_path();
-}
-
 // After the overrides, the document is only read: through a const node, since yaml-cpp's non-const
 // operator[] adds the keys it looks up.
-Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const std::filesystem::path& file,
+Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const loader::DocumentOrigin& origin,
                       const PluginRegistry& registry) {
   loader::requireUniqueKeys(root, source, "key");
   loader::requireKnownKeys(root, kTopLevelKeys, source, "the pipeline");
   Pipeline pipeline;
-  pipeline.file = file;
+  pipeline.file = origin.file;
+  pipeline.name = origin.name;
+  pipeline.directory = origin.directory;
   pipeline.version = parseVersion(root, source);
   if (const YAML::Node body = root["body"]) pipeline.body = loader::parseBody(body, source);
   if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
-  pipeline.cache.where = {file.string()};
+  pipeline.cache.where = {origin.name};
   if (const YAML::Node cache = root["cache"]) pipeline.cache = loader::parseCache(cache, source);
-  if (const YAML::Node colour = root["colour"]) pipeline.colour = loader::parseColour(colour, source, baseDirectory(file));
+  if (const YAML::Node colour = root["colour"]) pipeline.colour = loader::parseColour(colour, source, origin.directory);
   if (const YAML::Node date = root["date"]) pipeline.date = loader::readDate(date, {source, "the scene's 'date'", ""});
-  pipeline.nodes = parseNodes(root, {source, registry, baseDirectory(file)});
+  pipeline.nodes = parseNodes(root, {source, registry, origin.directory});
   return pipeline;
 }
 
-
 }  // namespace
+
+Pipeline loader::readPipelineDocument(YAML::Node root, const DocumentOrigin& origin,
+                                      const std::vector<std::string>& overrides, const PluginRegistry& registry) {
+  SourceMap source(origin.name, origin.lines);
+  requireRootMap(root, source);
+  applyOverrides(root, overrides, source);
+  return readDocument(root, source, origin, registry);
+}
 
 Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
                        const std::vector<std::string>& overrides, const PluginRegistry& registry) {
-  SourceMap source(fileName.string());
-  YAML::Node root = loader::parseYamlText(text, fileName.string());
-  requireRootMap(root, source);
-  loader::applyOverrides(root, overrides, source);
-  return readDocument(root, source, fileName, registry);
+  const std::filesystem::path directory =
+      fileName.empty() ? std::filesystem::current_path() : std::filesystem::absolute(fileName).parent_path();
+  return loader::readPipelineDocument(loader::parseYamlText(text, fileName.string()),
+                                      {fileName, fileName.string(), directory}, overrides, registry);
 }
 
 Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::string>& overrides,

@@ -31,12 +31,12 @@ const std::string* SourceMap::overrideOf(const YAML::Node& node) const {
 SourceLocation SourceMap::at(const YAML::Node& node, const std::string& nodeId) const {
   if (overrideOf(node)) return SourceLocation{kOverrideFile, 0, 0, nodeId};
   const YAML::Mark mark = node.Mark();
-  if (mark.is_null()) return SourceLocation{file_, 0, 0, nodeId};
+  if (!lines_ || mark.is_null()) return SourceLocation{file_, 0, 0, nodeId};
   return SourceLocation{file_, mark.line + 1, mark.column + 1, nodeId};  // yaml-cpp counts from 0
 }
 
 const YAML::Node& SourceMap::entryAnchor(const YAML::Node& key, const YAML::Node& value) const {
-  return key.Mark().is_null() || overrideOf(value) ? value : key;
+  return !lines_ || key.Mark().is_null() || overrideOf(value) ? value : key;
 }
 
 SourceLocation SourceMap::atEntry(const YAML::Node& key, const YAML::Node& value, const std::string& nodeId) const {

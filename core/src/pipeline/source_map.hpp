@@ -14,7 +14,9 @@ namespace strata::loader {
 // by identity instead (yaml-cpp's Node::is), which also covers the nodes inside an overriding value.
 class SourceMap {
  public:
-  explicit SourceMap(std::string file) : file_(std::move(file)) {}
+  // `lines`: whether the document's nodes carry lines and columns; one built in code
+  // (PipelineBuilder) has none, and its messages name the node alone.
+  explicit SourceMap(std::string file, bool lines = true) : file_(std::move(file)), lines_(lines) {}
 
   // Records that `value` (now part of the tree) was set by the override `text` ("camera.altitude=5").
   void addOverride(const YAML::Node& value, std::string text);
@@ -35,6 +37,7 @@ class SourceMap {
   const YAML::Node& entryAnchor(const YAML::Node& key, const YAML::Node& value) const;
 
   std::string file_;
+  bool lines_;
   std::vector<std::pair<YAML::Node, std::string>> overrides_;
 };
 

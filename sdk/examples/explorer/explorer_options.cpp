@@ -34,7 +34,7 @@ void readSize(const std::string& text, ExplorerOptions& options) {
 }  // namespace
 
 std::string usage() {
-  return "usage: mars-explorer PIPELINE.yaml [--size WxH] [--hide LAYER]... [--date YYYY-MM-DD]\n"
+  return "usage: mars-explorer [PIPELINE.yaml] [--size WxH] [--hide LAYER]... [--date YYYY-MM-DD]\n"
          "                     [--altitude METRES] [--screenshot FILE.png [--frames N]]\n";
 }
 
@@ -52,7 +52,6 @@ ExplorerOptions parseOptions(int argc, char** argv) {
     else if (options.pipeline.empty()) options.pipeline = argument;
     else throw std::invalid_argument("one pipeline only, not also " + argument);
   }
-  if (options.pipeline.empty()) throw std::invalid_argument("give a pipeline file");
   if (options.frames < 1) throw std::invalid_argument("--frames must be at least 1");
   return options;
 }

@@ -9,7 +9,7 @@ namespace explorer {
 // What the command line asks for. Each setting is one the panel also makes, so that a script (or a test)
 // can start the explorer where a user would click to.
 struct ExplorerOptions {
-  std::filesystem::path pipeline;
+  std::filesystem::path pipeline;  // empty: the sample scene, built in code (sample_scene.hpp)
   int width = 1280;   // window size, pixels: 720p fits a laptop's screen with room to spare
   int height = 720;
   std::vector<std::string> hidden;      // layers of the output's surface list to start unticked

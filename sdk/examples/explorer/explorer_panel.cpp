@@ -15,7 +15,7 @@ const strata::NodeDescription& outputNode(strata::Engine& engine) {
     const strata::NodeTypeDeclaration* type = engine.plugins().find(node.type);
     if (type && type->category == strata::NodeCategory::Output && node.inputs.contains("surface")) return node;
   }
-  throw std::runtime_error(engine.pipeline().file.string() + ": no output node with a `surface` list to explore");
+  throw std::runtime_error(engine.pipeline().name + ": no output node with a `surface` list to explore");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "explorer_options.hpp"
 #include "explorer_panel.hpp"
 #include "explorer_window.hpp"
+#include "sample_scene.hpp"
 
 namespace explorer {
 namespace {
@@ -40,7 +41,8 @@ void drawFrame(strata::Engine& engine, ExplorerWindow& window, ExplorerPanel& pa
 int run(const ExplorerOptions& options) {
   ExplorerWindow window(options.width, options.height, "Mars explorer");
   strata::Engine engine;  // on the window's context, current on this thread: every call stays on it
-  engine.load(options.pipeline);
+  if (options.pipeline.empty()) engine.load(sampleScene());
+  else engine.load(options.pipeline);
   ExplorerPanel panel(engine);
   applyOptions(options, panel);
   for (int frames = 1; window.open(); ++frames) {

@@ -16,6 +16,8 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
+class PipelineBuilder;
+
 struct EngineOptions {
   std::vector<std::filesystem::path> pluginDirectories;  // empty: defaultPluginDirectories()
   unsigned workerThreads = 0;                            // 0: one per hardware thread
@@ -42,6 +44,10 @@ class Engine {
   // Validates the pipeline, makes its nodes, reads their data (worker threads) and creates their GPU
   // resources. Throws strata::Error; on failure the previously loaded pipeline stays.
   void load(const std::filesystem::path& pipeline, const std::vector<std::string>& overrides = {});
+  // The same for a pipeline built in code (strata/pipeline_builder.hpp). The engine keeps a copy of the
+  // builder, which set() and reload() build again; later changes to `pipeline` reach the engine only
+  // through another load().
+  void load(const PipelineBuilder& pipeline, const std::vector<std::string>& overrides = {});
   bool loaded() const;
   // Changes the loaded pipeline as an override "PATH=VALUE" would (--set; nodes.relief.azimuth=135),
   // validated the same way. A node parameter declared live (ParameterDeclaration::live) takes effect in the
@@ -50,7 +56,8 @@ class Engine {
   // Throws strata::Error as load() does; the pipeline then stays as it was.
   bool set(const std::string& override);
   // Loads the pipeline's file again, with the overrides load() and set() were given: after the file was
-  // edited. Keeps the camera and the date unless the file changed them. Throws strata::Error as load()
+  // edited. A pipeline built in code is built again from the engine's copy, which reads its data files
+  // again. Keeps the camera and the date unless the file changed them. Throws strata::Error as load()
   // does; the pipeline then stays as it was.
   void reload();
   const Pipeline& pipeline() const;
@@ -80,7 +87,9 @@ class Engine {
  private:
   const FrameOutput& renderFrame(int width, int height, bool still);
   const FrameOutput& renderLoaded(int width, int height, bool still);
-  void reloadWith(const Pipeline& changed, const std::vector<std::string>& overrides);
+  void install(Pipeline pipeline, const std::vector<std::string>& overrides);
+  Pipeline read(const std::vector<std::string>& overrides) const;
+  void reloadWith(Pipeline changed, const std::vector<std::string>& overrides);
 
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -31,7 +31,9 @@ struct NodeDescription {
 
 // A validated pipeline: a body, a camera and an acyclic graph of nodes whose types are registered.
 struct Pipeline {
-  std::filesystem::path file;
+  std::filesystem::path file;       // the file it was read from; empty when built in code (PipelineBuilder)
+  std::string name;                 // what messages call it: the file's path as given, or the builder's name
+  std::filesystem::path directory;  // where its relative paths resolve: the file's directory, or the builder's
   int version = 1;
   Body body;
   Camera camera;
