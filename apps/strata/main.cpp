@@ -1,4 +1,5 @@
-// strata: render pipelines headless, view them in a window, time them, list plugins, describe the machine.
+// strata: render pipelines headless, view them in a window, time them, list plugins, project points,
+// describe the machine.
 #include <CLI/CLI.hpp>
 
 #include <strata/version.hpp>
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   strata::cli::addPluginsCommand(app, exitCode);
   strata::cli::addTileCommand(app, exitCode);
   strata::cli::addBenchCommand(app, exitCode);
+  strata::cli::addProjectCommand(app, exitCode);
   strata::cli::addInfoCommand(app, exitCode);
   try {
     app.parse(argc, argv);

@@ -309,7 +309,7 @@ TEST_F(StrataCommandTest, CommandLineMistakesExitWithOne) {
 TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
   const CommandResult result = run({"--help"});
   EXPECT_EQ(result.exitCode, 0) << result.err;
-  for (const char* command : {"render", "view", "bench", "plugins", "info"})
+  for (const char* command : {"render", "view", "bench", "plugins", "project", "info"})
     EXPECT_TRUE(contains(result.out, command)) << "no " << command << " in:\n" << result.out;
 }
 
@@ -334,6 +334,38 @@ TEST_F(StrataCommandTest, PluginsRefusesToDescribeAnUnknownType) {
   EXPECT_EQ(result.exitCode, 1) << result.err;
   EXPECT_TRUE(contains(result.err, "'nosuch'")) << result.err;
   EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
+}
+
+// --- project ----------------------------------------------------------------------------------------
+
+// On a sphere of radius R the equirectangular map is x = R lon, y = R lat (radians): (10, 40) degrees on
+// the Earth's sphere is (1111949.2664455874, 4447797.0657823496) m, printed to the last digit a double
+// holds. The far side of an orthographic view is no point of its map.
+TEST_F(StrataCommandTest, ProjectMapsPointsThroughAProjectionAndBack) {
+  const std::string earth = " +R=6371000";
+  const CommandResult forward =
+      run({"project", "+proj=eqc" + earth, write("points.txt", "10 40\n\n-170 -60\n").string()});
+  ASSERT_EQ(forward.exitCode, 0) << forward.err;
+  EXPECT_EQ(forward.out, "1111949.2664455874 4447797.0657823496\n-18903137.529574987 -6671695.5986735234\n");
+  const CommandResult inverse = run({"project", "--inverse", "+proj=eqc" + earth,
+                                     write("xy.txt", "1111949.2664455874 4447797.0657823496\n").string()});
+  ASSERT_EQ(inverse.exitCode, 0) << inverse.err;
+  EXPECT_EQ(inverse.out, "10 40\n");
+  const CommandResult farSide = run({"project", "+proj=ortho +lat_0=0 +lon_0=0" + earth,
+                                     write("far.txt", "120 0\n").string()});
+  ASSERT_EQ(farSide.exitCode, 0) << farSide.err;
+  EXPECT_EQ(farSide.out, "outside\n");
+}
+
+TEST_F(StrataCommandTest, ProjectNamesTheLineItCannotRead) {
+  const auto points = write("points.txt", "10 40\nten forty\n");
+  const CommandResult result = run({"project", "+proj=eqc +R=6371000", points.string()});
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, points.string() + ":2:1: error: not two numbers: 'ten forty'")) << result.err;
+  EXPECT_TRUE(contains(result.err, "\n  fix: write LON LAT in degrees")) << result.err;
+  const CommandResult unknown = run({"project", "+proj=sinu +R=6371000", points.string()});
+  EXPECT_EQ(unknown.exitCode, 1) << unknown.err;
+  EXPECT_TRUE(contains(unknown.err, "is not one of the projections Strata composes")) << unknown.err;
 }
 
 TEST_F(StrataCommandTest, InfoNamesTheLibrariesAndTheRenderer) {

@@ -7,6 +7,7 @@
 //   lon = lon_0 + (x - x_0) / (R cos(lat)).
 // PROJ's sinu takes these equations on a sphere; on an ellipsoid it uses the meridian distance instead,
 // which this example leaves out (the CRS is refused with how to state it on a sphere).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
@@ -50,14 +51,18 @@ class Sinusoidal final : public strata::Projection {
     return radius_ * glm::dvec2(lon * std::cos(lonlat.y), lonlat.y) + origin_;
   }
 
-  // Empty outside the lens |x - x_0| <= pi R cos(lat) (the corners of a raster around it); at the poles,
-  // where a whole parallel is one point, the central meridian.
+  // Empty outside the lens |x - x_0| <= pi R cos(lat), |y - y_0| <= pi R / 2 (the corners of a raster
+  // around it), give or take 1e-12 R (micrometres): the lens closes at the poles, and a pole's point a
+  // rounding off it is still the pole. At the poles, where a whole parallel is one point, any longitude
+  // is right: the central meridian, or one clamped to the lens.
   std::optional<glm::dvec2> inverse(glm::dvec2 xy) const override {
-    const glm::dvec2 plane = (xy - origin_) / radius_;
-    if (!(std::abs(plane.y) <= kPi / 2) || !std::isfinite(plane.x)) return std::nullopt;
+    constexpr double kRounding = 1e-12;
+    glm::dvec2 plane = (xy - origin_) / radius_;
+    if (!(std::abs(plane.y) <= kPi / 2 + kRounding) || !std::isfinite(plane.x)) return std::nullopt;
+    plane.y = std::clamp(plane.y, -kPi / 2, kPi / 2);
     const double parallel = std::cos(plane.y);  // the parallel's length over the equator's
-    if (std::abs(plane.x) > kPi * parallel * (1.0 + 1e-12)) return std::nullopt;
-    const double lon = parallel > 0.0 ? plane.x / parallel : 0.0;
+    if (std::abs(plane.x) > kPi * parallel + kRounding) return std::nullopt;
+    const double lon = parallel > 0.0 ? std::clamp(plane.x / parallel, -kPi, kPi) : 0.0;
     return glm::dvec2(lon0_ + lon, plane.y);
   }
 
