@@ -129,6 +129,15 @@ TEST_F(PipelineBuilderTest, ACopyChangesApartFromItsOriginal) {
   copy.set("nodes.relief.scale", 20);
   EXPECT_DOUBLE_EQ(original.build(registry_).find("relief")->parameters.real("scale"), 300.0);
   EXPECT_DOUBLE_EQ(copy.build(registry_).find("relief")->parameters.real("scale"), 20.0);
+  PipelineBuilder assigned("other", directory_.path());
+  assigned = original;
+  assigned.set("nodes.relief.scale", 40);
+  EXPECT_EQ(assigned.name(), "mars-explorer");
+  EXPECT_DOUBLE_EQ(assigned.build(registry_).find("relief")->parameters.real("scale"), 40.0);
+  EXPECT_DOUBLE_EQ(original.build(registry_).find("relief")->parameters.real("scale"), 300.0);
+  PipelineBuilder moved = std::move(copy);
+  copy.set("nodes.relief.scale", 50);  // a builder moved from is a copy still, never empty
+  EXPECT_DOUBLE_EQ(moved.build(registry_).find("relief")->parameters.real("scale"), 20.0);
 }
 
 TEST_F(PipelineBuilderTest, ValuesAreReadAsTheSameTextInAFileWouldBe) {

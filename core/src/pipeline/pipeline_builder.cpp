@@ -62,16 +62,17 @@ PipelineBuilder::~PipelineBuilder() = default;
 
 PipelineBuilder::PipelineBuilder(const PipelineBuilder& other)
     : name_(other.name_), directory_(other.directory_), document_(std::make_unique<Document>()) {
-  document_->root = YAML::Clone(other.document_->root);  // yaml-cpp nodes share their data when copied
+  document_->root.reset(YAML::Clone(other.document_->root));  // yaml-cpp nodes share their data when copied
 }
 
 PipelineBuilder& PipelineBuilder::operator=(const PipelineBuilder& other) {
-  if (this != &other) *this = PipelineBuilder(other);
+  if (this != &other) {
+    name_ = other.name_;
+    directory_ = other.directory_;
+    document_->root.reset(YAML::Clone(other.document_->root));
+  }
   return *this;
 }
-
-PipelineBuilder::PipelineBuilder(PipelineBuilder&& other) noexcept = default;
-PipelineBuilder& PipelineBuilder::operator=(PipelineBuilder&& other) noexcept = default;
 
 PipelineBuilder& PipelineBuilder::set(const std::string& path, PipelineValue value) {
   const std::vector<std::string> keys = loader::splitKeyPath(path);

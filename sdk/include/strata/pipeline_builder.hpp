@@ -37,10 +37,9 @@ class PipelineBuilder {
   // `directory` (empty: the current directory, taken now).
   explicit PipelineBuilder(std::string name, const std::filesystem::path& directory = {});
   ~PipelineBuilder();
-  PipelineBuilder(const PipelineBuilder& other);  // a deep copy: changing one leaves the other
+  // A deep copy: changing one leaves the other. Moves copy too, so that no builder is ever left empty.
+  PipelineBuilder(const PipelineBuilder& other);
   PipelineBuilder& operator=(const PipelineBuilder& other);
-  PipelineBuilder(PipelineBuilder&& other) noexcept;
-  PipelineBuilder& operator=(PipelineBuilder&& other) noexcept;
 
   // Writes `value` at `path`: dot-separated keys from the top of the document, as in a --set override
   // ("camera.altitude", "nodes.relief.scale"). Maps on the way are made as needed; a value already there
