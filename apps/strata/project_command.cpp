@@ -1,6 +1,6 @@
 // strata project: what Strata's projection of a CRS, built in or a plugin's, makes of points, so that a
 // projection's author can hold its C++ forward and inverse against PROJ's (gdaltransform) without writing
-// a program (docs/projections.md, "Implementing a new projection").
+// a program (docs/sdk/writing-a-projection.md, "Testing it").
 #include <cmath>
 #include <cstdio>
 #include <fstream>
