@@ -28,8 +28,9 @@ using PipelineValue =
 //   strata::PipelineBuilder pipeline("mars-explorer", dataDirectory);
 //   pipeline.set("body.name", "Mars").set("body.radius", 3396190.0);
 //   pipeline.node("heights", "source.gdal", {{"path", "mola.tif"}, {"kind", "height"}});
+//   pipeline.node("imagery", "source.gdal", {{"path", "viking.tif"}});
 //   pipeline.node("globe", "geometry.icosahedral", {{"height", "heights"}});
-//   pipeline.node("frame", "output.image", {{"geometry", "globe"}, {"surface", std::vector<std::string>{"heights"}}});
+//   pipeline.node("frame", "output.image", {{"geometry", "globe"}, {"surface", std::vector<std::string>{"imagery"}}});
 //   engine.load(pipeline);
 class PipelineBuilder {
  public:
