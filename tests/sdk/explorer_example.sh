@@ -23,11 +23,19 @@ if "$explorer" "$pipeline" --frames none 2>"$work/usage.txt"; then fail "--frame
 cat "$work/usage.txt"
 grep -q "usage: mars-explorer" "$work/usage.txt" || fail "no usage text for a wrong option"
 
-# Screenshot SETTINGS... into NAME.png: the explorer under Xvfb, 640x360, started with the settings.
+# Explorer NAME ARGUMENTS...: the explorer under Xvfb, 640x360, started with the arguments, its window
+# written to NAME.png.
+explorer_shot() {
+  local name=$1
+  shift
+  xvfb-run -a -s "-screen 0 1024x768x24" "$explorer" "$@" --size 640x360 --screenshot "$work/$name.png"
+}
+
+# Screenshot NAME SETTINGS...: the same with mars_explorer.yaml.
 screenshot() {
   local name=$1
   shift
-  xvfb-run -a -s "-screen 0 1024x768x24" "$explorer" "$pipeline" --size 640x360 --screenshot "$work/$name.png" "$@"
+  explorer_shot "$name" "$pipeline" "$@"
 }
 
 # Reference OVERRIDES... into NAME.png: the installed strata's headless frame of the same scene.
@@ -71,7 +79,7 @@ at_most 10 "$panel" || fail "no panel drawn over the top left (only $panel level
 # The sample scene built in code (sample_scene.cpp) is mars_explorer.yaml's pipeline: the same engine on
 # the same kind of context draws the same window, panel included, to the level (bound 0).
 step "the explorer with no file shows the sample scene it builds in code, the scene of mars_explorer.yaml"
-xvfb-run -a -s "-screen 0 1024x768x24" "$explorer" --size 640x360 --screenshot "$work/built.png"
+explorer_shot built
 built=$(mean_difference "$work/built.png" "$work/start.png" 0 640)
 echo "whole window: mean difference $built levels from the file's"
 at_most "$built" 0 || fail "the scene built in code differs from mars_explorer.yaml's ($built levels apart)"
