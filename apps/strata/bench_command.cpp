@@ -9,6 +9,7 @@
 #include <strata/engine.hpp>
 #include <strata/error.hpp>
 #include <strata/gl/context.hpp>
+#include <strata/pipeline.hpp>
 
 #include "bench_csv.hpp"
 #include "bench_frames.hpp"
@@ -16,6 +17,7 @@
 #include "bench_summary.hpp"
 #include "command_options.hpp"
 #include "commands.hpp"
+#include "output_files.hpp"
 
 namespace strata::cli {
 namespace {
@@ -30,6 +32,7 @@ struct BenchOptions : PipelineOptions {
   std::string output;   // default: out/bench/<pipeline name>.csv
   std::string plot;     // default: the CSV's name with .svg
   std::string compare;  // a second pipeline run on the same path
+  bool overwrite = false;  // --overwrite: existing outputs may be replaced (never a file a pipeline reads)
 };
 
 fs::path pathFileOf(const BenchOptions& options) {
@@ -76,9 +79,10 @@ void checkOptions(const BenchOptions& options, const fs::path& pathFile) {
 
 // One pipeline, loaded into an engine of its own (an empty page cache), timed along the path.
 std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOptions& options,
-                                      const fs::path& pathFile) {
+                                      const fs::path& pathFile, OutputFiles& files) {
   Engine engine;
   engine.load(pipeline, options.overrides);
+  files.refuse(pipelineInputFiles(engine.pipeline()));
   const CameraPath path = readCameraPath(pathFile, engine.pipeline().body);
   // A tenth of the run at a time on stderr: 4800 frames take the better part of an hour on a CPU renderer.
   const auto progress = [&](int frame) {
@@ -96,27 +100,39 @@ std::string summaryLine(const FrameTimeSummary& s) {
   return text;
 }
 
+// Every file bench writes, each checked before a frame is timed: the CSV, the plot, and with --compare the
+// second pipeline's CSV and the comparison.
+OutputFiles outputFilesOf(const BenchOptions& options, const fs::path& csv, const fs::path& plot,
+                          const fs::path& pathFile) {
+  std::vector<fs::path> targets{csv, plot};
+  if (!options.compare.empty()) targets.insert(targets.end(), {compareFileOf(csv, ".csv"), compareFileOf(csv, ".txt")});
+  OutputRules rules{options.overwrite, {options.pipeline, pathFile}};
+  if (!options.compare.empty()) rules.inputs.emplace_back(options.compare);
+  return OutputFiles(targets, rules, SourceLocation{"-o"});
+}
+
 void bench(const BenchOptions& options) {
   const fs::path pathFile = pathFileOf(options), csv = csvFileOf(options);
   checkOptions(options, pathFile);
   const fs::path plot = options.plot.empty() ? fs::path(csv).replace_extension(".svg") : fs::path(options.plot);
+  OutputFiles files = outputFilesOf(options, csv, plot, pathFile);
   auto context = createHeadlessContext(options.glDebug);
   enableGlDebugOutput(options.glDebug);
-  const std::vector<BenchFrame> first = benchPipeline(options.pipeline, options, pathFile);
-  writeBenchCsv(csv, first);
+  const std::vector<BenchFrame> first = benchPipeline(options.pipeline, options, pathFile, files);
+  files.write(csv, [&](const fs::path& partial) { writeBenchCsv(partial, first); });
   std::vector<PlotRun> runs{{options.pipeline, averageFrames(first, options.average), options.frames}};
   std::printf("strata: bench %s along %s, %d frames (%dx%d) on %s\n  %s: %s\n", options.pipeline.c_str(),
               pathFile.c_str(), options.frames, options.size.width, options.size.height,
               currentGlInfo().renderer.c_str(), options.pipeline.c_str(), summaryLine(summarise(first)).c_str());
   if (!options.compare.empty()) {
-    const std::vector<BenchFrame> second = benchPipeline(options.compare, options, pathFile);
-    writeBenchCsv(compareFileOf(csv, ".csv"), second);
+    const std::vector<BenchFrame> second = benchPipeline(options.compare, options, pathFile, files);
+    files.write(compareFileOf(csv, ".csv"), [&](const fs::path& partial) { writeBenchCsv(partial, second); });
     runs.push_back({options.compare, averageFrames(second, options.average), options.frames});
     const std::string report = comparisonReport(options.pipeline, summarise(first), options.compare, summarise(second));
-    std::ofstream(compareFileOf(csv, ".txt")) << report;
+    files.write(compareFileOf(csv, ".txt"), [&](const fs::path& partial) { std::ofstream(partial) << report; });
     std::printf("  %s: %s\n%s", options.compare.c_str(), summaryLine(summarise(second)).c_str(), report.c_str());
   }
-  writeBenchPlot(plot, runs, options.average);
+  files.write(plot, [&](const fs::path& partial) { writeBenchPlot(partial, runs, options.average); });
   std::printf("strata: wrote %s and %s\n", csv.c_str(), plot.c_str());
 }
 
@@ -143,6 +159,8 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                       "shows memory and open files");
   command->add_option("-o,--output", options->output, "the per-frame CSV (default out/bench/<pipeline name>.csv)");
   command->add_option("--plot", options->plot, "the plot, SVG (default the CSV's name with .svg)");
+  command->add_flag("--overwrite", options->overwrite,
+                    "replace outputs that exist (never a file a pipeline reads, nor one reached through a link)");
   command
       ->add_option("--compare", options->compare,
                    "a second pipeline run along the same path; prints and writes its frame times over the first's")

@@ -5,8 +5,10 @@
 #include <strata/version.hpp>
 
 #include "commands.hpp"
+#include "interrupt_cleanup.hpp"
 
 int main(int argc, char** argv) {
+  strata::cli::removeUnfinishedOutputsOnSignal();
   CLI::App app{"Strata composes planetary height and surface maps of any projection into one view of a planet.",
                "strata"};
   app.set_version_flag("--version", strata::kVersionString);

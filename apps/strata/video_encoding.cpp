@@ -9,6 +9,8 @@
 
 #include <strata/error.hpp>
 
+#include "interrupt_cleanup.hpp"
+
 extern char** environ;
 
 namespace strata::cli {
@@ -32,8 +34,13 @@ int runProgram(const std::vector<std::string>& arguments) {
   std::vector<char*> argv;
   for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  unblockSignalsInChild(attributes);
   pid_t child = 0;
-  if (posix_spawn(&child, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return -1;
+  const int started = posix_spawn(&child, argv[0], nullptr, &attributes, argv.data(), environ);
+  posix_spawnattr_destroy(&attributes);
+  if (started != 0) return -1;
   int status = 0;
   if (waitpid(child, &status, 0) < 0) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
@@ -46,9 +53,7 @@ bool isVideoFile(const std::filesystem::path& output) {
   return extension == ".mp4" || extension == ".webm";
 }
 
-std::string videoFramePattern(const std::filesystem::path& video) {
-  return (video.parent_path() / (video.stem().string() + "_frames") / "frame_%05d.png").string();
-}
+std::string videoFramePattern(const std::filesystem::path& folder) { return (folder / "frame_%05d.png").string(); }
 
 std::filesystem::path requireFfmpeg() {
   const std::filesystem::path ffmpeg = findOnPath("ffmpeg");
@@ -62,7 +67,7 @@ std::filesystem::path requireFfmpeg() {
 void encodeVideo(const std::filesystem::path& ffmpeg, const std::string& pattern, double framesPerSecond,
                  const std::filesystem::path& video) {
   // yuv420p: the chroma format every player decodes, which halves the chroma's resolution, so an odd width or
-  // height is padded by a pixel; -y: the video is an output like any frame, overwritten.
+  // height is padded by a pixel; -y: `video` is in a fresh scratch folder, where nothing of the user's is.
   const int status = runProgram({ffmpeg.string(), "-y", "-loglevel", "error", "-framerate",
                                  std::to_string(framesPerSecond), "-i", pattern, "-vf",
                                  "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", video.string()});

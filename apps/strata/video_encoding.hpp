@@ -9,8 +9,8 @@ namespace strata::cli {
 
 // Whether `-o` names a video (.mp4 or .webm) rather than a frame pattern.
 bool isVideoFile(const std::filesystem::path& output);
-// Where the frames of a video are written first: beside it, out/flyin.mp4 -> out/flyin_frames/frame_%05d.png.
-std::string videoFramePattern(const std::filesystem::path& video);
+// The frames of a video in `folder` (a scratch folder beside it): folder/frame_%05d.png.
+std::string videoFramePattern(const std::filesystem::path& folder);
 // The ffmpeg on PATH; throws strata::Error naming -o with how to install it when there is none (checked
 // before rendering, so a missing encoder costs no frames).
 std::filesystem::path requireFfmpeg();

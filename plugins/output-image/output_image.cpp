@@ -70,7 +70,7 @@ class ImageOutput : public Node, public FrameOutput {
   FrameOutput* output() override { return this; }
   const Framebuffer& frame() const override { return frame_; }
   void write(const std::filesystem::path& file) const override {
-    writePng(file, frame_.width(), frame_.height(), readPixels(frame_));
+    writeImage(file, frame_.width(), frame_.height(), readPixels(frame_));
   }
 
  private:

@@ -46,7 +46,7 @@ class BadData : public StrataCommandTest {
                                               "  data: {type: source.gdal, path: " + raster.string() + ", kind: height}\n"
                                               "  globe: {type: geometry.icosahedral, height: data, highest: 2000}\n"
                                               "  frame: {type: output.image, geometry: globe}\n");
-    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string()});
+    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string(), "--overwrite"});
   }
 
   CommandResult renderColour(const fs::path& raster, const std::string& size) const {
@@ -54,7 +54,7 @@ class BadData : public StrataCommandTest {
                                               "  data: {type: source.gdal, path: " + raster.string() + "}\n"
                                               "  globe: {type: geometry.icosahedral}\n"
                                               "  frame: {type: output.image, geometry: globe, surface: [data]}\n");
-    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string()});
+    return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string(), "--overwrite"});
   }
 
   // `raster` draws exactly what `reference` draws, with nothing said about it.

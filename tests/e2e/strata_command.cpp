@@ -2,6 +2,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -27,6 +28,13 @@ std::string readText(const std::filesystem::path& file) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+std::vector<std::string> namesIn(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
 CommandResult StrataCommandTest::run(const std::vector<std::string>& arguments, const std::string& pluginPath) const {
   const std::filesystem::path out = scratch_.path() / "stdout.txt", err = scratch_.path() / "stderr.txt";
   const std::string environment =
@@ -40,7 +48,7 @@ CommandResult StrataCommandTest::run(const std::vector<std::string>& arguments, 
 }
 
 CommandResult StrataCommandTest::renderTiny(const std::filesystem::path& pipeline, const std::string& pluginPath) const {
-  return run({"render", pipeline.string(), "--size", "32x18", "-o", file("x.png").string()}, pluginPath);
+  return run({"render", pipeline.string(), "--size", "32x18", "-o", file("x.png").string(), "--overwrite"}, pluginPath);
 }
 
 }  // namespace strata::test

@@ -19,6 +19,8 @@ struct CommandResult {
 
 std::string readText(const std::filesystem::path& file);
 bool contains(const std::string& text, const std::string& part);
+// The names in a folder, sorted: what a test sees of scratch folders or partial files left behind.
+std::vector<std::string> namesIn(const std::filesystem::path& folder);
 
 // Each test gets a scratch directory, removed with its files afterwards, and runs strata with only the
 // built-in plugins beside the binary unless it names a plugin directory: plugins found through a
@@ -27,7 +29,8 @@ class StrataCommandTest : public ::testing::Test {
  protected:
   // Runs strata from the source tree (where pipelines/ is) with `arguments`.
   CommandResult run(const std::vector<std::string>& arguments, const std::string& pluginPath = {}) const;
-  // Renders `pipeline` to a tiny frame in the scratch directory, for tests that expect it to be refused.
+  // Renders `pipeline` to a tiny frame in the scratch directory (x.png, replaced by each call), for tests
+  // that expect it to be refused or compare it with the frame of another pipeline.
   CommandResult renderTiny(const std::filesystem::path& pipeline, const std::string& pluginPath = {}) const;
 
   std::filesystem::path file(const std::string& name) const { return scratch_.path() / name; }

@@ -44,6 +44,12 @@ const std::vector<double>& ParameterSet::reals(const std::string& name) const {
 
 const ParameterValue& ParameterSet::value(const std::string& name) const { return entry(name).value; }
 
+std::vector<std::string> ParameterSet::names() const {
+  std::vector<std::string> names;
+  for (const auto& entry : entries_) names.push_back(entry.first);
+  return names;
+}
+
 const SourceLocation& ParameterSet::where(const std::string& name) const { return entry(name).where; }
 
 const ParameterSet::Entry& ParameterSet::entry(const std::string& name) const {

@@ -305,15 +305,6 @@ void writeFaces(GDALDataset& input, GDALDataset& strip, const Pyramid& pyramid,
     }
 }
 
-// Removes the temporary strip when the pyramid is written, and when writing it fails.
-struct TemporaryFile {
-  std::filesystem::path path;
-  ~TemporaryFile() {
-    std::error_code ignored;  // nothing to do about a file that cannot be removed while unwinding
-    std::filesystem::remove(path, ignored);
-  }
-};
-
 }  // namespace
 
 TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, const TilingRequest& request) {
@@ -324,8 +315,8 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   const std::int64_t nside =
       request.nside != 0 ? checkedNside(request.nside) : automaticNside(inputTexel, radius, where);
   const Pyramid pyramid{nside, figure, radius, inputTexel / faceTexelMetres(radius, nside), samplesOf(input)};
-  const TemporaryFile strip{request.output.string() + ".strip.tif"};
-  Dataset faces = createStrip(strip.path, pyramid, where);
+  // Beside the output, in the scratch folder tileRaster writes it in, which goes with everything it holds.
+  Dataset faces = createStrip(request.output.parent_path() / "faces.strip.tif", pyramid, where);
   const Dataset wrapped = wrapAroundGlobe(input);
   writeFaces(wrapped ? *wrapped : input, *faces, pyramid, request.progress, where);
   // One-channel pyramids (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes.

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <strata/crs.hpp>
+#include <strata/output_file.hpp>
 #include <strata/tiling.hpp>
 
 #include "tiling/cog_writing.hpp"
@@ -37,28 +38,51 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
                 "convert to 8/16/32-bit integers or floats: gdal_translate -ot Float32");
 }
 
-}  // namespace
+// The input and every file GDAL reads for it (a VRT's sources, overviews, side-cars): none may be the output.
+std::vector<std::filesystem::path> filesRead(const TilingRequest& request, GDALDataset& input) {
+  std::vector<std::filesystem::path> files{request.input};
+  char** list = input.GetFileList();
+  for (char** name = list; name && *name; ++name) files.emplace_back(*name);
+  CSLDestroy(list);
+  return files;
+}
 
-TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& request) {
+// The pyramid, written into `partial` (in the scratch folder beside the output).
+TilingResult tileInto(const PluginRegistry& plugins, GDALDataset& input, TilingRequest request,
+                      const std::filesystem::path& partial) {
   const SourceLocation where{request.input.string()};
-  if (!request.overwrite && std::filesystem::exists(request.output))
-    throw Error({request.output.string()}, "the output exists already", "choose another name, or pass --overwrite");
-  Dataset input = openInput(request.input, where);
-  checkBands(*input, where);
-  const OGRSpatialReference* crs = input->GetSpatialRef();
+  const OGRSpatialReference* crs = input.GetSpatialRef();
   std::array<double, 6> geotransform{};
-  if (!crs || input->GetGeoTransform(geotransform.data()) != CE_None)
+  if (!crs || input.GetGeoTransform(geotransform.data()) != CE_None)
     throw Error(where, "'" + request.input.string() + "' has no CRS or no geotransform, so where it lies is unknown",
                 "assign them: gdal_translate -a_srs <CRS> -a_ullr ulx uly lrx lry in.tif out.tif");
-  if (request.target == tiling::kHealpixPyramid) return tiling::tileHealpix(plugins, *input, request);
+  request.output = partial;
+  if (request.target == tiling::kHealpixPyramid) return tiling::tileHealpix(plugins, input, request);
   if (request.nside != 0)
     throw Error({"--nside"}, "--nside is the resolution of a HEALPix pyramid, but the target is not one",
                 "add --to " + std::string(tiling::kHealpixPyramid) + ", or leave --nside out");
-  const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input->GetRasterXSize(),
-                                                input->GetRasterYSize(), request.target, {"--to"});
-  Dataset output = tiling::writeCog(*input, request.output, target, request.progress, where);
+  const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input.GetRasterXSize(),
+                                                input.GetRasterYSize(), request.target, {"--to"});
+  Dataset output = tiling::writeCog(input, partial, target, request.progress, where);
   return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(),
           output->GetRasterYSize(), output->GetRasterBand(1)->GetOverviewCount()};
+}
+
+}  // namespace
+
+// Written under a scratch name beside the output and renamed into place when whole and closed, so that an
+// interrupted or failed run leaves the finished file or nothing (strata/output_file.hpp).
+TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& request) {
+  const SourceLocation where{request.input.string()}, output{request.output.string()};
+  checkOutputTarget(request.output, {request.overwrite, {request.input}}, output);
+  Dataset input = openInput(request.input, where);
+  checkOutputTarget(request.output, {request.overwrite, filesRead(request, *input)}, output);
+  checkBands(*input, where);
+  const ScratchDirectory scratch(request.output);
+  const std::filesystem::path partial = scratch.path() / request.output.filename();
+  const TilingResult result = tileInto(plugins, *input, request, partial);
+  scratch.publish(partial, request.output, request.overwrite);
+  return result;
 }
 
 }  // namespace strata

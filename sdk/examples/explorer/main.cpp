@@ -51,7 +51,7 @@ int run(const ExplorerOptions& options) {
     if (width < 1 || height < 1) continue;  // minimised
     drawFrame(engine, window, panel, width, height, options.screenshot.has_value());
     if (options.screenshot && frames >= options.frames) {
-      strata::writePng(*options.screenshot, width, height, window.readBack(width, height));
+      strata::writeImage(*options.screenshot, width, height, window.readBack(width, height));
       std::printf("mars-explorer: wrote %s (%dx%d)\n", options.screenshot->c_str(), width, height);
       return 0;
     }

@@ -20,9 +20,15 @@ class FrameOutput {
 
 // Reads back colour attachment 0 of `framebuffer` as rows of RGBA8, top row first.
 std::vector<unsigned char> readPixels(const Framebuffer& framebuffer);
-// Writes RGBA8 rows (top row first) as an 8-bit PNG through GDAL; throws strata::Error naming the file.
-void writePng(const std::filesystem::path& file, int width, int height,
-              const std::vector<unsigned char>& rgba);
+// The image formats frames are written in, chosen by the file's extension.
+enum class ImageFormat { Png, Tiff };
+// .png: PNG; .tif, .tiff: TIFF (any case). Throws strata::Error naming the file for any other extension.
+ImageFormat imageFormatOf(const std::filesystem::path& file);
+// Writes RGBA8 rows (top row first) as an 8-bit image through GDAL, in the format its extension names
+// (imageFormatOf); throws strata::Error naming the file. It writes `file` as given: callers that must not
+// leave a partial image under a user's name write into a ScratchDirectory (strata/output_file.hpp).
+void writeImage(const std::filesystem::path& file, int width, int height,
+                const std::vector<unsigned char>& rgba);
 
 }  // namespace strata
 STRATA_EXPORTS_END

@@ -50,6 +50,7 @@ class ParameterSet {
   std::filesystem::path path(const std::string& name) const;
   const std::vector<double>& reals(const std::string& name) const;
   const ParameterValue& value(const std::string& name) const;
+  std::vector<std::string> names() const;  // every parameter set, in name order
   // Where the value came from (the YAML scalar, a --set override, or the node for defaults).
   const SourceLocation& where(const std::string& name) const;
 

@@ -56,5 +56,10 @@ Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::
 Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
                        const std::vector<std::string>& overrides, const PluginRegistry& registry);
 
+// The files `pipeline` reads, for OutputRules::inputs (strata/output_file.hpp): its own file, every file a
+// node's parameter names, and what GDAL reads for those (a VRT's sources, overviews, side-cars). A time
+// series' file-name pattern (composite.temporal_blend's `files`) names no one file and is not expanded.
+std::vector<std::filesystem::path> pipelineInputFiles(const Pipeline& pipeline);
+
 }  // namespace strata
 STRATA_EXPORTS_END

@@ -1,5 +1,6 @@
 #include <gdal_priv.h>
 
+#include <cctype>
 #include <cstring>
 #include <memory>
 
@@ -33,13 +34,26 @@ std::string lastGdalError() {
 
 }  // namespace
 
-void writePng(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {
+ImageFormat imageFormatOf(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".png") return ImageFormat::Png;
+  if (extension == ".tif" || extension == ".tiff") return ImageFormat::Tiff;
+  throw Error(SourceLocation{file.string()},
+              "cannot write an image named '" + extension + "'" +
+                  (extension == ".exr" ? ": EXR is not written yet (the frame is 8-bit and display-encoded)" : ""),
+              "name the file .png or .tif");
+}
+
+void writeImage(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba) {
   static const bool registered = (GDALAllRegister(), true);  // once, even with several threads writing
   (void)registered;
-  GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
-  GDALDriver* png = GetGDALDriverManager()->GetDriverByName("PNG");
   SourceLocation where{file.string()};
-  if (!memory || !png) throw Error(where, "this GDAL has no PNG driver", "install a GDAL built with libpng");
+  const char* driverName = imageFormatOf(file) == ImageFormat::Png ? "PNG" : "GTiff";
+  GDALDriver* memory = GetGDALDriverManager()->GetDriverByName("MEM");
+  GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driverName);
+  if (!memory || !driver)
+    throw Error(where, std::string("this GDAL has no ") + driverName + " driver", "install Debian's libgdal");
   std::unique_ptr<GDALDataset> image(memory->Create("", width, height, 4, GDT_Byte, nullptr));
   CPLErr status = image->RasterIO(GF_Write, 0, 0, width, height, const_cast<unsigned char*>(rgba.data()), width,
                                   height, GDT_Byte, 4, nullptr, 4, 4 * width, 1);
@@ -47,9 +61,9 @@ void writePng(const std::filesystem::path& file, int width, int height, const st
   std::error_code ignored;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ignored);
   CPLErrorReset();
-  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side-car beside the PNG
+  CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side-car beside the image
   CPLPushErrorHandler(CPLQuietErrorHandler);                 // the failure is reported once, below
-  std::unique_ptr<GDALDataset> written(png->CreateCopy(file.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
+  std::unique_ptr<GDALDataset> written(driver->CreateCopy(file.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
   written.reset();  // closing flushes the file
   CPLPopErrorHandler();
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", nullptr);
