@@ -98,10 +98,15 @@ TEST_P(InterruptedTile, LeavesTheFinishedFileOrNothing) {
   const fs::path output = file("work/out.tif");
   std::vector<std::string> arguments{"tile", file("work/in.tif").string(), output.string()};
   arguments.insert(arguments.end(), GetParam().options.begin(), GetParam().options.end());
-  // An uninterrupted run: what a finished file is, and how long one takes.
-  const auto start = Clock::now();
-  ASSERT_EQ(waitFor(startStrata(arguments)), 0);
-  const auto duration = Clock::now() - start;
+  // Uninterrupted runs: what a finished file is, and how long one takes (the quicker of two, once GDAL's
+  // files are in the page cache, so that the moments below fall inside a run).
+  auto duration = Clock::duration::max();
+  for (int run = 0; run < 2; ++run) {
+    const auto start = Clock::now();
+    ASSERT_EQ(waitFor(startStrata(arguments)), 0);
+    duration = std::min(duration, Clock::now() - start);
+    if (run == 0) fs::remove(output);
+  }
   const std::string finished = fingerprint(output);
   ASSERT_NE(finished, "unreadable");
   int interrupted = 0;
@@ -125,7 +130,7 @@ TEST_P(InterruptedTile, LeavesTheFinishedFileOrNothing) {
       ++interrupted;
     }
   }
-  EXPECT_GE(interrupted, 3) << "most signals land while the pyramid is being written";
+  EXPECT_GE(interrupted, 2) << "the signals at 5 and 30 % of a run land while the pyramid is being written";
 }
 
 // A copy into a COG with overviews (GDAL's *.ovr.tmp), a reprojection (*.warped.tif.tmp), a HEALPix
