@@ -57,6 +57,10 @@ class GdalSource : public Node {
 
   void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
 
+  // Sampled from each point's offset to the point below the eye, so that centimetre texels stay exact
+  // anywhere on the body (ProjectedRasterLayer::setReference).
+  void prepare(const FrameState& frame) override { layer_.setReference(frame.view.reference); }
+
   Layer* layer() override { return &layer_; }
 
  private:

@@ -12,10 +12,6 @@ namespace {
 // Each octave's amplitude is half the one before, as its wavelength is: the sum is fractional Brownian
 // motion with slopes alike at every scale (Mandelbrot 1982; Musgrave et al. 1989), as terrain tends to be.
 constexpr double kGain = 0.5;
-// Moves each octave's lattice off the one before. Without it every octave's lattice points would fall on
-// the first octave's (2^k times a lattice point is one), where simplex noise is zero, and all octaves would
-// vanish together there.
-const glm::dvec3 kOctaveShift(0.6180339887, 0.3819660113, 0.2360679775);
 
 // A colour ramp: heights as fractions of the amplitude, colours in linear RGB, linear in between.
 struct ColourStop {

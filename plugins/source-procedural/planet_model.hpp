@@ -22,6 +22,12 @@ struct PlanetParameters {
   double contourInterval = 1000.0;
 };
 
+// Moves each octave's lattice off the one before. Without it every octave's lattice points would fall on
+// the first octave's (2^k times a lattice point is one), where simplex noise is zero, and all octaves would
+// vanish together there. Octave k samples the noise at 2^k R / wavelength times the unit normal, plus k times
+// this (planet_lattice.hpp takes those points apart about the frame's reference).
+inline constexpr glm::dvec3 kOctaveShift(0.6180339887, 0.3819660113, 0.2360679775);
+
 // The demonstration planet of seed 000 chapter 4 (digest 000, section 5): false data, a fractal sum of 3D
 // simplex noise over the unit sphere, "observed" through several projections and resolutions. Heights and
 // colours are computed in double here; shaders/procedural/planet.glsl does the same in float.

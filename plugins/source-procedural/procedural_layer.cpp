@@ -16,9 +16,11 @@ std::string ProceduralLayer::glsl() const {
                                                        : "vec4(planetColour(h, " + p + "_planet), 1.0)";
   return "#include \"procedural/planet.glsl\"\n"
          "uniform ProceduralPlanet " + p + "_planet;\n"
+         "uniform PlanetLattice " + p + "_lattice;\n"
          "uniform float " + p + "_scale;\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
-         "  float h = planetHeight(p.normal, planetFootprint(p, " + p + "_planet.radius), " + p + "_planet);\n"
+         "  float h = planetHeightAt(p, planetFootprint(p, " + p + "_planet.radius), " + p + "_planet, " + p +
+         "_lattice);\n"
          "  return " + value + ";\n"
          "}\n";
 }
@@ -27,6 +29,22 @@ std::optional<ValueRange> ProceduralLayer::valueRange() const {
   if (kind_ != LayerKind::Height) return std::nullopt;
   const double reach = planet_.amplitude * std::abs(scale_);
   return ValueRange{-reach, reach};
+}
+
+void ProceduralLayer::setReference(glm::dvec2 referenceLonlat) {
+  lattice_ = planetLattice(planet_, radius_, referenceLonlat);
+}
+
+void ProceduralLayer::bindLattice(ShaderProgram& program) const {
+  const std::string lattice = prefix_ + "_lattice.";
+  for (int k = 0; k < lattice_.octaves; ++k) {
+    const std::string index = "[" + std::to_string(k) + "]";
+    program.set(lattice + "anchor" + index, lattice_.anchor[std::size_t(k)]);
+    program.set(lattice + "local" + index, glm::vec3(lattice_.local[std::size_t(k)]));
+  }
+  program.set(lattice + "octaves", lattice_.octaves);
+  program.set(lattice + "frame", glm::mat3(lattice_.frame));
+  program.set(lattice + "latitude", glm::vec2(lattice_.latitude));
 }
 
 void ProceduralLayer::bind(ShaderProgram& program, TextureUnits&) const {
@@ -38,6 +56,7 @@ void ProceduralLayer::bind(ShaderProgram& program, TextureUnits&) const {
   program.set(planet + "contourInterval", float(planet_.contourInterval));
   program.set(planet + "radius", float(radius_));
   program.set(prefix_ + "_scale", float(scale_));
+  bindLattice(program);
 }
 
 }  // namespace strata::procedural

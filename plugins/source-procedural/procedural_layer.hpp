@@ -3,6 +3,7 @@
 
 #include <strata/layer.hpp>
 
+#include "planet_lattice.hpp"
 #include "planet_model.hpp"
 
 namespace strata::procedural {
@@ -22,13 +23,18 @@ class ProceduralLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   // Heights: within +-amplitude x scale, which the noise never reaches (planet_model.hpp).
   std::optional<ValueRange> valueRange() const override;
+  // Samples the planet relative to the frame's reference from now on (planet_lattice.hpp); from prepare().
+  void setReference(glm::dvec2 referenceLonlat);
 
  private:
+  void bindLattice(ShaderProgram& program) const;
+
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
   PlanetParameters planet_;
   double radius_;
   double scale_;
+  PlanetLattice lattice_;  // octaves 0 until setReference()
 };
 
 }  // namespace strata::procedural

@@ -6,10 +6,10 @@
 namespace strata::procedural {
 namespace {
 
-// Skewing along the main diagonal turns the lattice of tetrahedra into the cubic lattice Z^3 and back:
-// F = (sqrt(n + 1) - 1) / n and G = (1 - 1 / sqrt(n + 1)) / n for n = 3 (Gustavson 2005, section 3).
-constexpr double kSkew = 1.0 / 3.0;
-constexpr double kUnskew = 1.0 / 6.0;
+// Skewing (simplex_noise.hpp): F = (sqrt(n + 1) - 1) / n and G = (1 - 1 / sqrt(n + 1)) / n for n = 3
+// (Gustavson 2005, section 3).
+constexpr double kSkew = kSimplexSkew;
+constexpr double kUnskew = kSimplexUnskew;
 // The squared radius of each corner's kernel (r0^2 - r^2)^4. 0.5 is the squared distance from a corner to
 // the far faces of the tetrahedra around it, so a kernel dies out before a cell that does not sum it. The
 // 0.6 of Perlin's and Gustavson's reference code reaches past them and leaves steps of up to 0.003 (in

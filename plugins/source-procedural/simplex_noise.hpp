@@ -11,4 +11,9 @@ namespace strata::procedural {
 // shaders/procedural/simplex_noise.glsl, which mirrors this file in float, picks the same gradients.
 double simplexNoise(const glm::dvec3& point, std::uint32_t seed);
 
+// Skewing along the main diagonal turns the lattice of tetrahedra into the cubic lattice Z^3 (x + (x.x +
+// x.y + x.z) kSimplexSkew) and back (x - (x.x + x.y + x.z) kSimplexUnskew).
+inline constexpr double kSimplexSkew = 1.0 / 3.0;
+inline constexpr double kSimplexUnskew = 1.0 / 6.0;
+
 }  // namespace strata::procedural

@@ -28,6 +28,9 @@ class ProceduralSource : public Node {
       : layer_(setup.id, setup.parameters.string("kind") == "height" ? LayerKind::Height : LayerKind::Color,
                planetOf(setup.parameters), setup.body->radius, setup.parameters.real("scale")) {}
 
+  // Sampled relative to the point below the eye, so that its fine octaves keep their digits up close.
+  void prepare(const FrameState& frame) override { layer_.setReference(frame.view.reference); }
+
   Layer* layer() override { return &layer_; }
 
  private:

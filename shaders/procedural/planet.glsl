@@ -1,6 +1,7 @@
 // The procedural planet of plugins/source-procedural/planet_model.cpp, in float: the same octaves, shifts,
 // seeds, footprint limit and colour ramp (that file says why each is what it is).
 #include "procedural/simplex_noise.glsl"
+#include "strata/local_offsets.glsl"
 #include "strata/surface_point.glsl"
 
 struct ProceduralPlanet {
@@ -29,14 +30,41 @@ float planetOctaveWeight(int octave, float wavelength, float footprint) {
   return clamp(log2(wavelength * exp2(-float(octave)) / (2.0 * footprint)), 0.0, 1.0);
 }
 
-float planetHeight(vec3 unitNormal, float footprint, ProceduralPlanet planet) {
-  vec3 point = unitNormal * (planet.radius / planet.wavelength);
+// The planet's noise lattice about the frame's reference (plugins/source-procedural/planet_lattice.hpp):
+// octave k's noise point of the reference's normal as anchor[k] (an integer skewed cell) plus local[k], for
+// the first `octaves` octaves (0 where the reference is not known), and the reference's east, north and up.
+const int PLANET_MAX_OCTAVES = 24;
+struct PlanetLattice {
+  ivec3 anchor[PLANET_MAX_OCTAVES];
+  vec3 local[PLANET_MAX_OCTAVES];
+  int octaves;
+  mat3 frame;     // columns: east, north, up of the reference, planet-fixed
+  vec2 latitude;  // sin and cos of the reference's
+};
+
+// A point's normal less the reference's, from its offsets to the reference: exact to float's relative
+// precision however small, through the tangent plane (strata/local_offsets.glsl); the up component's drop
+// 1 - sqrt(1 - r^2) written as r^2 / (1 + sqrt(1 - r^2)).
+vec3 normalFromReference(vec2 fromReference, PlanetLattice lattice) {
+  vec2 en = tangentOffset(fromReference, lattice.latitude);
+  float r2 = dot(en, en);
+  return lattice.frame * vec3(en, -r2 / (1.0 + sqrt(max(0.0, 1.0 - r2))));
+}
+
+// planetHeight at a surface point, each octave that has an anchor sampled from it plus the point's own small
+// offset (2^k R / wavelength times its normal's offset from the reference's), the others as planetHeight
+// samples them. The same heights where float resolves both; near the reference to micrometres.
+float planetHeightAt(SurfacePoint p, float footprint, ProceduralPlanet planet, PlanetLattice lattice) {
+  float scale = planet.radius / planet.wavelength;
+  vec3 delta = normalFromReference(p.fromReference, lattice) * scale, point = p.normal * scale;
   float sum = 0.0, amplitude = 1.0;
   for (int k = 0; k < planet.octaves; ++k, amplitude *= PLANET_GAIN) {
     float weight = planetOctaveWeight(k, planet.wavelength, footprint);
     if (weight == 0.0) break;
-    sum += weight * amplitude *
-           simplexNoise(exp2(float(k)) * point + float(k) * PLANET_OCTAVE_SHIFT, uint(planet.seed) * 32u + uint(k));
+    uint seed = uint(planet.seed) * 32u + uint(k);
+    float noise = k < lattice.octaves ? simplexNoiseFrom(lattice.anchor[k], lattice.local[k] + exp2(float(k)) * delta, seed)
+                                      : simplexNoise(exp2(float(k)) * point + float(k) * PLANET_OCTAVE_SHIFT, seed);
+    sum += weight * amplitude * noise;
   }
   float total = (1.0 - pow(PLANET_GAIN, float(planet.octaves))) / (1.0 - PLANET_GAIN);
   return planet.amplitude * sum / total;

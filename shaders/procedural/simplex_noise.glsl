@@ -29,10 +29,15 @@ float simplexCorner(vec3 offset, ivec3 corner, uint seed) {
   return fade * fade * dot(SIMPLEX_GRADIENTS[simplexGradientIndex(corner, seed)], offset);
 }
 
-float simplexNoise(vec3 point, uint seed) {
-  vec3 cellOrigin = floor(point + (point.x + point.y + point.z) * SIMPLEX_SKEW);
-  ivec3 cell = ivec3(cellOrigin);
-  vec3 offset = point - (cellOrigin - (cellOrigin.x + cellOrigin.y + cellOrigin.z) * SIMPLEX_UNSKEW);
+// The noise at lattice point anchor's position plus `local`: the unskewed position of integer skewed cell
+// `anchor`, anchor - (anchor.x + anchor.y + anchor.z) / 6, is taken apart from the point, so that a point
+// far from the origin (a planet's surface in lattice units, 2^k R / wavelength) keeps float's digits in its
+// small remainder (issue 27; plugins/source-procedural/planet_lattice.cpp finds anchors in double). Skewing
+// is linear, so the cell is anchor + the remainder's own cell and the offset within it is the remainder's.
+float simplexNoiseFrom(ivec3 anchor, vec3 local, uint seed) {
+  vec3 cellOrigin = floor(local + (local.x + local.y + local.z) * SIMPLEX_SKEW);
+  ivec3 cell = anchor + ivec3(cellOrigin);
+  vec3 offset = local - (cellOrigin - (cellOrigin.x + cellOrigin.y + cellOrigin.z) * SIMPLEX_UNSKEW);
   // The tetrahedron holding the point: step along the axis of the largest offset, then the second largest.
   int xBeatsY = int(offset.x >= offset.y), xBeatsZ = int(offset.x >= offset.z), yBeatsZ = int(offset.y >= offset.z);
   ivec3 rank = ivec3(xBeatsY + xBeatsZ, 1 - xBeatsY + yBeatsZ, 2 - xBeatsZ - yBeatsZ);
@@ -44,3 +49,5 @@ float simplexNoise(vec3 point, uint seed) {
               simplexCorner(offset - 1.0 + 3.0 * SIMPLEX_UNSKEW, cell + 1, seed);
   return SIMPLEX_NORMALISATION * sum;
 }
+
+float simplexNoise(vec3 point, uint seed) { return simplexNoiseFrom(ivec3(0), point, seed); }

@@ -9,18 +9,20 @@
 // different spacing over different grids) may fall either side of a pixel's centre. Measured on llvmpipe,
 // in 8-bit levels, over the three channels, against icosahedral:
 //                    pgm                          healpix
-//   from orbit:      mean difference 0.94 levels,  2.08, 2.72%
-//                    1.24% of the pixels differ
+//   from orbit:      mean difference 2.31 levels,  3.45, 2.77%
+//                    1.26% of the pixels differ
 //                    by more than kLargeDifference
-//   300 km, 50 deg:  0.39, 0.45%                  0.34, 0.39%
-//   5 km, 70 deg:    1.32, 1.82%                  1.51, 2.06%
+//   300 km, 50 deg:  1.29, 0.44%                  0.64, 0.39%
+//   5 km, 70 deg:    2.71, 1.86%                  2.93, 2.07%
 // The differing pixels lie along the contour lines' edges, most on their far edges near the horizon at
-// 5 km, where the two meshes sample the distant heights differently (healpix's larger share from orbit is
-// not yet looked into). For scale, the pgm image against
+// 5 km, where the two meshes sample the distant heights differently, and in the shading: each generator
+// finds a vertex's slope by central differences over its own vertex spacing, so the same relief is lit with
+// slopes smoothed over different distances. (Until source.procedural was sampled relative to the reference,
+// its heights ignored the offsets of those differences, so every generator lit it flat and they agreed to
+// 0.94, 0.39 and 1.32 levels with pgm, 2.08, 0.34 and 1.51 with healpix.) For scale, the pgm image against
 // itself shifted one pixel sideways: 29.9%, 2.8% and 0.74% (the lines are dense from orbit and few at
 // 5 km), so the generators agree to well under a pixel from orbit and 300 km, and to about two pixels
-// along the far lines at 5 km. The tolerances are about twice pgm's worst; healpix's orbit view comes
-// within 20% of the mean's.
+// along the far lines at 5 km. The tolerances are about 15% above the worst mean and twice pgm's worst share.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,7 +38,7 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
 constexpr int kLargeDifference = 16;      // levels
-constexpr double kMeanTolerance = 2.5;    // levels
+constexpr double kMeanTolerance = 4.0;    // levels
 constexpr double kLargeTolerance = 0.04;  // of the pixels compared
 
 std::string pipelineWith(const std::string& geometry) {

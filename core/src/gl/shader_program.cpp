@@ -93,6 +93,9 @@ void ShaderProgram::set(const std::string& u, unsigned v) const { glProgramUnifo
 void ShaderProgram::set(const std::string& u, const glm::ivec2& v) const {
   glProgramUniform2iv(program_, location(u), 1, glm::value_ptr(v));
 }
+void ShaderProgram::set(const std::string& u, const glm::ivec3& v) const {
+  glProgramUniform3iv(program_, location(u), 1, glm::value_ptr(v));
+}
 void ShaderProgram::set(const std::string& u, float v) const { glProgramUniform1f(program_, location(u), v); }
 void ShaderProgram::set(const std::string& u, const glm::vec2& v) const {
   glProgramUniform2fv(program_, location(u), 1, glm::value_ptr(v));

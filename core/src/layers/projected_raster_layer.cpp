@@ -5,6 +5,8 @@
 #include <strata/healpix_pyramid.hpp>
 #include <strata/projected_raster_layer.hpp>
 
+#include "layers/local_texture_frame.hpp"
+
 namespace strata {
 namespace {
 
@@ -25,6 +27,11 @@ glm::vec4 mapToTextureOf(const RasterGeoreference& georeference, int width, int 
   const double uSpan = t[1] * width, vSpan = t[5] * height;
   return glm::vec4(glm::dvec4(scale / uSpan, -t[0] / uSpan, scale / vSpan, -t[3] / vSpan));
 }
+
+// A hundredth of a level-0 texel: the relative path's error, far below what filtering blurs.
+constexpr double kRelativeTolerance = 0.01;
+
+glm::vec4 columns(const glm::dmat2& m) { return glm::vec4(glm::dvec4(m[0], m[1])); }
 
 }  // namespace
 
@@ -55,6 +62,25 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   repeatX_ = spansPeriod(georeference_, width);
 }
 
+void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
+  const std::array<double, 6>& t = georeference_.geotransform;
+  const double uSpan = t[1] * texels_.x, vSpan = t[5] * texels_.y;
+  const Projection& projection = *georeference_.projection;
+  const TextureMapping mapping = [&](glm::dvec2 lonlat) -> std::optional<glm::dvec2> {
+    const std::optional<glm::dvec2> xy = projection.forward(lonlat);
+    if (!xy) return std::nullopt;
+    return glm::dvec2((xy->x - t[0]) / uSpan, (xy->y - t[3]) / vSpan);
+  };
+  const double tolerance = kRelativeTolerance / std::max(texels_.x, texels_.y);
+  const LocalTextureFrame frame = localTextureFrame(mapping, referenceLonlat, tolerance, repeatX_);
+  // A raster around the body: u at the reference taken into [0, 1), where float keeps its digits.
+  referenceUv_ = glm::vec2(repeatX_ ? frame.uv.x - std::floor(frame.uv.x) : frame.uv.x, frame.uv.y);
+  localTerms_ = {columns(frame.jacobian), columns(frame.hessianU), columns(frame.hessianV)};
+  reach_ = float(frame.reach);
+  tangent_ = frame.coordinates == LocalCoordinates::Tangent;
+  referenceLatitude_ = glm::vec2(std::sin(referenceLonlat.y), std::cos(referenceLonlat.y));
+}
+
 std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered) const {
   const std::string& p = prefix_;
   const Projection& projection = *georeference_.projection;
@@ -75,17 +101,54 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
          "  return vec3(m.xy * " + p + "_mapToTexture.xz + " + p + "_mapToTexture.yw, m.z);\n"
          "}\n"
-         "vec2 " + p + "_step(vec3 at, vec2 lonlat, vec2 step) {\n"
+         "vec2 " + p + "_absoluteStep(vec3 at, vec2 lonlat, vec2 step) {\n"
          "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
          "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
-         "}\n" + texelGlsl() +
+         "}\n" + relativeGlsl() + texelGlsl() +
          "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
          "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  vec3 at = " + p + "_at(p);\n"
          "  bool repeatX = " + p + "_repeatX;\n"
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
-         "  vec2 uv = at.xy, stepX = " + p + "_step(at, p.lonlat, p.lonlatDx), stepY = " + p + "_step(at, p.lonlat, p.lonlatDy);\n"
+         "  vec2 uv = at.xy, stepX = " + p + "_step(at, p, p.lonlatDx), stepY = " + p + "_step(at, p, p.lonlatDy);\n"
          "  return " + p + "_value(" + filtered + ");\n"
+         "}\n";
+}
+
+// Texture coordinates and footprint steps of a surface point: within the reach, from its offset to the
+// reference (longitude/latitude offsets or the tangent plane's, whichever LocalTextureFrame chose) through
+// the polynomial setReference() made, whose derivative gives the steps;
+// beyond it, or for a layer never told a reference, through the projection at absolute longitude/latitude.
+std::string ProjectedRasterLayer::relativeGlsl() const {
+  const std::string& p = prefix_;
+  return "#include \"strata/local_offsets.glsl\"\n"
+         "uniform vec2 " + p + "_referenceUv;\n"
+         "uniform bool " + p + "_tangent;\n"
+         "uniform vec2 " + p + "_referenceLatitude;\n"
+         "uniform vec4 " + p + "_jacobian;\n"
+         "uniform vec4 " + p + "_hessianU;\n"
+         "uniform vec4 " + p + "_hessianV;\n"
+         "uniform float " + p + "_reach;\n"
+         "vec2 " + p + "_offset(SurfacePoint p) {\n"
+         "  return " + p + "_tangent ? tangentOffset(p.fromReference, " + p + "_referenceLatitude) : p.fromReference;\n"
+         "}\n"
+         "bool " + p + "_near(SurfacePoint p) {\n"
+         "  vec2 d = " + p + "_offset(p);\n"
+         "  return dot(d, d) < " + p + "_reach * " + p + "_reach;\n"
+         "}\n"
+         "vec2 " + p + "_curvature(vec2 d, vec2 step) {\n"
+         "  return vec2(dot(mat2(" + p + "_hessianU) * d, step), dot(mat2(" + p + "_hessianV) * d, step));\n"
+         "}\n"
+         "vec3 " + p + "_at(SurfacePoint p) {\n"
+         "  if (!" + p + "_near(p)) return " + p + "_coordinates(p.lonlat);\n"
+         "  vec2 d = " + p + "_offset(p);\n"
+         "  return vec3(" + p + "_referenceUv + mat2(" + p + "_jacobian) * d + 0.5 * " + p + "_curvature(d, d), 1.0);\n"
+         "}\n"
+         "vec2 " + p + "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) {\n"
+         "  if (!" + p + "_near(p)) return " + p + "_absoluteStep(at, p.lonlat, lonlatStep);\n"
+         "  vec2 step = " + p + "_tangent ? tangentStep(p.fromReference, " + p + "_referenceLatitude, lonlatStep)\n"
+         "                          : lonlatStep;\n"
+         "  return mat2(" + p + "_jacobian) * step + " + p + "_curvature(" + p + "_offset(p), step);\n"
          "}\n";
 }
 
@@ -93,13 +156,13 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
 std::string ProjectedRasterLayer::texelGlsl() const {
   const std::string& p = prefix_;
   return "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  vec3 at = " + p + "_at(p);\n"
          "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
-         "  return vec4(" + p + "_step(at, p.lonlat, p.lonlatDx) * " + p + "_texels, " + p +
-         "_step(at, p.lonlat, p.lonlatDy) * " + p + "_texels);\n"
+         "  return vec4(" + p + "_step(at, p, p.lonlatDx) * " + p + "_texels, " + p +
+         "_step(at, p, p.lonlatDy) * " + p + "_texels);\n"
          "}\n"
          "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_coordinates(p.lonlat);\n"
+         "  vec3 at = " + p + "_at(p);\n"
          "  if (at.z <= 0.0) return -1.0;\n"
          "  vec2 texel = at.xy * " + p + "_texels;\n"
          "  float across = " + p + "_repeatX ? 1e30 : min(texel.x, " + p + "_texels.x - texel.x);\n"
@@ -122,6 +185,13 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
   program.set(prefix_ + "_repeatX", repeatX_ ? 1 : 0);
   program.set(prefix_ + "_texels", texels_);
+  program.set(prefix_ + "_referenceUv", referenceUv_);
+  program.set(prefix_ + "_jacobian", localTerms_[0]);
+  program.set(prefix_ + "_hessianU", localTerms_[1]);
+  program.set(prefix_ + "_hessianV", localTerms_[2]);
+  program.set(prefix_ + "_reach", reach_);
+  program.set(prefix_ + "_tangent", tangent_ ? 1 : 0);
+  program.set(prefix_ + "_referenceLatitude", referenceLatitude_);
 }
 
 }  // namespace strata

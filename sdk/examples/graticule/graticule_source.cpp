@@ -105,6 +105,10 @@ class GraticuleSource : public strata::Node {
     image_ = {};  // the texture holds it now
   }
 
+  // Sampled from each point's offset to the point below the eye, so that its lines stay exact up close
+  // anywhere on the body.
+  void prepare(const strata::FrameState& frame) override { layer_.setReference(frame.view.reference); }
+
   strata::Layer* layer() override { return &layer_; }
 
  private:

@@ -32,6 +32,12 @@ class ProjectedRasterLayer : public Layer {
   std::string texelStepsFunction() const override { return prefix_ + "_texelSteps"; }
   std::string edgeDistanceFunction() const override { return prefix_ + "_edgeDistance"; }
   ProjectionAspect aspect() const override;
+  // Follows the frame's reference (View::reference, the point below the eye; rad): near it the layer is
+  // sampled from each point's offset to the reference (SurfacePoint::fromReference), through the raster's
+  // texture coordinates about the reference computed in double on the CPU, so that a centimetre texel is
+  // addressed exactly anywhere on the body; farther away, through absolute longitude and latitude as
+  // before. Nodes call it each frame, from prepare(); a layer never told samples absolutely everywhere.
+  void setReference(glm::dvec2 referenceLonlat);
 
  protected:
   // Fixes where the raster of width x height texels lies; on the GL thread, before glsl() is asked for.
@@ -53,6 +59,7 @@ class ProjectedRasterLayer : public Layer {
 
  private:
   std::string texelGlsl() const;
+  std::string relativeGlsl() const;
 
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
@@ -65,6 +72,12 @@ class ProjectedRasterLayer : public Layer {
   glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
   glm::vec2 texels_{0.0f};                 // the raster's width and height
   bool repeatX_ = false;                   // the raster spans one period of a periodic projection
+  // Set by setReference(): the texture coordinates about the reference, as uniforms.
+  glm::vec2 referenceUv_{0.0f};
+  std::array<glm::vec4, 3> localTerms_{};  // the jacobian, then the second derivatives of u and of v
+  float reach_ = 0.0f;                     // rad; 0: sampled absolutely
+  bool tangent_ = false;                   // offsets in the tangent plane, else in longitude/latitude
+  glm::vec2 referenceLatitude_{0.0f, 1.0f};  // sin and cos
 };
 
 }  // namespace strata

@@ -1,0 +1,192 @@
+// Issue 27: a GeoTIFF of 1 cm texels (a 16 cm checkerboard, 10 m across, longitude/latitude on an
+// Earth-radius sphere) is crisp wherever it lies: at lon 0 lat 0, at Gale crater's place (lon 137.4,
+// lat -4.6), across the antimeridian on both sides, and a tenth of a degree from the pole, seen from 2 m
+// straight down and tilted 60 degrees, with each generator. Every pixel whose texel footprint lies in one
+// cell, by a ray cast in double against the sphere, must show that cell's colour within 2 levels. Sampled
+// through absolute float longitude and latitude (the path before issue 27), the board at lon 137.4 was one
+// flat grey and at lon 10 drawn in blocks.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+#include <string>
+#include <tuple>
+
+#include <glm/gtc/constants.hpp>
+
+#include <strata/plugin_registry.hpp>
+#include <strata/tiling.hpp>
+
+#include "rendering.hpp"
+#include "sphere_raycast.hpp"
+#include "temporary_directory.hpp"
+#include "test_rasters.hpp"
+
+namespace strata::test {
+namespace {
+
+constexpr int kSize = 256;
+constexpr double kRadius = 6371000.0;            // m: the pipeline's body
+constexpr double kTexel = 0.01;                  // m
+constexpr int kTexels = 1024;
+// 16 texels a cell: mip levels 1 to 4 stay inside cells. 32 for a board warped into another projection,
+// whose filtering blurs more of each cell's edge (judgedCell).
+constexpr int kCellTexels = 16, kWarpedCellTexels = 32;
+constexpr unsigned char kLight = 231, kDark = 48;
+
+// Where a board lies: its centre and where the camera is, in degrees.
+struct Place {
+  const char* name;
+  double lon, lat;              // the board's centre
+  double cameraLon, cameraLat;  // a little off it, so that no symmetry hides an offset
+};
+
+void PrintTo(const Place& place, std::ostream* out) { *out << place.name; }
+
+struct Board {
+  double west, north;        // deg
+  double lonStep, latStep;   // deg a texel
+
+  explicit Board(const Place& place)
+      : lonStep(glm::degrees(kTexel / (kRadius * std::cos(glm::radians(place.lat))))),
+        latStep(glm::degrees(kTexel / kRadius)) {
+    west = place.lon - lonStep * kTexels / 2;
+    north = place.lat + latStep * kTexels / 2;
+  }
+  // Level-0 texel position (x east, y south) of a longitude and latitude, the longitude wrapped to the board.
+  glm::dvec2 texelOf(double lon, double lat) const {
+    const double east = std::remainder(lon - west, 360.0);
+    return {east / lonStep, (north - lat) / latStep};
+  }
+  std::array<double, 4> extent() const {
+    return {west, north - latStep * kTexels, west + lonStep * kTexels, north};
+  }
+};
+
+
+
+// The cell a pixel shows, if the filtered texels it samples lie in one cell: its 3x3 neighbourhood's hits,
+// widened by what filtering reads beyond a point (half a texel of the coarser of the two mip levels the
+// footprint blends, 2^ceil(log2 footprint) level-0 texels), must fall in a single cell of the board.
+// `resampled`: a board warped into another projection, whose bilinear resampling blurs each edge over a
+// texel and whose mip levels are not aligned with the cells: a whole coarse texel (turned, up to sqrt 2 of
+// it along the board's axes) and one more texel on each side.
+std::optional<glm::ivec2> judgedCell(const View& view, const Board& board, int x, int y, bool resampled) {
+  glm::dvec2 low(1e300), high(-1e300);
+  for (int dy = -1; dy <= 1; ++dy)
+    for (int dx = -1; dx <= 1; ++dx) {
+      const std::optional<SurfaceHit> hit = raycastSphere(view, kRadius, x + dx, y + dy);
+      if (!hit) return std::nullopt;
+      const glm::dvec2 texel = board.texelOf(hit->lon, hit->lat);
+      low = glm::min(low, texel);
+      high = glm::max(high, texel);
+    }
+  const double footprint = std::max(high.x - low.x, high.y - low.y) / 2.0;  // texels a pixel
+  const double coarsest = std::exp2(std::ceil(std::log2(std::max(footprint, 1.0))));
+  const double margin = resampled ? std::sqrt(2.0) * coarsest + 1.0 : 0.5 * coarsest;
+  low -= margin;
+  high += margin;
+  if (low.x < 0 || low.y < 0 || high.x > kTexels || high.y > kTexels) return std::nullopt;
+  const int cell = resampled ? kWarpedCellTexels : kCellTexels;
+  const glm::ivec2 first(glm::floor(low / double(cell))), last(glm::floor(high / double(cell)));
+  if (first != last) return std::nullopt;
+  return first;
+}
+
+std::string degrees(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.12f", value);
+  return text;
+}
+
+// Writes the board at `place`, warped into `projection` by strata tile unless it is empty, renders it with
+// `geometry` tilted `tilt` degrees from 2 m and expects every judged pixel to show its cell's colour.
+void expectCrisp(const Place& place, const std::string& geometry, double tilt, const std::string& projection) {
+  TemporaryDirectory directory;
+  const Board board(place);
+  const int side = projection.empty() ? kCellTexels : kWarpedCellTexels;
+  writeColourRaster(directory.path() / "board.tif", kTexels, kTexels, board.extent(), [side](int column, int row) {
+    const unsigned char grey = (column / side + row / side) % 2 == 0 ? kLight : kDark;
+    return Rgb8{grey, grey, grey};
+  });
+  std::string raster = "board.tif";
+  if (!projection.empty()) {
+    raster = "warped.tif";
+    tileRaster(PluginRegistry{}, {directory.path() / "board.tif", directory.path() / raster, projection});
+  }
+  const auto pipeline = directory.write(
+      "board.yaml", "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
+                    "camera: {lon: " + degrees(place.cameraLon) + ", lat: " + degrees(place.cameraLat) +
+                    ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
+                    "  board: {type: source.gdal, path: " + raster + "}\n"
+                    "  globe: {type: " + geometry + "}\n"
+                    "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
+  auto engine = makeEngine();
+  const Image image = renderFrame(*engine, pipeline, kSize, kSize);
+  const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
+  int judged = 0, wrong = 0;
+  for (int y = 1; y < kSize - 1; ++y)
+    for (int x = 1; x < kSize - 1; ++x) {
+      const std::optional<glm::ivec2> cell = judgedCell(view, board, x, y, !projection.empty());
+      if (!cell) continue;
+      ++judged;
+      const int expected = (cell->x + cell->y) % 2 == 0 ? kLight : kDark;
+      if (std::abs(image.at(x, y)[1] - expected) > 2) ++wrong;  // 2 levels: 8-bit rounding after float arithmetic
+    }
+  EXPECT_GT(judged, kSize * kSize / 5);
+  EXPECT_EQ(wrong, 0) << "of " << judged << " pixels";
+}
+
+class RasterPrecision : public ::testing::TestWithParam<std::tuple<Place, std::string, double>> {};
+
+TEST_P(RasterPrecision, OneCentimetreTexelsAreCrispFromTwoMetres) {
+  const auto& [place, geometry, tilt] = GetParam();
+  expectCrisp(place, geometry, tilt, "");
+}
+
+// The camera 1.37 m east and 0.5 m north of the board's centre (in metres on the ground); across the
+// antimeridian from either side.
+const Place kPlaces[] = {
+    {"origin", 0.0, 0.0, 1.23e-5, 4.5e-6},
+    {"gale", 137.4, -4.6, 137.4 + 1.23e-5, -4.6 + 4.5e-6},
+    {"antimeridian_east", 180.0, 10.0, -179.99998, 10.0 + 4.5e-6},
+    {"antimeridian_west", -180.0, -10.0, 179.99998, -10.0 + 4.5e-6},
+    {"near_north_pole", 33.0, 89.95, 33.0 + 0.0123, 89.95 + 4.5e-6},
+};
+
+INSTANTIATE_TEST_SUITE_P(
+    PlacesGeneratorsAndTilts, RasterPrecision,
+    ::testing::Combine(::testing::ValuesIn(kPlaces),
+                       ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                       ::testing::Values(0.0, 60.0)),
+    [](const ::testing::TestParamInfo<std::tuple<Place, std::string, double>>& param) {
+      const std::string& type = std::get<1>(param.param);
+      return std::string(std::get<0>(param.param).name) + "_" + type.substr(type.find('.') + 1) + "_tilt" +
+             std::to_string(int(std::get<2>(param.param)));
+    });
+
+}  // namespace
+}  // namespace strata::test
+
+namespace strata::test {
+namespace {
+
+// The board warped to polar stereographic (strata tile --to polar-north): near the pole, where the
+// projection is true, and at 10 degrees north, where it is far from linear over the reach.
+class WarpedRasterPrecision : public ::testing::TestWithParam<std::tuple<Place, double>> {};
+
+TEST_P(WarpedRasterPrecision, OneCentimetreTexelsInPolarStereographicAreCrispFromTwoMetres) {
+  const auto& [place, tilt] = GetParam();
+  expectCrisp(place, "geometry.icosahedral", tilt, "polar-north");
+}
+
+INSTANTIATE_TEST_SUITE_P(PlacesAndTilts, WarpedRasterPrecision,
+                         ::testing::Combine(::testing::Values(kPlaces[4], kPlaces[2]), ::testing::Values(0.0, 60.0)),
+                         [](const ::testing::TestParamInfo<std::tuple<Place, double>>& param) {
+                           return std::string(std::get<0>(param.param).name) + "_tilt" +
+                                  std::to_string(int(std::get<1>(param.param)));
+                         });
+
+}  // namespace
+}  // namespace strata::test
