@@ -63,6 +63,8 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
 }
 
 void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
+  if (reference_ == referenceLonlat) return;
+  reference_ = referenceLonlat;
   const std::array<double, 6>& t = georeference_.geotransform;
   const double uSpan = t[1] * texels_.x, vSpan = t[5] * texels_.y;
   const Projection& projection = *georeference_.projection;

@@ -7,6 +7,8 @@
 
 #include <strata/pipeline.hpp>
 
+#include "pipeline/files_gdal_reads.hpp"
+
 namespace strata {
 namespace {
 
@@ -18,12 +20,19 @@ void addFilesGdalReads(const fs::path& file, std::vector<fs::path>& files) {
   std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(file.c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
   CPLPopErrorHandler();
   if (!dataset) return;
-  char** list = dataset->GetFileList();
-  for (char** name = list; name && *name; ++name) files.emplace_back(*name);
-  CSLDestroy(list);
+  const std::vector<fs::path> read = filesGdalReads(*dataset);
+  files.insert(files.end(), read.begin(), read.end());
 }
 
 }  // namespace
+
+std::vector<fs::path> filesGdalReads(GDALDataset& dataset) {
+  std::vector<fs::path> files;
+  char** list = dataset.GetFileList();
+  for (char** name = list; name && *name; ++name) files.emplace_back(*name);
+  CSLDestroy(list);
+  return files;
+}
 
 std::vector<fs::path> pipelineInputFiles(const Pipeline& pipeline) {
   std::vector<fs::path> files;

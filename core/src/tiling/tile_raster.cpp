@@ -8,6 +8,7 @@
 #include <strata/output_file.hpp>
 #include <strata/tiling.hpp>
 
+#include "pipeline/files_gdal_reads.hpp"
 #include "tiling/cog_writing.hpp"
 #include "tiling/healpix_tiling.hpp"
 #include "tiling/tile_target.hpp"
@@ -36,15 +37,6 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
   if (GDALDataTypeIsComplex(type) || (GDALGetDataTypeSizeBits(type) > 32 && type != GDT_Float64))
     throw Error(where, "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) + " samples",
                 "convert to 8/16/32-bit integers or floats: gdal_translate -ot Float32");
-}
-
-// The input and every file GDAL reads for it (a VRT's sources, overviews, side-cars): none may be the output.
-std::vector<std::filesystem::path> filesRead(const TilingRequest& request, GDALDataset& input) {
-  std::vector<std::filesystem::path> files{request.input};
-  char** list = input.GetFileList();
-  for (char** name = list; name && *name; ++name) files.emplace_back(*name);
-  CSLDestroy(list);
-  return files;
 }
 
 // The pyramid, written into `partial` (in the scratch folder beside the output).
@@ -76,7 +68,8 @@ TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& requ
   const SourceLocation where{request.input.string()}, output{request.output.string()};
   checkOutputTarget(request.output, {request.overwrite, {request.input}}, output);
   Dataset input = openInput(request.input, where);
-  checkOutputTarget(request.output, {request.overwrite, filesRead(request, *input)}, output);
+  // Every file GDAL reads for the input (a VRT's sources too): none may be the output.
+  checkOutputTarget(request.output, {request.overwrite, filesGdalReads(*input)}, output);
   checkBands(*input, where);
   const ScratchDirectory scratch(request.output);
   const std::filesystem::path partial = scratch.path() / request.output.filename();

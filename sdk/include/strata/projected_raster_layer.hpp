@@ -1,6 +1,7 @@
 #pragma once
 #include <strata/export.hpp>
 #include <array>
+#include <optional>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -72,7 +73,9 @@ class ProjectedRasterLayer : public Layer {
   glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
   glm::vec2 texels_{0.0f};                 // the raster's width and height
   bool repeatX_ = false;                   // the raster spans one period of a periodic projection
-  // Set by setReference(): the texture coordinates about the reference, as uniforms.
+  // Set by setReference(): the reference they were fitted for (a still camera keeps its fit), and the
+  // texture coordinates about it, as uniforms.
+  std::optional<glm::dvec2> reference_;
   glm::vec2 referenceUv_{0.0f};
   std::array<glm::vec4, 3> localTerms_{};  // the jacobian, then the second derivatives of u and of v
   float reach_ = 0.0f;                     // rad; 0: sampled absolutely
