@@ -69,6 +69,7 @@ class ImageOutput : public Node, public FrameOutput {
 
   FrameOutput* output() override { return this; }
   const Framebuffer& frame() const override { return frame_; }
+  const SurfaceGeometry* surface() const override { return geometry_; }
   void write(const std::filesystem::path& file) const override {
     writeImage(file, frame_.width(), frame_.height(), readPixels(frame_));
   }

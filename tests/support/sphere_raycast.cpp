@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <glm/gtc/constants.hpp>
@@ -9,13 +10,15 @@
 namespace strata::test {
 namespace {
 
-// The planet-fixed unit direction of the ray through the centre of pixel (x, y).
-glm::dvec3 pixelRay(const View& view, double x, double y) {
+// The eye-space unit direction of the ray through the centre of pixel (x, y).
+glm::dvec3 eyeRay(const View& view, double x, double y) {
   const double tanHalf = std::tan(view.verticalFov / 2.0), aspect = double(view.width) / view.height;
   const double ndcX = (x + 0.5) / view.width * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / view.height * 2.0;
-  const glm::dvec3 inEye = glm::normalize(glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0));
-  return glm::transpose(view.planetToEye) * inEye;
+  return glm::normalize(glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0));
 }
+
+// The same in planet-fixed axes.
+glm::dvec3 pixelRay(const View& view, double x, double y) { return glm::transpose(view.planetToEye) * eyeRay(view, x, y); }
 
 // How far along the ray from the eye along `d` it enters the sphere of `radius`, and leaves it.
 std::optional<std::pair<double, double>> sphereCrossings(const View& view, const glm::dvec3& d, double radius) {
@@ -25,9 +28,10 @@ std::optional<std::pair<double, double>> sphereCrossings(const View& view, const
   return std::pair{-b - std::sqrt(discriminant), -b + std::sqrt(discriminant)};
 }
 
-SurfaceHit hitAt(const glm::dvec3& point, const glm::dvec3& d) {
+SurfaceHit hitAt(const View& view, const glm::dvec3& point, const glm::dvec3& d) {
   const glm::dvec3 n = glm::normalize(point);
-  return {glm::degrees(std::atan2(n.y, n.x)), glm::degrees(std::asin(n.z)), -glm::dot(n, d)};
+  return {glm::degrees(std::atan2(n.y, n.x)), glm::degrees(std::asin(n.z)), -glm::dot(n, d),
+          glm::length(point - view.eye)};
 }
 
 }  // namespace
@@ -36,7 +40,7 @@ std::optional<SurfaceHit> raycastSphere(const View& view, double radius, double 
   const glm::dvec3 d = pixelRay(view, x, y);
   const auto crossings = sphereCrossings(view, d, radius);
   if (!crossings || crossings->first < 0.0) return std::nullopt;
-  return hitAt(view.eye + crossings->first * d, d);
+  return hitAt(view, view.eye + crossings->first * d, d);
 }
 
 std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
@@ -47,7 +51,7 @@ std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
   if (!crossings) return std::nullopt;
   const auto above = [&](double t) {  // m of the ray above the terrain at t
     const glm::dvec3 point = view.eye + t * d;
-    const SurfaceHit where = hitAt(point, d);
+    const SurfaceHit where = hitAt(view, point, d);
     return glm::length(point) - radius - height(where.lon, where.lat);
   };
   double t = std::max(crossings->first, 0.0);
@@ -56,7 +60,12 @@ std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
   double low = t, high = t + step;
   while (high - low > 1e-3) (above(0.5 * (low + high)) > 0.0 ? low : high) = 0.5 * (low + high);
   if (radiusAt) *radiusAt = glm::length(view.eye + high * d);
-  return hitAt(view.eye + high * d, d);
+  return hitAt(view, view.eye + high * d, d);
+}
+
+double rayDistance(const View& view, float depth, double x, double y) {
+  if (depth <= 0.0f) return std::numeric_limits<double>::infinity();
+  return view.near / double(depth) / -eyeRay(view, x, y).z;
 }
 
 double discRadiusPixels(const View& view, double radius, double distance) {

@@ -13,6 +13,7 @@ struct SurfaceHit {
   double lon;        // deg in [-180, 180)
   double lat;        // deg
   double incidence;  // cosine of the angle between the ray and the surface normal (1: head-on)
+  double distance;   // m from the eye along the ray
 };
 
 std::optional<SurfaceHit> raycastSphere(const View& view, double radius, double x, double y);
@@ -25,6 +26,10 @@ std::optional<SurfaceHit> raycastSphere(const View& view, double radius, double 
 std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
                                          const std::function<double(double lon, double lat)>& height, double highest,
                                          double step, double x, double y, double* radiusAt = nullptr);
+
+// The distance from the eye along the ray through the centre of pixel (x, y) of a reversed depth read back
+// from a geometry's buffer (strata/output.hpp, readDepth); infinity where it is 0 (nothing drawn).
+double rayDistance(const View& view, float depth, double x, double y);
 
 // The expected radius in pixels of a sphere of `radius` seen from distance `distance` to its centre.
 double discRadiusPixels(const View& view, double radius, double distance);

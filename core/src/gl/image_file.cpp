@@ -8,21 +8,6 @@
 #include <strata/output.hpp>
 
 namespace strata {
-
-std::vector<unsigned char> readPixels(const Framebuffer& framebuffer) {
-  const int width = framebuffer.width(), height = framebuffer.height();
-  const auto rowBytes = static_cast<std::size_t>(width) * 4;
-  std::vector<unsigned char> bottomUp(rowBytes * static_cast<std::size_t>(height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(framebuffer.color(0).id(), 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                    static_cast<GLsizei>(bottomUp.size()), bottomUp.data());
-  std::vector<unsigned char> topDown(bottomUp.size());
-  for (int row = 0; row < height; ++row)
-    std::memcpy(&topDown[static_cast<std::size_t>(row) * rowBytes],
-                &bottomUp[static_cast<std::size_t>(height - 1 - row) * rowBytes], rowBytes);
-  return topDown;
-}
-
 namespace {
 
 // GDAL's last error without its trailing newline.
@@ -32,7 +17,36 @@ std::string lastGdalError() {
   return message;
 }
 
+// Rows of `bottomUp` (as GL reads them) in the order images are written, top row first.
+template <typename T>
+std::vector<T> topRowFirst(const std::vector<T>& bottomUp, int height) {
+  const auto row = static_cast<std::size_t>(bottomUp.size() / static_cast<std::size_t>(height));
+  std::vector<T> topDown(bottomUp.size());
+  for (int y = 0; y < height; ++y)
+    std::memcpy(&topDown[static_cast<std::size_t>(y) * row], &bottomUp[static_cast<std::size_t>(height - 1 - y) * row],
+                row * sizeof(T));
+  return topDown;
+}
+
 }  // namespace
+
+std::vector<unsigned char> readPixels(const Framebuffer& framebuffer) {
+  const int width = framebuffer.width(), height = framebuffer.height();
+  std::vector<unsigned char> bottomUp(static_cast<std::size_t>(width) * 4 * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(framebuffer.color(0).id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(bottomUp.size()),
+                    bottomUp.data());
+  return topRowFirst(bottomUp, height);
+}
+
+std::vector<float> readDepth(const Framebuffer& framebuffer) {
+  const int width = framebuffer.width(), height = framebuffer.height();
+  std::vector<float> bottomUp(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(framebuffer.depth().id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    static_cast<GLsizei>(bottomUp.size() * sizeof(float)), bottomUp.data());
+  return topRowFirst(bottomUp, height);
+}
 
 ImageFormat imageFormatOf(const std::filesystem::path& file) {
   std::string extension = file.extension().string();

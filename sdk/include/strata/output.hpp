@@ -8,6 +8,8 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
+class SurfaceGeometry;
+
 // The end of a pipeline: a finished frame the host shows (a window) or saves (strata render).
 class FrameOutput {
  public:
@@ -16,10 +18,17 @@ class FrameOutput {
   virtual const Framebuffer& frame() const = 0;
   // Writes the last rendered frame to `file`; throws strata::Error if it cannot be written.
   virtual void write(const std::filesystem::path& file) const = 0;
+  // The geometry the frame was composed over, whose deferred texturing buffer (strata/geometry.hpp) says
+  // what lies under each pixel and how far away: for picking and range images. nullptr for an output
+  // composed over none.
+  virtual const SurfaceGeometry* surface() const { return nullptr; }
 };
 
 // Reads back colour attachment 0 of `framebuffer` as rows of RGBA8, top row first.
 std::vector<unsigned char> readPixels(const Framebuffer& framebuffer);
+// Reads back the depth attachment of `framebuffer` as rows of floats, top row first: a geometry's reversed
+// depth (View::projection: near / distance along the view axis, 0 where nothing was drawn).
+std::vector<float> readDepth(const Framebuffer& framebuffer);
 // The image formats frames are written in, chosen by the file's extension.
 enum class ImageFormat { Png, Tiff };
 // .png: PNG; .tif, .tiff: TIFF (any case). Throws strata::Error naming the file for any other extension.
