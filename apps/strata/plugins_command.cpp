@@ -48,7 +48,7 @@ void describe(const NodeTypeDeclaration& type) {
   std::printf("\nparameters:\n");
   if (type.parameters.empty()) std::printf("  (none)\n");
   for (const ParameterDeclaration& p : type.parameters) {
-    std::string value = p.defaultValue ? "default " + formatValue(*p.defaultValue) : "required";
+    std::string value = p.defaultValue ? "default " + formatValue(*p.defaultValue) : p.optional ? "optional" : "required";
     std::printf("  %-16s %-9s %-14s %-16s %-4s %s%s\n", p.name.c_str(), toString(p.type), value.c_str(),
                 range(p).c_str(), p.units.c_str(), p.live ? "(live) " : "", p.doc.c_str());
   }

@@ -35,7 +35,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
         radius_(setup.body->radius),
         settings_{.threshold = setup.parameters.real("threshold"), .gridCells = gridCellsOf(setup)} {}
 
-  void open() override { heights_.checkLayerWithin(); }
+  void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
     surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/healpix_surface.vert",
@@ -63,6 +63,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 
   SurfaceGeometry* geometry() override { return this; }
   const Framebuffer& gbuffer() const override { return gbuffer_; }
+  HeightRange heights() const override { return heights_.range(); }
 
  private:
   void useSurface(const View& view);
@@ -103,6 +104,7 @@ void HealpixGeometry::useSurface(const View& view) {
   surface_.set("referenceLonlat", glm::vec2(view.reference));
   surface_.set("radius", float(radius_));
   surface_.set("footprintPerMetre", float(pixelAngle / (std::sqrt(settings_.threshold) * radius_)));
+  surface_.set("groundLevel", float(groundLevelNear(heights_.range(), glm::length(view.eye) - radius_)));
 }
 
 void HealpixGeometry::render(const FrameState& frame) {

@@ -27,12 +27,11 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
         radius_(setup.body->radius),
         table_(int(setup.parameters.integer("depth"))),
         windings_(table_),
-        tree_(radius_, heights_.range(),
-              {.patches = int(setup.parameters.integer("patches")),
-               .operationsPerFrame = int(setup.parameters.integer("operations"))}) {}
+        treeSettings_{.patches = int(setup.parameters.integer("patches")),
+                      .operationsPerFrame = int(setup.parameters.integer("operations"))} {}
 
-  // The height layer has opened: where it knows its heights, they must lie within what culling trusts.
-  void open() override { heights_.checkLayerWithin(); }
+  // The height layer has opened: the patches' shells take the heights it holds.
+  void open() override { tree_.emplace(radius_, heights_.open(), treeSettings_); }
 
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
@@ -50,10 +49,10 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
     const auto start = std::chrono::steady_clock::now();
     const std::array<ViewVolume, 1> views{ViewVolume(frame.view)};
     if (frame.index == 0 || frame.still)
-      tree_.settle(views);  // a still image, or the first of many, is drawn from a settled tree
+      tree_->settle(views);  // a still image, or the first of many, is drawn from a settled tree
     else
-      tree_.update(views);
-    batch_ = batchPatches(tree_.visiblePatches(), frame.view, radius_, tree_.splitDistanceAtLevelZero(), table_,
+      tree_->update(views);
+    batch_ = batchPatches(tree_->visiblePatches(), frame.view, radius_, tree_->splitDistanceAtLevelZero(), table_,
                           windings_);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
@@ -69,6 +68,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
   SurfaceGeometry* geometry() override { return this; }
   const Framebuffer& gbuffer() const override { return gbuffer_; }
+  HeightRange heights() const override { return heights_.range(); }
 
  private:
   void clear();
@@ -77,7 +77,8 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   double radius_;
   SubdivisionTable table_;
   EdgeWindings windings_;
-  PatchTree tree_;
+  PatchTreeSettings treeSettings_;
+  std::optional<PatchTree> tree_;  // made in open(), once the heights are known
   PatchBatch batch_;
   ShaderProgram subdivision_;
   ShaderProgram surface_;

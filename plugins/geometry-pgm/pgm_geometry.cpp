@@ -53,7 +53,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
       : heights_(setup), radius_(setup.body->radius), grid_(gridOf(setup)), zeta_(setup.parameters.real("zeta")) {}
 
   // The height layer has opened: where it knows its heights, they must lie within the reference spheres'.
-  void open() override { heights_.checkLayerWithin(); }
+  void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
     cast_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_cast.comp", gpu.shaders->expand("geometry/pgm_cast.comp")}});
@@ -78,6 +78,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
 
   SurfaceGeometry* geometry() override { return this; }
   const Framebuffer& gbuffer() const override { return gbuffer_; }
+  HeightRange heights() const override { return heights_.range(); }
 
  private:
   std::optional<double> leastVisibleHeight(const View& view);

@@ -38,10 +38,12 @@ class GdalSource : public Node {
     const SourceLocation where = parameters_.where("path");
     std::unique_ptr<GDALDataset> dataset = openDataset(where);
     checkRaster(*dataset, kind_, where);
+    std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where);
     if (kind_ != LayerKind::Color)
-      if (const std::optional<ValueRange> raw = exactRawRange(*dataset)) layer_.setRawRange(*raw);
+      if (const std::optional<ValueRange> raw = exactRawRange(*dataset, healpix ? healpix->ranges.get() : nullptr))
+        layer_.setRawRange(*raw);
     if (kind_ == LayerKind::Height) refuseHeightsNoTerrainHas(where);
-    if (std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where)) {
+    if (healpix) {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
       layer_.setPageRanges(std::move(healpix->ranges));

@@ -16,30 +16,42 @@ constexpr double kCountableTexels = 16.0 * 1024 * 1024;
 
 bool finite(const ValueRange& range) { return std::isfinite(range.least) && std::isfinite(range.greatest); }
 
-// The extremes of the finite values the mask lets through: GDAL's own count takes in infinities, which
-// pages mask as they mask NaN (raster_reading.cpp), so they bound nothing that is drawn.
-std::optional<ValueRange> finiteRange(GDALRasterBand& band) {
-  const int width = band.GetXSize(), height = band.GetYSize();
-  std::vector<float> values(std::size_t(width) * std::size_t(height));
+// Rows read at a time: a band of a 4096-wide raster is 4 MiB of floats.
+constexpr int kRowsAtATime = 256;
+
+// Widens `range` by the finite values of rows [row, row + rows) the mask lets through; false where they
+// cannot be read.
+bool widenByRows(GDALRasterBand& band, int row, int rows, std::optional<ValueRange>& range) {
+  const int width = band.GetXSize();
+  std::vector<float> values(std::size_t(width) * std::size_t(rows));
   std::vector<GByte> valid(values.size());
-  if (band.RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float32, 0, 0) != CE_None ||
-      band.GetMaskBand()->RasterIO(GF_Read, 0, 0, width, height, valid.data(), width, height, GDT_Byte, 0, 0) !=
-          CE_None)
-    return std::nullopt;
-  std::optional<ValueRange> range;
+  if (band.RasterIO(GF_Read, 0, row, width, rows, values.data(), width, rows, GDT_Float32, 0, 0) != CE_None ||
+      band.GetMaskBand()->RasterIO(GF_Read, 0, row, width, rows, valid.data(), width, rows, GDT_Byte, 0, 0) != CE_None)
+    return false;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!valid[i] || !std::isfinite(values[i])) continue;
     const double value = values[i];
     range = range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
   }
-  return range;
+  return true;
 }
 
-std::optional<ValueRange> countedRange(GDALRasterBand& band) {
+// The extremes of the finite values the mask lets through, band of rows by band of rows: GDAL's own count
+// takes in infinities, which pages mask as they mask NaN (raster_reading.cpp), and gives up on a file of which
+// some part cannot be read. Those parts are drawn as no data, the sphere, so they bound nothing either. A
+// raster of which nothing is drawn returns no value, which any range bounds: {0, 0}.
+ValueRange drawnRange(GDALRasterBand& band) {
+  std::optional<ValueRange> range;
+  for (int row = 0; row < band.GetYSize(); row += kRowsAtATime)
+    widenByRows(band, row, std::min(kRowsAtATime, band.GetYSize() - row), range);
+  return range.value_or(ValueRange{0.0, 0.0});
+}
+
+ValueRange countedRange(GDALRasterBand& band) {
   double extremes[2] = {0.0, 0.0};
-  if (band.ComputeRasterMinMax(FALSE, extremes) != CE_None) return std::nullopt;
+  if (band.ComputeRasterMinMax(FALSE, extremes) != CE_None) return drawnRange(band);
   const ValueRange range{extremes[0], extremes[1]};
-  return finite(range) ? range : finiteRange(band);
+  return finite(range) ? range : drawnRange(band);
 }
 
 }  // namespace
@@ -54,6 +66,13 @@ std::optional<ValueRange> exactRawRange(GDALDataset& dataset) {
   if (double(dataset.GetRasterXSize()) * dataset.GetRasterYSize() > kCountableTexels) return std::nullopt;
   const QuietGdalErrors quiet;  // a file that cannot be read whole is reported page by page when drawn
   return countedRange(band);
+}
+
+std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const healpix::PageRanges* ranges) {
+  if (!ranges) return exactRawRange(dataset);
+  const healpix::PageRanges::Range whole = ranges->whole();
+  if (whole.least > whole.greatest) return std::nullopt;
+  return ValueRange{whole.least, whole.greatest};
 }
 
 }  // namespace strata::gdal

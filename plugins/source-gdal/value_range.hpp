@@ -3,14 +3,18 @@
 
 #include <gdal_priv.h>
 
+#include <strata/healpix_pyramid.hpp>
 #include <strata/layer.hpp>
 
 namespace strata::gdal {
 
-// The least and greatest finite raw values of band 1, nodata left out, where they can be known for certain: the
-// file's own exact statistics, or GDAL's exact count over a raster small enough to read whole quickly.
-// None for a large raster without them (GDAL's approximate statistics come from averaged overviews and
-// miss the extremes).
+// The least and greatest finite raw values of band 1 that can be drawn (nodata and unreadable parts left
+// out: the sphere shows there), where they can be known for certain: the file's own exact statistics, or a
+// count over a raster small enough to read whole quickly. None for a large raster without them (GDAL's
+// approximate statistics come from averaged overviews and miss the extremes).
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset);
+// The same for a HEALPix pyramid from the true page ranges `strata tile` stored in it (`ranges`, or null where
+// it stored none), which need no reading.
+std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const healpix::PageRanges* ranges);
 
 }  // namespace strata::gdal

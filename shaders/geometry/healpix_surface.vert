@@ -42,6 +42,7 @@ uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
 uniform vec2 referenceLonlat;    // rad: the point below the eye
 uniform float radius;            // m
 uniform float footprintPerMetre;  // rad of the sphere between vertices per metre from the eye
+uniform float groundLevel;        // m above the radius: the ground nearest the eye (groundLevelNear)
 
 out vec2 vLonlatFromReference;
 out vec3 vSphereNormal;
@@ -85,7 +86,7 @@ void main() {
   vec2 lonlat = lonlatFromReference(vec3(fromReference.xy, 1.0 + fromReference.z), referenceLatitude);
   vec3 shading = normal;
 #ifdef STRATA_HAS_HEIGHT
-  float spacing = footprintPerMetre * length(fromEye);
+  float spacing = footprintPerMetre * length(fromEye + groundLevel * normal);  // measured on the ground
 #ifdef STRATA_HEIGHT_FACE_FUNCTION
   float h = heightAtFacePoint(facePoint, spacing);  // the layer's texels are the faces: no projection
 #else

@@ -41,6 +41,8 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
   }
   for (const Observation& observation : standardObservations())
     writeObservation(observation, planet, directory, Products::HeightAndColour, progress);
+  writeObservation(galeStrip(), strata::procedural::PlanetModel(finePlanetParameters(), kMarsRadius), directory,
+                   Products::HeightAndColour, progress);
   writeSeasons(directory);
   writeIceSheet(directory);
   writePanchromatic(directory);
@@ -50,7 +52,8 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
 
 int main(int argc, char** argv) {
   CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
-               "global, north, south, healpix and strip, each as <name>-height.tif and <name>-color.tif, and twelve months "
+               "global, north, south, healpix, strip and gale (25 cm texels at 137.4 E, 4.6 S), each as <name>-height.tif "
+               "and <name>-color.tif, and twelve months "
                "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, an ice sheet over "
                "the north pole, ice-height.tif and ice-color.tif, and a panchromatic view of the strip, strip-luminance.tif."};
   std::string directory;

@@ -74,6 +74,17 @@ Observation strip() {
 
 }  // namespace
 
+Observation galeStrip() {
+  constexpr double kTexel = 0.25, lon = 137.4, lat = -4.6;  // m; deg
+  constexpr int kWidth = 1024, kHeight = 4096;
+  const double pixelHeight = kTexel / (kMarsRadius * kDegree), pixelWidth = pixelHeight / std::cos(lat * kDegree);
+  return {.name = "gale", .crs = kLongLat, .width = kWidth, .height = kHeight, .west = lon - pixelWidth * kWidth / 2,
+          .north = lat + pixelHeight * kHeight / 2, .pixelWidth = pixelWidth, .pixelHeight = pixelHeight,
+          .footprint = kTexel, .covers = everywhere};
+}
+
+procedural::PlanetParameters finePlanetParameters() { return {.octaves = 24, .contourInterval = 1.0}; }
+
 std::vector<Observation> standardObservations() {
   // The south cap is true to scale 19 degrees from its pole, as the Antarctic's EPSG:3031 is.
   return {global("global", 2048, 1024), polarCap("north", "+proj=stere +lat_0=90 +lat_ts=90 +R=3396190", 45.0),

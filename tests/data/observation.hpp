@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "planet_model.hpp"
+
 namespace strata::testdata {
 
 // Mars' mean radius (m): every observation is of a sphere this size.
@@ -26,6 +28,15 @@ struct Observation {
 // The observations the tests use, each covering what seed 000 chapter 4 composes: global, both polar caps,
 // HEALPix, and a narrow strip along an inclined ground track.
 std::vector<Observation> standardObservations();
+
+// A HiRISE-like strip of 25 cm texels, 256 m east-west by 1 km north-south, centred on Gale crater's place
+// (137.4 E, 4.6 S), for pipelines/mars_strip.yaml: far from longitude 0, where float longitude resolves
+// about a metre. Observe it with finePlanetParameters().
+Observation galeStrip();
+// The planet at the scale of galeStrip(): the same one (seed, amplitude, first wavelength), summed down to
+// octaves of about a metre (24 octaves: 3000 km / 2^23 = 0.36 m, the finest faded out by the footprint), so
+// that the strip holds relief finer than the global map's 1.5 km octaves, with contour lines every metre.
+procedural::PlanetParameters finePlanetParameters();
 
 // The whole planet in longitude/latitude at width x height, for benchmarks.
 Observation largeGlobalObservation(int width, int height);

@@ -37,7 +37,7 @@ TEST_P(LevelBoundaries, EveryPixelOnTheBodyIsDrawn) {
                       "  frame: {type: output.image, geometry: globe, shading: none}\n");
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kWidth, kHeight);
-  const View view = makeView(engine->pipeline().body, engine->camera(), kWidth, kHeight);
+  const View view = engine->view(kWidth, kHeight);
   const double radius = engine->pipeline().body.radius;
   int onBody = 0, cracks = 0;
   for (int y = 0; y < kHeight; ++y)

@@ -66,7 +66,7 @@ TEST_P(ProceduralRender, EveryJudgedPixelShowsTheModelsColour) {
   auto engine = makeEngine();
   const int width = 320, height = 240;
   Image image = renderFrame(*engine, pipeline, width, height);
-  const View view = makeView(engine->pipeline().body, engine->camera(), width, height);
+  const View view = engine->view(width, height);
   const double radius = engine->pipeline().body.radius;
   const procedural::PlanetModel planet({}, radius);
 

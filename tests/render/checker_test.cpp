@@ -80,7 +80,7 @@ TEST_P(CheckerBoard, StaysCrispAndStillFromTwoMetres) {
                           "  globe: {type: " + geometry + "}\n"
                           "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
     const Image image = renderFrame(*engine, pipeline, kWidth, kHeight);
-    const View view = makeView(engine->pipeline().body, engine->camera(), kWidth, kHeight);
+    const View view = engine->view(kWidth, kHeight);
     const Judgement result = judge(image, view, Board{engine->pipeline().body.radius});
     EXPECT_GT(result.judged, kWidth * kHeight / 5) << eastMillimetres << " mm east";
     EXPECT_EQ(result.wrong, 0) << "of " << result.judged << " pixels, " << eastMillimetres << " mm east";

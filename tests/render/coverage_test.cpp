@@ -16,8 +16,9 @@
 // while source.procedural summed its noise at float planet-fixed points, 0.4 m apart on Earth; sampled
 // from the reference (plugins/source-procedural/planet_lattice.hpp) it shows none.
 //
-// The reference is exact, in double: the relief lies between the spheres of radius R + lowest and
-// R + highest, so a pixel whose ray meets the lower sphere shows terrain, and one whose ray misses the
+// The generators take the relief's range from the layer (source.procedural's analytic bound): no `lowest`
+// or `highest` is given. The reference is exact, in double: the relief lies within +-amplitude of the
+// radius, so a pixel whose ray meets the lower sphere shows terrain, and one whose ray misses the
 // upper sphere shows the sky. Pixels whose neighbours one pixel away (diagonally) disagree are left out:
 // there the silhouette passes within the pixel, and a mesh of chords between grid points may lie either
 // side of its centre.
@@ -59,9 +60,7 @@ std::string pipelineFor(const Scene& scene, const std::string& type) {
          "  relief: {type: source.procedural, kind: height, amplitude: " + amplitude +
          ", wavelength: " + std::to_string(scene.wavelength) +
          "}\n"
-         "  terrain: {type: " + terrainOf(type) + ", height: relief, lowest: -" + amplitude +
-         ", highest: " + amplitude +
-         "}\n"
+         "  terrain: {type: " + terrainOf(type) + ", height: relief}\n"
          "  frame: {type: output.image, geometry: terrain, shading: none}\n";
 }
 

@@ -10,10 +10,17 @@
 // into the bare sphere outside) and its four diagonal neighbours' analytic distances lie within 25 cm of
 // its own (not on a ridge that hides what lies behind, where a pixel may show either side). Sampled
 // through absolute float longitude and latitude (the path before issue 27), the surface stood 25 cm off.
+//
+// The same strip raised 3 km (a plateau: the source's `offset`), seen straight down from 10 m above it,
+// must be as exact: the generators measure their detail from the ground the height layer's range allows
+// nearest the eye, not from the sphere 3 km below, which gave the heights' filtering the detail of a view
+// from 3 km (geometry.healpix was 3 cm off). Not yet: geometry.icosahedral's tree measures on the sphere
+// (82 cm off over the plateau), and tilted 45 degrees over it healpix is 6 cm off and pgm 31 cm.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -36,7 +43,7 @@ constexpr double kMars = 3389500.0;              // m
 constexpr double kLon = 137.4, kLat = -4.6;      // deg: the strip's centre, Gale crater's place
 constexpr double kTexel = 0.25;                  // m
 constexpr int kColumns = 2048, kRows = 512;      // east, north
-constexpr double kHighest = 2.0;                 // m: the sines' amplitudes sum to this
+constexpr double kAmplitude = 2.0;               // m: the sines' amplitudes sum to this
 constexpr double kMargin = 2.0;                  // m inside the strip's edges
 constexpr double kTolerance = 0.01;              // m along the ray
 
@@ -63,10 +70,12 @@ bool insideStrip(glm::dvec2 metres) {
   return std::abs(metres.x) < kTexel * kColumns / 2 - kMargin && std::abs(metres.y) < kTexel * kRows / 2 - kMargin;
 }
 
-// The terrain the ray cast meets: the sines over the strip, the bare sphere elsewhere.
-double terrainHeight(double lon, double lat) {
-  const glm::dvec2 metres = metresFromCentre(lon, lat);
-  return insideStrip(metres) ? analyticHeight(metres.x, metres.y) : 0.0;
+// The terrain the ray cast meets: the sines raised by `plateau` over the strip, the bare sphere elsewhere.
+std::function<double(double, double)> terrainHeight(double plateau) {
+  return [plateau](double lon, double lat) {
+    const glm::dvec2 metres = metresFromCentre(lon, lat);
+    return insideStrip(metres) ? plateau + analyticHeight(metres.x, metres.y) : 0.0;
+  };
 }
 
 std::string writeStrip(const TemporaryDirectory& directory) {
@@ -85,16 +94,18 @@ struct Errors {
   double worst = 0.0; // m along the ray
 };
 
-Errors measure(const View& view, const std::vector<float>& depth) {
+Errors measure(const View& view, const std::vector<float>& depth, double plateau) {
+  const auto terrain = terrainHeight(plateau);
+  const double highest = plateau + kAmplitude;
   Errors errors;
   for (int y = 1; y < kSize - 1; ++y)
     for (int x = 1; x < kSize - 1; ++x) {
-      const auto hit = raycastTerrain(view, kMars, terrainHeight, kHighest, 0.05, x, y);
+      const auto hit = raycastTerrain(view, kMars, terrain, highest, 0.05, x, y);
       if (!hit || !insideStrip(metresFromCentre(hit->lon, hit->lat))) continue;
       bool smooth = true;
       for (const int dx : {-1, 1})
         for (const int dy : {-1, 1}) {
-          const auto beside = raycastTerrain(view, kMars, terrainHeight, kHighest, 0.05, x + dx, y + dy);
+          const auto beside = raycastTerrain(view, kMars, terrain, highest, 0.05, x + dx, y + dy);
           smooth = smooth && beside && std::abs(beside->distance - hit->distance) < 0.25;
         }
       const float drawn = depth[static_cast<std::size_t>(y) * kSize + x];
@@ -106,39 +117,53 @@ Errors measure(const View& view, const std::vector<float>& depth) {
   return errors;
 }
 
-class HeightPrecision : public ::testing::TestWithParam<std::tuple<std::string, double>> {};
+// Tilt (deg) and plateau (m).
+using Setting = std::tuple<double, double>;
+class HeightPrecision : public ::testing::TestWithParam<std::tuple<std::string, Setting>> {};
 
 TEST_P(HeightPrecision, QuarterMetreDemLiesWithinOneCentimetreFromTenMetres) {
-  const auto& [geometry, tilt] = GetParam();
+  const auto& [geometry, setting] = GetParam();
+  const auto& [tilt, plateau] = setting;
   TemporaryDirectory directory;
   const auto pipeline = directory.write(
       "strip.yaml", "strata: 1\nbody: {name: Mars, radius: 3389500}\n"
-                    "camera: {lon: 137.40002, lat: -4.60001, altitude: 10, heading: 30, tilt: " +
-                        std::to_string(tilt) + ", fov: 40}\nnodes:\n"
-                        "  strip: {type: source.gdal, path: " + writeStrip(directory) + ", kind: height}\n"
-                        "  terrain: {type: " + geometry + ", height: strip, lowest: -2, highest: 2}\n"
+                    "camera: {lon: 137.40002, lat: -4.60001, altitude: " + std::to_string(plateau + 10.0) +
+                        ", heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
+                        "  strip: {type: source.gdal, path: " + writeStrip(directory) + ", kind: height, offset: " +
+                        std::to_string(plateau) + "}\n"
+                        "  terrain: {type: " + geometry + ", height: strip}\n"
                         "  frame: {type: output.image, geometry: terrain, shading: none}\n");
   auto engine = makeEngine();
   engine->load(pipeline);
   const FrameOutput& output = engine->renderComplete(kSize, kSize);
   ASSERT_NE(output.surface(), nullptr);
-  const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
-  const Errors errors = measure(view, readDepth(output.surface()->gbuffer()));
-  std::printf("%s tilt %.0f: %d pixels judged, worst %.4f m along the ray, %d holes\n", geometry.c_str(), tilt,
-              errors.judged, errors.worst, errors.holes);
+  const View view = engine->view(kSize, kSize);
+  const Errors errors = measure(view, readDepth(output.surface()->gbuffer()), plateau);
+  std::printf("%s tilt %.0f, plateau %.0f m: %d pixels judged, worst %.4f m along the ray, %d holes\n",
+              geometry.c_str(), tilt, plateau, errors.judged, errors.worst, errors.holes);
   EXPECT_GT(errors.judged, kSize * kSize / 2);
   EXPECT_LE(errors.worst, kTolerance);
   EXPECT_EQ(errors.holes, 0);
 }
 
+std::string nameOf(const ::testing::TestParamInfo<std::tuple<std::string, Setting>>& param) {
+  const std::string& type = std::get<0>(param.param);
+  const Setting& setting = std::get<1>(param.param);
+  return type.substr(type.find('.') + 1) + "_tilt" + std::to_string(int(std::get<0>(setting))) +
+         (std::get<1>(setting) > 0.0 ? "_plateau" : "");
+}
+
 INSTANTIATE_TEST_SUITE_P(GeneratorsAndTilts, HeightPrecision,
                          ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm",
                                                               "geometry.healpix"),
-                                            ::testing::Values(0.0, 45.0)),
-                         [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& param) {
-                           const std::string& type = std::get<0>(param.param);
-                           return type.substr(type.find('.') + 1) + "_tilt" + std::to_string(int(std::get<1>(param.param)));
-                         });
+                                            ::testing::Values(Setting(0.0, 0.0), Setting(45.0, 0.0))),
+                         nameOf);
+// geometry.icosahedral is left out over the plateau: its patch tree still measures distances on the sphere
+// (82 cm off there; issue 27's note).
+INSTANTIATE_TEST_SUITE_P(GeneratorsOverAPlateau, HeightPrecision,
+                         ::testing::Combine(::testing::Values("geometry.pgm", "geometry.healpix"),
+                                            ::testing::Values(Setting(0.0, 3000.0))),
+                         nameOf);
 
 }  // namespace
 }  // namespace strata::test

@@ -1,7 +1,9 @@
-// Geometry generators trust the heights `lowest` and `highest` say the terrain keeps within
-// (geometry.icosahedral culls by them, geometry.pgm builds its reference spheres from them); a height
-// layer that knows its own heights (source.procedural always, source.gdal from exact statistics or a
-// raster small enough to count) and reaches beyond them is refused at load, naming the fix, by each.
+// Geometry generators trust the heights the terrain keeps within (geometry.icosahedral culls by them,
+// geometry.pgm builds its reference spheres from them). Unset, they are the height layer's own
+// (source.procedural's analytic bound, source.gdal's exact statistics or a raster small enough to count),
+// widened to the sphere's 0; `lowest` and `highest` override them but may not leave out heights the layer
+// knows it has; and a layer that does not know its heights needs both. Each is checked at load, by each
+// generator, with the fix named.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -33,11 +35,18 @@ std::string loadError(const std::string& pipeline) {
 
 class HeightRange : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(HeightRange, AnExaggeratedProceduralReliefNeedsTheRangeRaised) {
+TEST_P(HeightRange, AnExaggeratedProceduralReliefNeedsNoRange) {
+  const std::string relief = "{type: source.procedural, kind: height, scale: 20}";
+  EXPECT_EQ(loadError(pipelineWith(relief, "{type: " + GetParam() + ", height: heights}")), "");
+  EXPECT_EQ(loadError(pipelineWith(relief, "{type: " + GetParam() + ", height: heights, lowest: -250000}")), "");
+}
+
+TEST_P(HeightRange, AGivenRangeMustHoldTheLayersHeights) {
   const std::string error = loadError(pipelineWith("{type: source.procedural, kind: height, scale: 20}",
-                                                   "{type: " + GetParam() + ", height: heights}"));
+                                                   "{type: " + GetParam() + ", height: heights, highest: 12000}"));
   EXPECT_NE(error.find("reaches from -240000 to 240000 m"), std::string::npos) << error;
   EXPECT_NE(error.find("set lowest: -240000 and highest: 240000"), std::string::npos) << error;
+  EXPECT_NE(error.find("or leave both out"), std::string::npos) << error;
   EXPECT_NE(error.find("'globe'"), std::string::npos) << error;
 }
 
@@ -46,9 +55,25 @@ TEST_P(HeightRange, AGdalRasterIsCountedWhenSmall) {
   writeFloatRaster(directory.path() / "tall.tif", 64, 32, {-180, -90, 180, 90},
                    [](int column, int) { return float(column * 500); });  // up to 31500 m
   const std::string tall = "{type: source.gdal, kind: height, path: " + (directory.path() / "tall.tif").string() + "}";
-  const std::string error = loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights}"));
+  EXPECT_EQ(loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights}")), "");
+  const std::string error = loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights, highest: 30000}"));
   EXPECT_NE(error.find("reaches from 0 to 31500 m"), std::string::npos) << error;
-  EXPECT_EQ(loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights, highest: 31500}")), "");
+}
+
+// 8192 x 4096 texels, past what is counted at load (source-gdal/value_range.cpp), with no statistics: a
+// sparse file, no block written, so the test writes kilobytes.
+TEST_P(HeightRange, ALayerThatDoesNotKnowItsHeightsNeedsBoth) {
+  TemporaryDirectory directory;
+  const auto file = directory.path() / "large.tif";
+  writeRasterFile(file, {.crs = "EPSG:4326", .geotransform = {-180, 360.0 / 8192, 0, 90, 0, -180.0 / 4096},
+                         .width = 8192, .height = 4096, .nodata = -32768.0,
+                         .creationOptions = {"SPARSE_OK=TRUE", "TILED=YES"}, .values = false});
+  const std::string large = "{type: source.gdal, kind: height, path: " + file.string() + "}";
+  const std::string error = loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100}"));
+  EXPECT_NE(error.find("does not know the least and greatest heights"), std::string::npos) << error;
+  EXPECT_NE(error.find("gdalinfo -stats"), std::string::npos) << error;
+  EXPECT_NE(error.find("'globe'"), std::string::npos) << error;
+  EXPECT_EQ(loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100, highest: 9000}")), "");
 }
 
 TEST_P(HeightRange, LowestAboveHighestIsRefused) {

@@ -95,7 +95,7 @@ TEST(PluginProjection, ARasterInAPluginsProjectionLandsWhereItBelongs) {
                                   "  globe: {type: geometry.icosahedral}\n"
                                   "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n");
   const Image image = renderFrame(*engine, pipeline, 320, 240);
-  const View view = makeView(engine->pipeline().body, engine->camera(), 320, 240);
+  const View view = engine->view(320, 240);
   int judged = 0;
   for (int y = 1; y < 240; y += 3)
     for (int x = 1; x < 320; x += 3) {

@@ -130,7 +130,7 @@ TEST_P(ProjectionAgreement, SamePictureWhereBothSampleWell) {
   const int size = 240;
   const Image first = renderFrame(*engine, directory.write("a.yaml", observationPipeline(pair.first, pair.camera)), size, size);
   const Image second = renderFrame(*engine, directory.write("b.yaml", observationPipeline(pair.second, pair.camera)), size, size);
-  const View view = makeView(engine->pipeline().body, engine->camera(), size, size);
+  const View view = engine->view(size, size);
   const Agreement agreement = compare(first, second, view, engine->pipeline().body.radius, pair.wellSampled);
   std::cout << pair.first << " vs " << pair.second << ": " << agreement.judged << " pixels, mean difference "
             << agreement.meanDifference << " levels, " << 100.0 * agreement.farShare << "% beyond " << kFar << "\n";

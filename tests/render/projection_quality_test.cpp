@@ -182,7 +182,7 @@ TEST(ProjectionQualityHeights, DisplaceTheGeometryAsWellAsTheBestObservation) {
       return renderFrame(*engine, directory.write("heights.yaml", pipeline(nodes, relief, camera)), kSize, kSize);
     };
     const Image reference = render("  relief: {type: source.procedural, kind: height, scale: 20}\n", "relief");
-    const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
+    const View view = engine->view(kSize, kSize);
     const double radius = engine->pipeline().body.radius;
     double best = 1e9;
     for (const std::string name : {"global", "north"}) {

@@ -72,11 +72,12 @@ struct Board {
 // `resampled`: a board warped into another projection, whose bilinear resampling blurs each edge over a
 // texel and whose mip levels are not aligned with the cells: a whole coarse texel (turned, up to sqrt 2 of
 // it along the board's axes) and one more texel on each side.
-std::optional<glm::ivec2> judgedCell(const View& view, const Board& board, int x, int y, bool resampled) {
+std::optional<glm::ivec2> judgedCell(const View& view, const Board& board, int x, int y, bool resampled,
+                                     double plateau) {
   glm::dvec2 low(1e300), high(-1e300);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
-      const std::optional<SurfaceHit> hit = raycastSphere(view, kRadius, x + dx, y + dy);
+      const std::optional<SurfaceHit> hit = raycastSphere(view, kRadius + plateau, x + dx, y + dy);
       if (!hit) return std::nullopt;
       const glm::dvec2 texel = board.texelOf(hit->lon, hit->lat);
       low = glm::min(low, texel);
@@ -101,8 +102,11 @@ std::string degrees(double value) {
 }
 
 // Writes the board at `place`, warped into `projection` by strata tile unless it is empty, renders it with
-// `geometry` tilted `tilt` degrees from 2 m and expects every judged pixel to show its cell's colour.
-void expectCrisp(const Place& place, const std::string& geometry, double tilt, const std::string& projection) {
+// `geometry` tilted `tilt` degrees from 2 m above the ground and expects every judged pixel to show its
+// cell's colour. The ground is the sphere, or with `plateau` (m) a height layer that raises the whole body
+// by that much, so that the eye is 2 m from the ground and `plateau` + 2 m from the sphere.
+void expectCrisp(const Place& place, const std::string& geometry, double tilt, const std::string& projection,
+                 double plateau = 0.0) {
   TemporaryDirectory directory;
   const Board board(place);
   const int side = projection.empty() ? kCellTexels : kWarpedCellTexels;
@@ -115,20 +119,26 @@ void expectCrisp(const Place& place, const std::string& geometry, double tilt, c
     raster = "warped.tif";
     tileRaster(PluginRegistry{}, {directory.path() / "board.tif", directory.path() / raster, projection});
   }
+  std::string ground;
+  if (plateau != 0.0) {
+    writeFloatRaster(directory.path() / "plateau.tif", 8, 4, {-180, -90, 180, 90}, [plateau](int, int) { return float(plateau); });
+    ground = "  plateau: {type: source.gdal, kind: height, path: plateau.tif}\n";
+  }
   const auto pipeline = directory.write(
       "board.yaml", "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
                     "camera: {lon: " + degrees(place.cameraLon) + ", lat: " + degrees(place.cameraLat) +
-                    ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
-                    "  board: {type: source.gdal, path: " + raster + "}\n"
-                    "  globe: {type: " + geometry + "}\n"
+                    ", altitude: " + std::to_string(plateau + 2.0) + ", heading: 30, tilt: " + std::to_string(tilt) +
+                    ", fov: 40}\nnodes:\n"
+                    "  board: {type: source.gdal, path: " + raster + "}\n" + ground +
+                    "  globe: {type: " + geometry + (plateau != 0.0 ? ", height: plateau" : "") + "}\n"
                     "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kSize, kSize);
-  const View view = makeView(engine->pipeline().body, engine->camera(), kSize, kSize);
+  const View view = engine->view(kSize, kSize);
   int judged = 0, wrong = 0;
   for (int y = 1; y < kSize - 1; ++y)
     for (int x = 1; x < kSize - 1; ++x) {
-      const std::optional<glm::ivec2> cell = judgedCell(view, board, x, y, !projection.empty());
+      const std::optional<glm::ivec2> cell = judgedCell(view, board, x, y, !projection.empty(), plateau);
       if (!cell) continue;
       ++judged;
       const int expected = (cell->x + cell->y) % 2 == 0 ? kLight : kDark;
@@ -186,6 +196,28 @@ INSTANTIATE_TEST_SUITE_P(PlacesAndTilts, WarpedRasterPrecision,
                          [](const ::testing::TestParamInfo<std::tuple<Place, double>>& param) {
                            return std::string(std::get<0>(param.param).name) + "_tilt" +
                                   std::to_string(int(std::get<1>(param.param)));
+                         });
+
+}  // namespace
+}  // namespace strata::test
+
+namespace strata::test {
+namespace {
+
+// 2 m above a plateau 3 km high the board must be as crisp as 2 m above the sphere: the geometry's detail
+// and the pages the cache loads follow the distance to the ground, not to the sphere, which lies 3 km
+// below (from 3 km, 1 cm texels are far finer than a pixel, and the coarse level that would be drawn
+// blurs the cells to grey). The generators know the ground from the height layer's range.
+class PlateauRasterPrecision : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(PlateauRasterPrecision, OneCentimetreTexelsAreCrispTwoMetresAboveAPlateau) {
+  expectCrisp(kPlaces[1], GetParam(), 0.0, "", 3000.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Generators, PlateauRasterPrecision,
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return param.param.substr(param.param.find('.') + 1);
                          });
 
 }  // namespace

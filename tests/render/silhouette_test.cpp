@@ -38,7 +38,7 @@ TEST_P(Silhouette, DiscRadiusIsThatOfTheRaisedSphere) {
   auto pipeline = directory.write("raised.yaml", raisedGlobePipeline(directory.path() / "one.tif", height, geometry));
   auto engine = makeEngine();
   Image image = renderFrame(*engine, pipeline, 640, 480);
-  const View view = makeView(engine->pipeline().body, engine->camera(), 640, 480);
+  const View view = engine->view(640, 480);
   const double radius = engine->pipeline().body.radius;
   const double expected = discRadiusPixels(view, radius + height, glm::length(view.eye));
   // One pixel: each edge of the disc rasterises to within half a pixel; the mesh's chords (0.5 degree

@@ -46,7 +46,7 @@ TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
   auto engine = makeEngine();
   const int width = 320, height = 240;
   Image image = renderFrame(*engine, pipeline, width, height);
-  const View view = makeView(engine->pipeline().body, engine->camera(), width, height);
+  const View view = engine->view(width, height);
   const double radius = engine->pipeline().body.radius;
 
   int judged = 0, wrong = 0;
@@ -103,7 +103,7 @@ TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
                                   "  frame: {type: output.image, geometry: globe, surface: [patch], shading: none}\n");
   auto engine = makeEngine();
   Image image = renderFrame(*engine, pipeline, 320, 240);
-  const View view = makeView(engine->pipeline().body, engine->camera(), 320, 240);
+  const View view = engine->view(320, 240);
   // sRGB encodings of linear 200/255 (229) and of the empty colour, linear 0.18 (118).
   int inside = 0, outside = 0;
   for (int y = 2; y < 240; y += 4)

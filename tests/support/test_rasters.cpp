@@ -90,7 +90,7 @@ void writeRasterFile(const std::filesystem::path& file, const RasterFileSpec& sp
   for (int band = 1; band <= spec.bands; ++band) {
     GDALRasterBand* raster = dataset->GetRasterBand(band);
     if (spec.nodata) raster->SetNoDataValue(*spec.nodata);
-    for (int y = 0; y < spec.height; ++y) {
+    for (int y = 0; y < spec.height && spec.values; ++y) {
       for (int x = 0; x < spec.width; ++x) row[static_cast<std::size_t>(x)] = rasterFileValue(x, y, band);
       if (raster->RasterIO(GF_Write, 0, y, spec.width, 1, row.data(), spec.width, 1, GDT_Float64, 0, 0) != CE_None)
         throw std::runtime_error("cannot write " + file.string());

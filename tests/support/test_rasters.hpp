@@ -45,6 +45,7 @@ struct RasterFileSpec {
   GDALDataType type = GDT_Float32;
   std::optional<double> nodata = 255.0;
   std::vector<std::string> creationOptions = {};  // e.g. "TILED=YES", "COMPRESS=DEFLATE"
+  bool values = true;  // false: no texel written (with SPARSE_OK=TRUE a file of kilobytes, read as nodata)
 };
 
 // The value the writer stores at (column, row) of band `band`: distinct per texel and band, below 251, so a

@@ -147,20 +147,25 @@ const Pipeline& Engine::pipeline() const {
 
 Camera& Engine::camera() { return impl_->camera; }
 
+View Engine::view(int width, int height) const {
+  if (!impl_->graph) throw std::logic_error("Engine::view() before a pipeline was loaded");
+  return makeView(impl_->pipeline->body, impl_->camera, width, height, impl_->graph->terrainHeights());
+}
+
 std::optional<DayNumber>& Engine::date() { return impl_->date; }
 
 const FrameOutput& Engine::render(int width, int height) { return renderFrame(width, height, false); }
 
 const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
-  FrameState frame{&impl_->pipeline->body, makeView(impl_->pipeline->body, impl_->camera, width, height),
+  FrameState frame{&impl_->pipeline->body, view(width, height),
                    impl_->statistics.frame, impl_->date, still};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
   const HostGlState hostState;  // put back when the frame is done, or a node throws
-  impl_->pages->update(*frame.body, frame.view, frame.index);
+  impl_->pages->update(*frame.body, frame.view, impl_->graph->terrainHeights(), frame.index);
   for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
   impl_->graph->render(frame);

@@ -17,6 +17,15 @@ std::vector<const SurfaceGeometry*> NodeGraph::geometries() const {
     if (const SurfaceGeometry* geometry = entry.node->geometry()) found.push_back(geometry);
   return found;
 }
+HeightRange NodeGraph::terrainHeights() const {
+  HeightRange terrain;
+  for (const SurfaceGeometry* geometry : geometries()) {
+    const HeightRange heights = geometry->heights();
+    terrain = {std::min(terrain.lowest, heights.lowest), std::max(terrain.highest, heights.highest)};
+  }
+  return terrain;
+}
+
 namespace {
 
 bool accepts(const PortDeclaration& port, LayerKind kind) {

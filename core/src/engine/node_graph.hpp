@@ -24,6 +24,8 @@ class NodeGraph {
   void update(const std::string& id, const ParameterSet& parameters);
   FrameOutput& output() const { return *output_; }
   std::vector<const SurfaceGeometry*> geometries() const;
+  // The heights every geometry's surface keeps within, together ({0, 0} without heights).
+  HeightRange terrainHeights() const;
 
  private:
   struct Entry {

@@ -18,15 +18,9 @@ std::string metres(double value) {
   return text;
 }
 
-HeightRange declaredRange(const NodeSetup& setup) {
-  if (!setup.input("height")) return {};
-  const HeightRange range{setup.parameters.real("lowest"), setup.parameters.real("highest")};
-  if (range.lowest > range.highest)
-    throw Error(setup.parameters.where("lowest"),
-                "lowest (" + formatValue(range.lowest) + " m) lies above highest (" + formatValue(range.highest) +
-                    " m)",
-                "give the height layer's least and greatest heights, least first");
-  return range;
+std::optional<double> given(const NodeSetup& setup, const std::string& name) {
+  if (!setup.input("height") || !setup.parameters.has(name)) return std::nullopt;
+  return setup.parameters.real(name);
 }
 
 }  // namespace
@@ -36,32 +30,57 @@ PortDeclaration HeightInput::port() {
           .doc = "heights in metres above the body's radius; none: the bare sphere"};
 }
 
+// Optional: the height layer's own range is exact (a raster's statistics or every texel counted, the
+// analytic bound of procedural relief, the union of a compositor's inputs), and a range wider than the
+// terrain only costs culling.
 std::vector<ParameterDeclaration> HeightInput::parameters() {
   return {
-      {.name = "lowest", .type = ParameterType::Real, .defaultValue = -11000.0, .units = "m",
-       .doc = "no height lies below this; culling and reference spheres trust it (the default is below Earth's "
-              "deepest trench)"},
-      {.name = "highest", .type = ParameterType::Real, .defaultValue = 22000.0, .units = "m",
-       .doc = "no height lies above this; culling and reference spheres trust it (the default is above Olympus "
-              "Mons)"},
+      {.name = "lowest", .type = ParameterType::Real, .units = "m",
+       .doc = "no height lies below this; culling and reference spheres trust it (unset: the height layer's least, "
+              "or 0 if that is higher)",
+       .optional = true},
+      {.name = "highest", .type = ParameterType::Real, .units = "m",
+       .doc = "no height lies above this; culling and reference spheres trust it (unset: the height layer's "
+              "greatest, or 0 if that is lower)",
+       .optional = true},
   };
 }
 
 HeightInput::HeightInput(const NodeSetup& setup)
     : layer_(setup.input("height") ? setup.input("height")->layer() : nullptr),
-      range_(declaredRange(setup)),
-      highestWhere_(setup.parameters.where("highest")) {}
+      lowest_(given(setup, "lowest")),
+      highest_(given(setup, "highest")),
+      where_(setup.where),
+      highestWhere_(setup.parameters.has("highest") ? setup.parameters.where("highest") : setup.where) {
+  if (lowest_ && highest_ && *lowest_ > *highest_)
+    throw Error(setup.parameters.where("lowest"),
+                "lowest (" + formatValue(*lowest_) + " m) lies above highest (" + formatValue(*highest_) + " m)",
+                "give the height layer's least and greatest heights, least first");
+}
 
-void HeightInput::checkLayerWithin() const {
-  if (!layer_) return;
+HeightRange HeightInput::open() {
+  if (!layer_) return range_ = {};
   const std::optional<ValueRange> known = layer_->valueRange();
-  if (!known || (known->least >= range_.lowest && known->greatest <= range_.highest)) return;
+  if (!known && (!lowest_ || !highest_))
+    throw Error(where_,
+                "the height layer does not know the least and greatest heights it holds, which culling must trust",
+                "set lowest: and highest: (m) on this node, or store the raster's statistics with gdalinfo -stats FILE");
+  if (known) checkGivenHold(*known);
+  // Given values hold the known ones (checkGivenHold), so the range is never turned over.
+  range_ = {lowest_.value_or(std::min(known ? known->least : 0.0, 0.0)),
+            highest_.value_or(std::max(known ? known->greatest : 0.0, 0.0))};
+  return range_;
+}
+
+void HeightInput::checkGivenHold(const ValueRange& known) const {
+  if ((!lowest_ || known.least >= *lowest_) && (!highest_ || known.greatest <= *highest_)) return;
+  const double least = std::min(known.least, lowest_.value_or(known.least));
+  const double greatest = std::max(known.greatest, highest_.value_or(known.greatest));
   throw Error(highestWhere_,
-              "the height layer reaches from " + metres(known->least) + " to " + metres(known->greatest) +
-                  " m, beyond lowest (" + metres(range_.lowest) + " m) or highest (" + metres(range_.highest) +
-                  " m): the generator would cut off terrain that shows",
-              "set lowest: " + metres(std::floor(std::min(known->least, range_.lowest))) + " and highest: " +
-                  metres(std::ceil(std::max(known->greatest, range_.highest))) + " on this node");
+              "the height layer reaches from " + metres(known.least) + " to " + metres(known.greatest) +
+                  " m, beyond lowest or highest: the generator would cut off terrain that shows",
+              "set lowest: " + metres(std::floor(least)) + " and highest: " + metres(std::ceil(greatest)) +
+                  " on this node, or leave both out to take the layer's own");
 }
 
 std::map<std::string, std::string> HeightInput::substitutions() const {

@@ -44,7 +44,7 @@ struct PageCache::Impl {
   std::map<PageFormat, int> capacities() const;
   std::unique_ptr<paging::PageAtlas> fittingAtlas(PageFormat format, int capacity, int coarsest) const;
   void loadCoarsest();
-  std::vector<paging::WantedPage> select(const Body& body, const View& view);
+  std::vector<paging::WantedPage> select(const Body& body, const View& view, const HeightRange& terrain);
   void request(const std::vector<paging::WantedPage>& wanted, std::uint64_t frame);
   void uploadFinished(std::uint64_t frame, std::size_t count, bool pinned);
   void place(const LoadedPage& loaded, std::uint64_t frame, bool pinned);
@@ -89,11 +89,11 @@ PagedLayerPlacement PageCache::attach(std::shared_ptr<const PageSource> source, 
   return placement;
 }
 
-void PageCache::update(const Body& body, const View& view, std::uint64_t frame) {
+void PageCache::update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame) {
   Impl& cache = *impl_;
   if (cache.layers.empty()) return;
   allocate();
-  const std::vector<paging::WantedPage> wanted = cache.select(body, view);
+  const std::vector<paging::WantedPage> wanted = cache.select(body, view, terrain);
   cache.request(wanted, frame);
   cache.uploadFinished(frame, std::size_t(cache.settings.uploadsPerFrame), false);
   cache.index.upload();
@@ -210,7 +210,7 @@ void PageCache::Impl::loadCoarsest() {
 
 // The pages the view needs of the layers not idle, every shown layer's before any prefetched one's, so that
 // prefetching only fills the room the shown layers leave.
-std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view) {
+std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view, const HeightRange& terrain) {
   std::vector<paging::SelectableLayer> selectable;
   std::vector<std::pair<int, bool>> attached;  // per selectable: its layer, and whether it is shown
   {
@@ -221,7 +221,7 @@ std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const 
         attached.emplace_back(int(i), layers[i].demand == PageDemand::Shown);
       }
   }
-  std::vector<paging::WantedPage> wanted = paging::selectPages(selectable, body, view);
+  std::vector<paging::WantedPage> wanted = paging::selectPages(selectable, body, view, terrain);
   std::stable_partition(wanted.begin(), wanted.end(), [&attached](const paging::WantedPage& want) {
     return attached[std::size_t(want.page.layer)].second;
   });

@@ -26,15 +26,19 @@ struct Viewing {
   double tanHalfWidth;
   double pixelAngle;   // rad per pixel, vertically
   glm::dvec2 nadir;    // lon/lat (rad) below the eye
-  double altitude;     // m
+  double altitude;     // m above the ground level distances are measured to
+  double groundRadius;  // m: that level's sphere
+  double lowestRadius, highestRadius;  // m: the spheres the terrain lies between
 };
 
-Viewing viewingOf(const Body& body, const View& view) {
+Viewing viewingOf(const Body& body, const View& view, const HeightRange& terrain) {
   const double tanHalfHeight = std::tan(0.5 * view.verticalFov);
   const double aspect = double(view.width) / double(std::max(1, view.height));
-  const double r = glm::length(view.eye);
+  const double r = glm::length(view.eye), ground = groundLevelNear(terrain, r - body.radius);
   return {body, view, tanHalfHeight, tanHalfHeight * aspect, view.verticalFov / double(std::max(1, view.height)),
-          {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / r, -1.0, 1.0))}, r - body.radius};
+          {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / r, -1.0, 1.0))},
+          std::abs(r - body.radius - ground), body.radius + ground, body.radius + terrain.lowest,
+          body.radius + terrain.highest};
 }
 
 struct PageBounds {
@@ -91,11 +95,13 @@ PageBounds boundsOf(const SelectableLayer& layer, const PageKey& key, const View
       const std::optional<glm::dvec2> lonlat =
           layer.georeference->projection->inverse(mapOf(layer, key.level, low + spacing * glm::dvec2(i, j)));
       if (!lonlat) continue;
-      const glm::dvec3 p = viewing.body.radius * unitNormal(lonlat->x, lonlat->y);
+      const glm::dvec3 n = unitNormal(lonlat->x, lonlat->y), p = viewing.body.radius * n;
       points[std::size_t(j * kSamples + i)] = p;
-      eyePoints.push_back(viewing.view.toEye(p));
+      // The terrain above the point, anywhere between its lowest and highest, may be what is in view.
+      eyePoints.push_back(viewing.view.toEye(viewing.lowestRadius * n));
+      eyePoints.push_back(viewing.view.toEye(viewing.highestRadius * n));
       aboveHorizon = aboveHorizon || glm::dot(p, viewing.view.eye) >= r2 * (1.0 - kHorizonSlack);
-      bounds.distance = std::min(bounds.distance, glm::length(p - viewing.view.eye));
+      bounds.distance = std::min(bounds.distance, glm::length(viewing.groundRadius * n - viewing.view.eye));
     }
   const bool nadir = holdsNadir(layer, key, low, high, viewing);
   if (nadir) bounds.distance = std::min(bounds.distance, viewing.altitude);
@@ -141,8 +147,9 @@ void selectLayer(const SelectableLayer& layer, int number, const Viewing& viewin
 
 }  // namespace
 
-std::vector<WantedPage> selectPages(const std::vector<SelectableLayer>& layers, const Body& body, const View& view) {
-  const Viewing viewing = viewingOf(body, view);
+std::vector<WantedPage> selectPages(const std::vector<SelectableLayer>& layers, const Body& body, const View& view,
+                                    const HeightRange& terrain) {
+  const Viewing viewing = viewingOf(body, view, terrain);
   std::vector<WantedPage> wanted;
   for (std::size_t i = 0; i < layers.size(); ++i) selectLayer(layers[i], int(i), viewing, wanted);
   std::ranges::sort(wanted, [](const WantedPage& a, const WantedPage& b) {

@@ -27,7 +27,10 @@ struct WantedPage {
 // The pages each layer needs for `view`, chosen from their bounds as in seed 000 section 4.3.2: a page
 // is wanted when some of it lies above the horizon and inside the view frustum, and its children are
 // wanted too while its texels, at its nearest point, look larger than a pixel. Every level from the
-// coarsest down is listed, so proxies exist for everything wanted. Sorted most wanted first.
-std::vector<WantedPage> selectPages(const std::vector<SelectableLayer>& layers, const Body& body, const View& view);
+// coarsest down is listed, so proxies exist for everything wanted. Sorted most wanted first. Distances are
+// measured to the sphere of the ground level of `terrain` nearest the eye (groundLevelNear), so that a view
+// just above a plateau gets the fine pages it needs.
+std::vector<WantedPage> selectPages(const std::vector<SelectableLayer>& layers, const Body& body, const View& view,
+                                    const HeightRange& terrain);
 
 }  // namespace strata::paging

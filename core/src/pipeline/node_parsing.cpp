@@ -145,7 +145,7 @@ void requireInputs(const ParsedNode& node, const SourceMap& source) {
 
 void fillDefaults(ParsedNode& node, const SourceMap& source) {
   for (const auto& parameter : node.declaration->parameters) {
-    if (node.description.parameters.has(parameter.name)) continue;
+    if (node.description.parameters.has(parameter.name) || (parameter.optional && !parameter.defaultValue)) continue;
     if (!parameter.defaultValue)
       throw source.entryError(node.key, node.value, node.description.id,
                               nodeName(node) + " is missing required parameter '" + parameter.name + "' " +

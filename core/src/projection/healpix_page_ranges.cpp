@@ -134,4 +134,18 @@ PageRanges::Range PageRanges::overNode(int face, int level, std::int64_t ix, std
   return levels_[std::size_t(pageLevel - finestStored_)][std::size_t(row * 12 * side + column)];
 }
 
+PageRanges::Range PageRanges::whole() const {
+  Range all{1.0f, 0.0f};  // none held yet
+  for (const Range& page : levels_.back()) {
+    if (page.least > page.greatest) {
+      all.uncovered = all.uncovered || page.uncovered;
+      continue;
+    }
+    const bool first = all.least > all.greatest;
+    all = {first ? page.least : std::min(all.least, page.least), first ? page.greatest : std::max(all.greatest, page.greatest),
+           all.uncovered || page.uncovered};
+  }
+  return all;
+}
+
 }  // namespace strata::healpix

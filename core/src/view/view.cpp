@@ -37,7 +37,7 @@ glm::mat4 reversedInfiniteProjection(double verticalFov, double aspect, double n
 
 }  // namespace
 
-View makeView(const Body& body, const Camera& camera, int width, int height) {
+View makeView(const Body& body, const Camera& camera, int width, int height, const HeightRange& terrain) {
   const double lon = glm::radians(camera.lon), lat = glm::radians(camera.lat);
   const double heading = glm::radians(camera.heading), tilt = glm::radians(camera.tilt);
   const glm::dvec3 up = unitNormal(lon, lat);
@@ -54,9 +54,10 @@ View makeView(const Body& body, const Camera& camera, int width, int height) {
   view.eye = up * (body.radius + camera.altitude);
   view.reference = {lon, lat};
   view.planetToEye = glm::transpose(glm::dmat3(right, cameraUp, -forward));
-  // A thousandth of the altitude keeps the nearest terrain in front of the near plane even for relief
-  // exaggerated far above the eye's own height; 1 cm is the closest anyone needs.
-  view.near = std::max(0.01, camera.altitude * 1e-3);
+  // A thousandth of the way to the nearest ground the terrain may hold keeps it in front of the near plane;
+  // 1 cm is the closest anyone needs. Reversed float depth keeps its relative precision at any distance
+  // whatever the near plane (ReversedDepth), so a near plane this close costs no depth resolution.
+  view.near = std::max(0.01, std::abs(camera.altitude - groundLevelNear(terrain, camera.altitude)) * 1e-3);
   view.verticalFov = glm::radians(camera.fov);
   view.projection = reversedInfiniteProjection(view.verticalFov, double(width) / double(height), view.near);
   return view;

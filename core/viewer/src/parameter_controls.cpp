@@ -30,7 +30,8 @@ std::vector<ParameterControl> parameterControls(Engine& engine) {
     const NodeTypeDeclaration* type = engine.plugins().find(node.type);
     if (!type) continue;
     for (const ParameterDeclaration& parameter : type->parameters)
-      controls.push_back({node.id, node.type, &parameter, node.parameters.value(parameter.name)});
+      if (node.parameters.has(parameter.name))  // an optional parameter left unset has no value to show
+        controls.push_back({node.id, node.type, &parameter, node.parameters.value(parameter.name)});
   }
   return controls;
 }

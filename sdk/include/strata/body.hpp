@@ -1,5 +1,6 @@
 #pragma once
 #include <strata/export.hpp>
+#include <algorithm>
 #include <string>
 
 STRATA_EXPORTS_BEGIN
@@ -12,6 +13,22 @@ struct Body {
   std::string name = "Earth";
   double radius = 6371000.0;  // m; the IUGG mean Earth radius
 };
+
+// Heights above the body's radius (m) that a surface keeps within: culling and reference spheres trust
+// them, so terrain outside them may be cut off.
+struct HeightRange {
+  double lowest = 0.0;
+  double highest = 0.0;
+};
+
+// The height of `terrain` nearest an eye at `altitude` (m above the radius): the level of the ground the
+// level of detail measures distances to (the page cache, the near plane, geometry.healpix's height
+// filtering). Measured on the body's
+// sphere, a view 2 m above a plateau 3 km high would get the detail of 3 km; measured here it gets that
+// of 2 m, and never less than the ground actually there needs.
+inline double groundLevelNear(const HeightRange& terrain, double altitude) {
+  return std::clamp(altitude, terrain.lowest, terrain.highest);
+}
 
 }  // namespace strata
 STRATA_EXPORTS_END

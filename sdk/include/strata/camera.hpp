@@ -37,8 +37,10 @@ struct View {
   glm::dvec3 toEye(const glm::dvec3& planetFixed) const { return planetToEye * (planetFixed - eye); }
 };
 
-// Resolves a camera over a body for a viewport of width x height pixels.
-View makeView(const Body& body, const Camera& camera, int width, int height);
+// Resolves a camera over a body for a viewport of width x height pixels. `terrain`: the heights the drawn
+// surfaces keep within, which place the near plane a thousandth of the way to the ground nearest the eye
+// (groundLevelNear), so that a view 2 m above a plateau 3 km high does not clip the plateau.
+View makeView(const Body& body, const Camera& camera, int width, int height, const HeightRange& terrain = {});
 
 // Planet-fixed unit normal at geographic longitude and latitude (radians).
 glm::dvec3 unitNormal(double lonRad, double latRad);

@@ -63,6 +63,9 @@ class Engine {
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames
+  // The view render() draws the camera from at width x height, over the loaded pipeline's terrain: for
+  // picking, and for comparing a frame with a reference computed from its rays.
+  View view(int width, int height) const;
   // The scene's date, which time series show (composite.temporal_blend): starts as the pipeline's `date:`;
   // change it between frames to step or animate through time with no reload.
   std::optional<DayNumber>& date();

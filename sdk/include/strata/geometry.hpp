@@ -2,6 +2,7 @@
 #include <strata/export.hpp>
 #include <cstdint>
 
+#include <strata/body.hpp>
 #include <strata/gl/framebuffer.hpp>
 
 STRATA_EXPORTS_BEGIN
@@ -27,6 +28,9 @@ class SurfaceGeometry {
  public:
   virtual ~SurfaceGeometry() = default;
   virtual const Framebuffer& gbuffer() const = 0;
+  // The heights its surface keeps within, once the node has opened (strata/height_input.hpp settles them):
+  // the page cache measures distances to the ground they bound (groundLevelNear). The bare sphere: {0, 0}.
+  virtual HeightRange heights() const { return {}; }
   // On the GL thread, after the frame: GPU times wait for the GPU to finish it.
   virtual GeometryStatistics statistics() const { return {}; }
 };

@@ -92,6 +92,8 @@ class PageRanges {
   // The widened range of the finest stored page holding node (level, ix, iy) of face `face`'s quadtree (2^level
   // nodes a side, ix along x, iy along y, as geometry.healpix numbers them).
   Range overNode(int face, int level, std::int64_t ix, std::int64_t iy) const;
+  // The range of the whole pyramid: every page's, together.
+  Range whole() const;
 
   static constexpr std::size_t kMostStoredPages = 12 * 64 * 64;  // 576 KiB of metadata at most
 

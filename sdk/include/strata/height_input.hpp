@@ -1,9 +1,11 @@
 #pragma once
 #include <strata/export.hpp>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <strata/body.hpp>
 #include <strata/error.hpp>
 #include <strata/parameter.hpp>
 #include <strata/port.hpp>
@@ -12,34 +14,31 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Layer;
+struct ValueRange;
 struct NodeSetup;
 
-// The heights a geometry generator's surface holds, in m above the body's radius. Culling and reference
-// spheres trust them: terrain outside them may be cut off.
-struct HeightRange {
-  double lowest = 0.0;
-  double highest = 0.0;
-};
-
-// What every geometry generator does with its optional `height` input and its `lowest` and `highest`
-// parameters, declared once so that generators agree and a pipeline switches between them by changing one
-// `type` (geometry.icosahedral, geometry.pgm).
+// What every geometry generator does with its optional `height` input and its optional `lowest` and
+// `highest` parameters, declared once so that generators agree and a pipeline switches between them by
+// changing one `type` (geometry.icosahedral, geometry.pgm, geometry.healpix).
 class HeightInput {
  public:
   // The input port and the two parameters, for the generator's NodeTypeDeclaration.
   static PortDeclaration port();
   static std::vector<ParameterDeclaration> parameters();
 
-  // Throws strata::Error at `lowest` when it lies above `highest`. Without a height layer the surface is
-  // the bare sphere, range {0, 0}, whatever the parameters say.
+  // Throws strata::Error at `lowest` when both are given and it lies above `highest`.
   explicit HeightInput(const NodeSetup& setup);
 
   Layer* layer() const { return layer_; }
-  HeightRange range() const { return range_; }
 
-  // In the generator's open(): throws strata::Error at `highest`, with the values to set, when the height
-  // layer knows its heights and they leave the range.
-  void checkLayerWithin() const;
+  // In the generator's open(), once the height layer has opened: settles the heights culling and reference
+  // spheres trust. Without a height layer, the bare sphere: {0, 0}. With one, `lowest` and `highest` where
+  // given, else the layer's own range (Layer::valueRange) with the sphere's 0, which shows where the layer
+  // holds no data. Throws strata::Error at the node when the layer does not know its range and a value is
+  // missing, and at `highest`, with the values to set, when given values leave out heights the layer has.
+  HeightRange open();
+  // What open() settled.
+  HeightRange range() const { return range_; }
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
   // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when
@@ -47,9 +46,12 @@ class HeightInput {
   std::map<std::string, std::string> substitutions() const;
 
  private:
+  void checkGivenHold(const ValueRange& known) const;
+
   Layer* layer_;
+  std::optional<double> lowest_, highest_;  // as given
   HeightRange range_;
-  SourceLocation highestWhere_;
+  SourceLocation where_, highestWhere_;
 };
 
 }  // namespace strata

@@ -75,8 +75,10 @@ class PageCache {
   // every layer, which is pinned. Throws strata::Error when the budget cannot hold even those.
   void allocate();
   // Once a frame, before rendering: chooses the pages `view` needs, starts their loads, uploads finished
-  // ones within the per-frame budget and points the index at them. Allocates first if need be.
-  void update(const Body& body, const View& view, std::uint64_t frame);
+  // ones within the per-frame budget and points the index at them. Allocates first if need be. `terrain`:
+  // the heights the drawn surfaces keep within (SurfaceGeometry::heights), whose ground nearest the eye
+  // (groundLevelNear) distances are measured to.
+  void update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame);
   // How much `layer`'s pages are wanted from the next update() on (PageDemand). Any thread: nodes call it
   // from prepare().
   void setDemand(int layer, PageDemand demand);

@@ -25,7 +25,7 @@ using ParameterValue = std::variant<bool, std::int64_t, double, std::string, std
 struct ParameterDeclaration {
   std::string name;
   ParameterType type = ParameterType::Real;
-  std::optional<ParameterValue> defaultValue;  // none: the parameter is required
+  std::optional<ParameterValue> defaultValue;  // none: the parameter is required, unless `optional`
   std::optional<double> minimum;               // Integer, Real, RealList: inclusive bounds
   std::optional<double> maximum;
   std::string units;                           // "m", "deg", "" when dimensionless
@@ -35,6 +35,9 @@ struct ParameterDeclaration {
   // Whether a change takes effect in the next frame with nothing rebuilt (a uniform): the engine hands the
   // node its new parameters (Node::update) rather than reloading the pipeline (Engine::set).
   bool live = false;
+  // With no default: the node needs no value and decides for itself without one (an override of what it
+  // would work out); ParameterSet::has says whether one was given.
+  bool optional = false;
 };
 
 // A node's validated parameters: every declared parameter has a value of its declared type.
