@@ -217,7 +217,7 @@ std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const 
     const std::lock_guard lock(demandMutex);
     for (std::size_t i = 0; i < layers.size(); ++i)
       if (layers[i].demand != PageDemand::Idle) {
-        selectable.push_back({&layers[i].source->pyramid(), &layers[i].georeference});
+        selectable.push_back({&layers[i].source->pyramid(), &layers[i].georeference, layers[i].wrapX});
         attached.emplace_back(int(i), layers[i].demand == PageDemand::Shown);
       }
   }

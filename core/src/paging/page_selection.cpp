@@ -68,15 +68,29 @@ bool outsideFrustum(const std::vector<glm::dvec3>& eyePoints, const Viewing& vie
          allOutside([&](const glm::dvec3& q) { return q.y > -q.z * ty; });
 }
 
-// Whether the point below the eye falls in the page: then the page is as near as the altitude.
-bool holdsNadir(const SelectableLayer& layer, const PageKey& key, glm::dvec2 low, glm::dvec2 high,
-                const Viewing& viewing) {
+// The page's point nearest the point below the eye, in level texels: the nadir's own texel where the page
+// holds it (then the page is as near as the altitude), else the nadir's texel clamped into the page, of
+// the nadir's texel positions one period apart (a wrapping raster) the nearest. The sample grid alone can
+// miss it: a page across the antimeridian from the eye, whose nearest point lies on its edge between two
+// samples 45 degrees apart, was taken for one below the horizon and drawn from a coarser level.
+struct NearestPoint {
+  glm::dvec2 texel;
+  bool nadir;  // the page holds the point below the eye
+};
+
+std::optional<NearestPoint> nearestToNadir(const SelectableLayer& layer, const PageKey& key, glm::dvec2 low,
+                                           glm::dvec2 high, const Viewing& viewing) {
   const std::optional<glm::dvec2> map = layer.georeference->projection->forward(viewing.nadir);
-  if (!map) return false;
+  if (!map) return std::nullopt;
   const std::array<double, 6>& t = layer.georeference->geotransform;
   const double scale = std::ldexp(1.0, key.level);
-  const double x = (map->x - t[0]) / t[1] / scale, y = (map->y - t[3]) / t[5] / scale;
-  return x >= low.x && x <= high.x && y >= low.y && y <= high.y;
+  glm::dvec2 texel((map->x - t[0]) / t[1] / scale, (map->y - t[3]) / t[5] / scale);
+  if (layer.wrapX) {
+    const double period = double(layer.pyramid->width()) / scale, middle = 0.5 * (low.x + high.x);
+    texel.x = middle + std::remainder(texel.x - middle, period);
+  }
+  const glm::dvec2 clamped = glm::clamp(texel, low, high);
+  return NearestPoint{clamped, clamped == texel};
 }
 
 PageBounds boundsOf(const SelectableLayer& layer, const PageKey& key, const Viewing& viewing) {
@@ -90,21 +104,29 @@ PageBounds boundsOf(const SelectableLayer& layer, const PageKey& key, const View
   PageBounds bounds;
   bool aboveHorizon = false;
   const double r2 = viewing.body.radius * viewing.body.radius;
+  // A point of the page, by its unit normal: the terrain above it, anywhere between its lowest and highest,
+  // may be what is in view.
+  const auto consider = [&](const glm::dvec3& n) {
+    eyePoints.push_back(viewing.view.toEye(viewing.lowestRadius * n));
+    eyePoints.push_back(viewing.view.toEye(viewing.highestRadius * n));
+    aboveHorizon = aboveHorizon || glm::dot(viewing.body.radius * n, viewing.view.eye) >= r2 * (1.0 - kHorizonSlack);
+    bounds.distance = std::min(bounds.distance, glm::length(viewing.groundRadius * n - viewing.view.eye));
+  };
   for (int j = 0; j < kSamples; ++j)
     for (int i = 0; i < kSamples; ++i) {
       const std::optional<glm::dvec2> lonlat =
           layer.georeference->projection->inverse(mapOf(layer, key.level, low + spacing * glm::dvec2(i, j)));
       if (!lonlat) continue;
-      const glm::dvec3 n = unitNormal(lonlat->x, lonlat->y), p = viewing.body.radius * n;
-      points[std::size_t(j * kSamples + i)] = p;
-      // The terrain above the point, anywhere between its lowest and highest, may be what is in view.
-      eyePoints.push_back(viewing.view.toEye(viewing.lowestRadius * n));
-      eyePoints.push_back(viewing.view.toEye(viewing.highestRadius * n));
-      aboveHorizon = aboveHorizon || glm::dot(p, viewing.view.eye) >= r2 * (1.0 - kHorizonSlack);
-      bounds.distance = std::min(bounds.distance, glm::length(viewing.groundRadius * n - viewing.view.eye));
+      const glm::dvec3 n = unitNormal(lonlat->x, lonlat->y);
+      points[std::size_t(j * kSamples + i)] = viewing.body.radius * n;
+      consider(n);
     }
-  const bool nadir = holdsNadir(layer, key, low, high, viewing);
+  const std::optional<NearestPoint> nearest = nearestToNadir(layer, key, low, high, viewing);
+  const bool nadir = nearest && nearest->nadir;
   if (nadir) bounds.distance = std::min(bounds.distance, viewing.altitude);
+  if (const std::optional<glm::dvec2> lonlat =
+          nearest ? layer.georeference->projection->inverse(mapOf(layer, key.level, nearest->texel)) : std::nullopt)
+    consider(unitNormal(lonlat->x, lonlat->y));
   bounds.visible = !eyePoints.empty() && (nadir || aboveHorizon) && !outsideFrustum(eyePoints, viewing);
   // The largest ground distance between neighbouring samples, per texel between them.
   double texelSize = 0.0;

@@ -14,6 +14,7 @@ namespace strata::paging {
 struct SelectableLayer {
   const PagePyramid* pyramid = nullptr;
   const RasterGeoreference* georeference = nullptr;
+  bool wrapX = false;  // the raster spans one period: its east and west edges meet
 };
 
 // A page the view needs, with what orders it: coarser pages first (they stand in for the finer ones),
