@@ -19,21 +19,20 @@ bool finite(const ValueRange& range) { return std::isfinite(range.least) && std:
 // Rows read at a time: a band of a 4096-wide raster is 4 MiB of floats.
 constexpr int kRowsAtATime = 256;
 
-// Widens `range` by the finite values of rows [row, row + rows) the mask lets through; false where they
-// cannot be read.
-bool widenByRows(GDALRasterBand& band, int row, int rows, std::optional<ValueRange>& range) {
+// Widens `range` by the finite values of rows [row, row + rows) the mask lets through; rows that cannot be
+// read widen nothing.
+void widenByRows(GDALRasterBand& band, int row, int rows, std::optional<ValueRange>& range) {
   const int width = band.GetXSize();
   std::vector<float> values(std::size_t(width) * std::size_t(rows));
   std::vector<GByte> valid(values.size());
   if (band.RasterIO(GF_Read, 0, row, width, rows, values.data(), width, rows, GDT_Float32, 0, 0) != CE_None ||
       band.GetMaskBand()->RasterIO(GF_Read, 0, row, width, rows, valid.data(), width, rows, GDT_Byte, 0, 0) != CE_None)
-    return false;
+    return;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!valid[i] || !std::isfinite(values[i])) continue;
     const double value = values[i];
     range = range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
   }
-  return true;
 }
 
 // The extremes of the finite values the mask lets through, band of rows by band of rows: GDAL's own count

@@ -32,6 +32,7 @@ struct Engine::Impl {
   std::vector<std::string> overrides;  // the pipeline's, as load() and set() were given them
   std::unique_ptr<PageCache> pages;
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
+  HeightRange terrain;  // the graph's geometries' heights, settled when their nodes opened
   Camera camera;
   std::optional<DayNumber> date;
   FrameStatistics statistics;
@@ -94,6 +95,7 @@ void Engine::install(Pipeline loaded, const std::vector<std::string>& overrides)
   impl_->graph.reset();  // before the cache its layers attached to
   impl_->pages = std::move(pages);
   impl_->graph = std::move(graph);
+  impl_->terrain = impl_->graph->terrainHeights();
   impl_->pipeline = std::move(pipeline);
   impl_->camera = impl_->pipeline->camera;
   impl_->date = impl_->pipeline->date;
@@ -149,7 +151,7 @@ Camera& Engine::camera() { return impl_->camera; }
 
 View Engine::view(int width, int height) const {
   if (!impl_->graph) throw std::logic_error("Engine::view() before a pipeline was loaded");
-  return makeView(impl_->pipeline->body, impl_->camera, width, height, impl_->graph->terrainHeights());
+  return makeView(impl_->pipeline->body, impl_->camera, width, height, impl_->terrain);
 }
 
 std::optional<DayNumber>& Engine::date() { return impl_->date; }
@@ -165,7 +167,7 @@ const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
   const HostGlState hostState;  // put back when the frame is done, or a node throws
-  impl_->pages->update(*frame.body, frame.view, impl_->graph->terrainHeights(), frame.index);
+  impl_->pages->update(*frame.body, frame.view, impl_->terrain, frame.index);
   for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
   impl_->graph->render(frame);
