@@ -1,19 +1,27 @@
 #include "command_options.hpp"
 
-#include <cstdio>
+#include <charconv>
+#include <system_error>
 
 #include <strata/error.hpp>
 
 namespace strata::cli {
 
+// WIDTHxHEIGHT read digit by digit: sscanf's %d wraps numbers beyond an int (4294967297 read as 1).
 std::string parseSize(const std::string& text, FrameSize& size) {
-  int width = 0, height = 0;
-  char separator = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x')
-    return "size must be WIDTHxHEIGHT, e.g. 1920x1080";
-  if (width < 1 || height < 1 || width > 16384 || height > 16384)
-    return "size must be between 1x1 and 16384x16384 pixels";
-  size = {width, height};
+  const char* end = text.data() + text.size();
+  long long width = 0, height = 0;
+  const auto [afterWidth, widthError] = std::from_chars(text.data(), end, width);
+  // Digits beyond a long long are out of range, not malformed: from_chars still steps over them.
+  const bool separated = widthError != std::errc::invalid_argument && afterWidth != end && *afterWidth == 'x';
+  const auto [afterHeight, heightError] =
+      separated ? std::from_chars(afterWidth + 1, end, height) : std::from_chars_result{end, std::errc::invalid_argument};
+  if (heightError == std::errc::invalid_argument || afterHeight != end) return "size must be WIDTHxHEIGHT, e.g. 1920x1080";
+  constexpr long long kMost = 16384;
+  if (widthError != std::errc() || heightError != std::errc() || width < 1 || height < 1 || width > kMost ||
+      height > kMost)
+    return "size must be between 1x1 and 16384x16384 pixels, not " + text;
+  size = {int(width), int(height)};
   return {};
 }
 

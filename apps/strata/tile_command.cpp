@@ -50,8 +50,9 @@ void addTileCommand(CLI::App& app, int& exitCode) {
                       "or healpix: a HEALPix pyramid (NESTED faces side by side; the plane is +proj=healpix); default: "
                       "keep a CRS Strata samples directly, else the best-suited projection");
   command->add_option("--nside", request->nside,
-                      "with --to healpix: the faces' resolution, a power of two from 512; default: the least whose "
-                      "texels are no larger than the input's");
+                      "with --to healpix: the faces' resolution, a power of two from 512 to 2^30 (above 2^26, a "
+                      "window of the one face the input covers); default: the least whose texels are no larger than "
+                      "the input's");
   command->add_flag("--overwrite", request->overwrite, "replace the output if it exists");
   command->callback([request, &exitCode] { exitCode = reportingErrors([&] { tile(*request); }); });
 }

@@ -26,13 +26,30 @@ std::int64_t nsideOf(GDALDataset& dataset, const SourceLocation& where) {
   std::int64_t nside = 0;
   const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), nside);
   if (error != std::errc() || end != text.data() + text.size() || nside < healpix::kLeastNside ||
-      nside > healpix::kMostNside || !std::has_single_bit(std::uint64_t(nside)))
-    fail(dataset, where, std::string(healpix::kNsideItem) + " '" + text + "' is not a power of two from 512 to 2^26");
-  if (dataset.GetRasterXSize() != 12 * nside || dataset.GetRasterYSize() != nside)
-    fail(dataset, where, "it is " + std::to_string(dataset.GetRasterXSize()) + "x" +
-                             std::to_string(dataset.GetRasterYSize()) + " texels, not 12 faces of nside " +
-                             std::to_string(nside) + " side by side");
+      nside > healpix::kMostWindowedNside || !std::has_single_bit(std::uint64_t(nside)))
+    fail(dataset, where, std::string(healpix::kNsideItem) + " '" + text + "' is not a power of two from 512 to 2^30");
   return nside;
+}
+
+// The window of one face the file holds, if it holds one (nside above kMostNside), checked against its size;
+// otherwise the check that it holds the whole strip.
+std::optional<healpix::FaceWindow> windowOf(GDALDataset& dataset, std::int64_t nside, const SourceLocation& where) {
+  const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
+  const std::string size = std::to_string(width) + "x" + std::to_string(height) + " texels";
+  if (!dataset.GetMetadataItem(healpix::kWindowItem)) {
+    if (nside > healpix::kMostNside)
+      fail(dataset, where, "its nside " + std::to_string(nside) + " is above 2^26 and it has no " + healpix::kWindowItem);
+    if (width != 12 * nside || height != nside)
+      fail(dataset, where, "it is " + size + ", not 12 faces of nside " + std::to_string(nside) + " side by side");
+    return std::nullopt;
+  }
+  const std::string text = item(dataset, healpix::kWindowItem);
+  std::optional<healpix::FaceWindow> window = healpix::windowOf(text, nside, width, height);
+  if (!window)
+    fail(dataset, where, std::string(healpix::kWindowItem) + " '" + text + "' and its " + size +
+                             " are not a window of one face (face 0 to 11, first column and row) at nside " +
+                             std::to_string(nside));
+  return window;
 }
 
 // The planar HEALPix projection of the body, with no central meridian or false origin.
@@ -51,13 +68,17 @@ std::optional<HealpixPyramidFile> healpixPyramidOf(GDALDataset& dataset, const P
                                                    const SourceLocation& where) {
   if (!dataset.GetMetadataItem(healpix::kNsideItem)) return std::nullopt;
   const std::int64_t nside = nsideOf(dataset, where);
+  const std::optional<healpix::FaceWindow> window = windowOf(dataset, nside, where);
   if (item(dataset, healpix::kOrderingItem) != "NESTED")
     fail(dataset, where, std::string(healpix::kOrderingItem) + " is not NESTED");
-  std::optional<healpix::PageRanges> ranges = healpix::PageRanges::fromMetadata(
-      nside, [&](const std::string& name) { return dataset.GetMetadataItem(name.c_str()); });
+  std::optional<healpix::PageRanges> ranges;
+  if (!window)
+    ranges = healpix::PageRanges::fromMetadata(
+        nside, [&](const std::string& name) { return dataset.GetMetadataItem(name.c_str()); });
   return HealpixPyramidFile{
-      nside,
-      {healpix::stripProjection(planeOf(dataset, plugins, where)), healpix::stripGeotransform(nside)},
+      nside, window,
+      {healpix::stripProjection(planeOf(dataset, plugins, where)),
+       window ? healpix::windowGeotransform(nside, *window) : healpix::stripGeotransform(nside)},
       ranges ? std::make_shared<const healpix::PageRanges>(std::move(*ranges)) : nullptr};
 }
 

@@ -15,7 +15,8 @@ namespace strata::gdal {
 // A HEALPix pyramid as its metadata describes it (strata/healpix_pyramid.hpp).
 struct HealpixPyramidFile {
   std::int64_t nside = 0;
-  RasterGeoreference georeference;  // the strip's projection and geotransform
+  std::optional<healpix::FaceWindow> window;  // the part of one face it holds, if not the whole strip
+  RasterGeoreference georeference;  // the strip's projection, and the geotransform of the strip or the window
   std::shared_ptr<const healpix::PageRanges> ranges;  // the pages' true ranges, where the file holds them
 };
 

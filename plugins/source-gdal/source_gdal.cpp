@@ -47,7 +47,11 @@ class GdalSource : public Node {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
       layer_.setPageRanges(std::move(healpix->ranges));
-      source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, encoding_, healpix->nside);
+      // A window lies inside one face, so its pages need no border from another.
+      if (healpix->window)
+        source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, encoding_);
+      else
+        source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, encoding_, healpix->nside);
       return;
     }
     georeference_ = georeferenceOf(*dataset, plugins_,

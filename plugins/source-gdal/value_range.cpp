@@ -19,15 +19,24 @@ bool finite(const ValueRange& range) { return std::isfinite(range.least) && std:
 // Rows read at a time: a band of a 4096-wide raster is 4 MiB of floats.
 constexpr int kRowsAtATime = 256;
 
-// Widens `range` by the finite values of rows [row, row + rows) the mask lets through; rows that cannot be
-// read widen nothing.
-void widenByRows(GDALRasterBand& band, int row, int rows, std::optional<ValueRange>& range) {
-  const int width = band.GetXSize();
-  std::vector<float> values(std::size_t(width) * std::size_t(rows));
+// Widens `range` by the finite values of the window [column, column + columns) x [row, row + rows) that the
+// mask lets through. A window that cannot be read is read again block by block (the file's tiles or strips),
+// so that only the blocks that cannot be read widen nothing.
+void widenByWindow(GDALRasterBand& band, int column, int row, int columns, int rows, std::optional<ValueRange>& range) {
+  std::vector<float> values(std::size_t(columns) * std::size_t(rows));
   std::vector<GByte> valid(values.size());
-  if (band.RasterIO(GF_Read, 0, row, width, rows, values.data(), width, rows, GDT_Float32, 0, 0) != CE_None ||
-      band.GetMaskBand()->RasterIO(GF_Read, 0, row, width, rows, valid.data(), width, rows, GDT_Byte, 0, 0) != CE_None)
+  if (band.RasterIO(GF_Read, column, row, columns, rows, values.data(), columns, rows, GDT_Float32, 0, 0) != CE_None ||
+      band.GetMaskBand()->RasterIO(GF_Read, column, row, columns, rows, valid.data(), columns, rows, GDT_Byte, 0, 0) !=
+          CE_None) {
+    int blockColumns = 0, blockRows = 0;
+    band.GetBlockSize(&blockColumns, &blockRows);
+    if (columns <= blockColumns && rows <= blockRows) return;
+    for (int y = row; y < row + rows; y = (y / blockRows + 1) * blockRows)
+      for (int x = column; x < column + columns; x = (x / blockColumns + 1) * blockColumns)
+        widenByWindow(band, x, y, std::min((x / blockColumns + 1) * blockColumns, column + columns) - x,
+                      std::min((y / blockRows + 1) * blockRows, row + rows) - y, range);
     return;
+  }
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!valid[i] || !std::isfinite(values[i])) continue;
     const double value = values[i];
@@ -42,7 +51,7 @@ void widenByRows(GDALRasterBand& band, int row, int rows, std::optional<ValueRan
 ValueRange drawnRange(GDALRasterBand& band) {
   std::optional<ValueRange> range;
   for (int row = 0; row < band.GetYSize(); row += kRowsAtATime)
-    widenByRows(band, row, std::min(kRowsAtATime, band.GetYSize() - row), range);
+    widenByWindow(band, 0, row, band.GetXSize(), std::min(kRowsAtATime, band.GetYSize() - row), range);
   return range.value_or(ValueRange{0.0, 0.0});
 }
 

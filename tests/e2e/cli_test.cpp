@@ -306,6 +306,21 @@ TEST_F(StrataCommandTest, CommandLineMistakesExitWithOne) {
   EXPECT_TRUE(contains(size.err, "--size")) << size.err;
 }
 
+// A size beyond an int is refused with what was given, not wrapped (4294967297 was read as 1: issue 37).
+TEST_F(StrataCommandTest, ASizeBeyondTheLimitIsRefusedAsGiven) {
+  for (const std::string size : {"4294967297x1", "99999999999999999999x1", "16385x16", "0x10", "-5x3"}) {
+    const CommandResult result = run({"render", "pipelines/demo.yaml", "--size", size, "-o", file("x.png").string()});
+    EXPECT_EQ(result.exitCode, 1) << size;
+    EXPECT_TRUE(contains(result.err, "between 1x1 and 16384x16384 pixels, not " + size)) << result.err;
+    EXPECT_FALSE(fs::exists(file("x.png"))) << size;
+  }
+  for (const std::string size : {"32", "32x", "32x18z", "x18", "32 x 18"}) {
+    const CommandResult result = run({"render", "pipelines/demo.yaml", "--size", size, "-o", file("x.png").string()});
+    EXPECT_EQ(result.exitCode, 1) << size;
+    EXPECT_TRUE(contains(result.err, "WIDTHxHEIGHT")) << result.err;
+  }
+}
+
 TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
   const CommandResult result = run({"--help"});
   EXPECT_EQ(result.exitCode, 0) << result.err;

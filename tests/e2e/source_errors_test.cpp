@@ -2,14 +2,17 @@
 // registered projections and nodata values no sample can hold end in exit code 1 with the file and a fix.
 // Truncated and corrupt files are read page by page, so they render: each page that cannot be read is
 // reported once, with the file and a fix, and the coarser level stands in for it (or the layer is masked
-// there when there is none). Never a crash or a silent picture. A vector file is read as a mask of its
+// there when there is none), and only the tiles that cannot be read are left out of the heights culling
+// trusts. Never a crash or a silent picture. A vector file is read as a mask of its
 // polygons; one that has none, no layer of the name given, or no CRS, or one not asked for as a mask, is an
 // error naming the file and what to do; so is a raster too large to page.
+#include <gdal_priv.h>
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -97,6 +100,34 @@ TEST_F(SourceErrors, ACorruptCompressedTileRendersWithEachUnreadablePageReported
                                     {"TILED=YES", "COMPRESS=DEFLATE"}});
   damage(file("bad.tif"), static_cast<std::streamoff>(fs::file_size(file("bad.tif")) / 2), 4096);
   expectEachPageReportedOnce(renderRaster(file("bad.tif")), "bad.tif");
+}
+
+// A height raster of which one tile cannot be read is still bounded by every other texel: a band of rows
+// that cannot be read whole is counted again tile by tile, so a peak in the damaged tile's row of tiles
+// counts, and the height range a pipeline gives must hold it.
+TEST_F(SourceErrors, ACorruptTileLeavesOnlyItselfOutOfTheHeightsCounted) {
+  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 600, 300, 1, GDT_Float32, 255.0,
+                                    {"TILED=YES", "COMPRESS=DEFLATE"}});
+  std::string offset, size;
+  {
+    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(file("bad.tif").c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
+    ASSERT_TRUE(dataset);
+    float peak = 5000.0f;  // in tile (2, 0), beside the tile (0, 0) damaged below
+    ASSERT_EQ(dataset->GetRasterBand(1)->RasterIO(GF_Write, 550, 10, 1, 1, &peak, 1, 1, GDT_Float32, 0, 0), CE_None);
+  }
+  {
+    std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(file("bad.tif").c_str(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    offset = dataset->GetRasterBand(1)->GetMetadataItem("BLOCK_OFFSET_0_0", "TIFF");
+    size = dataset->GetRasterBand(1)->GetMetadataItem("BLOCK_SIZE_0_0", "TIFF");
+  }
+  damage(file("bad.tif"), std::stoll(offset), std::stoul(size));
+  const CommandResult result = renderTiny(write(
+      "p.yaml", "strata: 1\nnodes:\n"
+                "  data: {type: source.gdal, path: " + file("bad.tif").string() + ", kind: height}\n"
+                "  globe: {type: geometry.icosahedral, height: data, lowest: 0, highest: 300}\n"
+                "  frame: {type: output.image, geometry: globe}\n"));
+  EXPECT_EQ(result.exitCode, 1) << result.err;
+  EXPECT_TRUE(contains(result.err, "to 5000 m") && contains(result.err, "highest: 5000")) << result.err;
 }
 
 TEST_F(SourceErrors, NodataNoSampleCanHoldIsRefusedWithTheValueAndAFix) {

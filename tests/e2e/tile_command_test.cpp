@@ -17,8 +17,10 @@
 #include <string>
 #include <vector>
 
+#include <strata/crs.hpp>
 #include <strata/healpix.hpp>
 #include <strata/healpix_pyramid.hpp>
+#include <strata/plugin_registry.hpp>
 
 #include "strata_command.hpp"
 #include "test_rasters.hpp"
@@ -410,6 +412,82 @@ TEST_F(TileCommand, AHealpixPyramidsNsideIsAPowerOfTwoFrom512) {
   EXPECT_EQ(out->GetRasterYSize(), 1024);
   EXPECT_STREQ(out->GetMetadataItem(healpix::kNsideItem), "1024");
   EXPECT_FALSE(fs::exists(file("fine.tif.strip.tif"))) << "the temporary strip is removed";
+}
+
+// 2.2 cm texels (2e-7 degrees of WGS84's equator) near Gale crater's place, holding 1000 column + row: a
+// field bilinear filtering keeps exactly, so that a texel of the pyramid must hold it at its pixel's centre
+// within Float32's rounding of values up to 2e5 (0.008) and the warper's error in placing the pixel: PROJ's
+// inverse HEALPix on an ellipsoid takes the authalic latitude back by a series good to 5e-9 degrees (0.56 mm
+// at lat -4.6 by gdaltransform, 0.025 rows here; longitudes exact): 0.05.
+constexpr double kFineStep = 2e-7;
+constexpr int kFineWidth = 200, kFineHeight = 100;
+constexpr double kFineWest = 137.4, kFineNorth = -4.6;
+
+double fineField(double lonDegrees, double latDegrees) {
+  const double column = (lonDegrees - kFineWest) / kFineStep - 0.5, row = (kFineNorth - latDegrees) / kFineStep - 0.5;
+  return 1000.0 * column + row;
+}
+
+// The window's texels covered, checked against fineField where their centres lie inside the input by more
+// than a texel; returns how many were checked.
+int checkWindow(GDALDataset& out, const healpix::FaceWindow& window, std::int64_t nside) {
+  const std::unique_ptr<Projection> strip = healpix::stripProjection(
+      projectionOfCrs(PluginRegistry{}, out.GetMetadataItem(healpix::kFigureItem), {}));
+  std::vector<float> values(std::size_t(window.width) * std::size_t(window.height));
+  EXPECT_EQ(out.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, window.width, window.height, values.data(), window.width,
+                                           window.height, GDT_Float32, 0, 0),
+            CE_None);
+  int checked = 0;
+  for (int row = 0; row < window.height; row += 3)
+    for (int column = 0; column < window.width; column += 3) {
+      const glm::dvec2 xy(window.face + (double(window.column + column) + 0.5) / double(nside),
+                          1.0 - (double(window.row + row) + 0.5) / double(nside));
+      const glm::dvec2 lonlat = *strip->inverse(xy) / kDegree;
+      const double inputColumn = (lonlat.x - kFineWest) / kFineStep, inputRow = (kFineNorth - lonlat.y) / kFineStep;
+      if (inputColumn < 1.5 || inputRow < 1.5 || inputColumn > kFineWidth - 1.5 || inputRow > kFineHeight - 1.5)
+        continue;
+      const float value = values[std::size_t(row) * std::size_t(window.width) + std::size_t(column)];
+      EXPECT_NEAR(value, fineField(lonlat.x, lonlat.y), 0.05) << "window texel " << column << ", " << row;
+      ++checked;
+    }
+  return checked;
+}
+
+// Finer than 2^26 (about 10 cm texels on Earth) a pyramid holds the window of the one face its input covers
+// (healpix::FaceWindow): 2.2 cm texels need nside 2^29, whose strip would be 12 x 2^29 texels across.
+TEST_F(TileCommand, AHealpixPyramidFinerThanTheStripAllowsHoldsAWindowOfOneFace) {
+  writeFloatRaster(file("fine.tif"), kFineWidth, kFineHeight,
+                   {kFineWest, kFineNorth - kFineHeight * kFineStep, kFineWest + kFineWidth * kFineStep, kFineNorth},
+                   [](int column, int row) { return float(1000 * column + row); });
+  const CommandResult result =
+      run({"tile", file("fine.tif").string(), file("window.tif").string(), "--to", "healpix"});
+  ASSERT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.out, "nside 536870912")) << "the least nside with texels below 2.2 cm: " << result.out;
+  auto out = openRaster(file("window.tif"));
+  ASSERT_TRUE(out);
+  constexpr std::int64_t kNside = std::int64_t{1} << 29;
+  ASSERT_NE(out->GetMetadataItem(healpix::kWindowItem), nullptr);
+  const std::optional<healpix::FaceWindow> window = healpix::windowOf(
+      out->GetMetadataItem(healpix::kWindowItem), kNside, out->GetRasterXSize(), out->GetRasterYSize());
+  ASSERT_TRUE(window) << out->GetMetadataItem(healpix::kWindowItem);
+  EXPECT_EQ(window->face, healpix::facePoint(glm::dvec2(kFineWest, kFineNorth) * kDegree).face);
+  // The input is 4.4 x 2.2 m, turned by about 45 degrees in the face: at most (4.4 + 2.2) / sqrt 2 m a side.
+  EXPECT_LT(window->width, 4.7 / 0.0121 * 1.03 + 8);
+  EXPECT_LT(window->height, 4.7 / 0.0121 * 1.03 + 8);
+  std::array<double, 6> geotransform{};
+  ASSERT_EQ(out->GetGeoTransform(geotransform.data()), CE_None);
+  EXPECT_EQ(geotransform, healpix::windowGeotransform(kNside, *window));
+  EXPECT_GT(checkWindow(*out, *window, kNside), 1000);
+}
+
+TEST_F(TileCommand, AHealpixPyramidFinerThanTheStripAllowsMustLieOnOneFace) {
+  // 45 degrees east on the equator, the corner where the equatorial faces 4 and 5 meet polar faces 0 and 8.
+  writeFloatRaster(file("corner.tif"), 100, 100, {45.0 - 1e-5, -1e-5, 45.0 + 1e-5, 1e-5}, [](int, int) { return 1.0f; });
+  const CommandResult result = run({"tile", file("corner.tif").string(), file("refused.tif").string(), "--to",
+                                    "healpix", "--nside", "134217728"});
+  EXPECT_EQ(result.exitCode, 1);
+  EXPECT_TRUE(contains(result.err, "reaches faces 0, 4, 5, 8") && contains(result.err, "--nside 67108864")) << result.err;
+  EXPECT_FALSE(fs::exists(file("refused.tif")));
 }
 
 TEST_F(TileCommand, TheHealpixPlaneIsACrsLikeAnyOther) {

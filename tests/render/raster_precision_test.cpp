@@ -165,16 +165,18 @@ const Place kPlaces[] = {
     {"near_north_pole", 33.0, 89.95, 33.0 + 0.0123, 89.95 + 4.5e-6},
 };
 
+std::string placeGeneratorAndTilt(const ::testing::TestParamInfo<std::tuple<Place, std::string, double>>& param) {
+  const std::string& type = std::get<1>(param.param);
+  return std::string(std::get<0>(param.param).name) + "_" + type.substr(type.find('.') + 1) + "_tilt" +
+         std::to_string(int(std::get<2>(param.param)));
+}
+
 INSTANTIATE_TEST_SUITE_P(
     PlacesGeneratorsAndTilts, RasterPrecision,
     ::testing::Combine(::testing::ValuesIn(kPlaces),
                        ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
                        ::testing::Values(0.0, 60.0)),
-    [](const ::testing::TestParamInfo<std::tuple<Place, std::string, double>>& param) {
-      const std::string& type = std::get<1>(param.param);
-      return std::string(std::get<0>(param.param).name) + "_" + type.substr(type.find('.') + 1) + "_tilt" +
-             std::to_string(int(std::get<2>(param.param)));
-    });
+    placeGeneratorAndTilt);
 
 }  // namespace
 }  // namespace strata::test
@@ -197,6 +199,34 @@ INSTANTIATE_TEST_SUITE_P(PlacesAndTilts, WarpedRasterPrecision,
                            return std::string(std::get<0>(param.param).name) + "_tilt" +
                                   std::to_string(int(std::get<1>(param.param)));
                          });
+
+}  // namespace
+}  // namespace strata::test
+
+namespace strata::test {
+namespace {
+
+// The board as a HEALPix pyramid (strata tile --to healpix): 1 cm texels need nside 2^30 (6 mm face texels
+// on Earth), far beyond the twelve faces' 2^26, so the pyramid holds the window of one face the board
+// covers: on an equatorial face at Gale's place, on face 6 across the antimeridian, and on a polar face a
+// tenth of a degree from the pole, where the faces' texels are sheared most. Through float strip
+// coordinates (face + x, 2^-24 apart) a texel address would be 64 texels astray.
+class HealpixRasterPrecision : public ::testing::TestWithParam<std::tuple<Place, std::string, double>> {};
+
+TEST_P(HealpixRasterPrecision, OneCentimetreTexelsInAHealpixPyramidAreCrispFromTwoMetres) {
+  const auto& [place, geometry, tilt] = GetParam();
+  expectCrisp(place, geometry, tilt, "healpix");
+}
+
+INSTANTIATE_TEST_SUITE_P(Places, HealpixRasterPrecision,
+                         ::testing::Combine(::testing::Values(kPlaces[1], kPlaces[3], kPlaces[4]),
+                                            ::testing::Values("geometry.icosahedral"), ::testing::Values(0.0, 60.0)),
+                         placeGeneratorAndTilt);
+INSTANTIATE_TEST_SUITE_P(Generators, HealpixRasterPrecision,
+                         ::testing::Combine(::testing::Values(kPlaces[1]),
+                                            ::testing::Values("geometry.pgm", "geometry.healpix"),
+                                            ::testing::Values(60.0)),
+                         placeGeneratorAndTilt);
 
 }  // namespace
 }  // namespace strata::test

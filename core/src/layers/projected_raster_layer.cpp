@@ -176,8 +176,11 @@ ProjectionAspect ProjectedRasterLayer::aspect() const {
   return georeference_.projection ? georeference_.projection->aspect() : ProjectionAspect::Other;
 }
 
+// The whole strip of twelve faces: a window of one face (healpix::FaceWindow) is sampled as any raster, by
+// longitude and latitude relative to the eye, since its nside is beyond what float face points address.
 bool ProjectedRasterLayer::onHealpixFaces() const {
-  return georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType;
+  return georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType &&
+         texels_.x == 12.0f * texels_.y;
 }
 
 void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {

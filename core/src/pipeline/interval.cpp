@@ -30,8 +30,10 @@ void requireWithin(double number, const Interval& allowed, const std::string& un
   if (allowed.contains(number)) return;
   const bool between = allowed.low && allowed.high;
   const std::string range = (between ? "in " : "") + allowed.str(units);
+  // As the user wrote it: an integer beyond 2^53 would come back from the double another number.
+  const std::string given = value.IsScalar() ? value.Scalar() : formatValue(number);
   throw context.source.error(value, context.nodeId,
-                             context.label + " must be " + range + ", got " + withUnits(formatValue(number), units),
+                             context.label + " must be " + range + ", got " + withUnits(given, units),
                              "choose a value " + range);
 }
 

@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <sstream>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -23,6 +24,25 @@ glm::dvec3 unitVectorOf(int face, glm::dvec2 xy) { return unitVector(FacePoint{f
 std::array<double, 6> stripGeotransform(std::int64_t nside) {
   const double texel = 1.0 / double(nside);
   return {0.0, texel, 0.0, 1.0, 0.0, -texel};
+}
+
+std::array<double, 6> windowGeotransform(std::int64_t nside, const FaceWindow& window) {
+  const double texel = 1.0 / double(nside);
+  return {double(window.face) + double(window.column) * texel, texel, 0.0, 1.0 - double(window.row) * texel, 0.0,
+          -texel};
+}
+
+std::string windowItem(const FaceWindow& window) {
+  return std::to_string(window.face) + " " + std::to_string(window.column) + " " + std::to_string(window.row);
+}
+
+std::optional<FaceWindow> windowOf(const std::string& item, std::int64_t nside, int width, int height) {
+  std::istringstream text(item);
+  FaceWindow window{0, 0, 0, width, height};
+  if (!(text >> window.face >> window.column >> window.row) || !(text >> std::ws).eof()) return std::nullopt;
+  const bool within = window.face >= 0 && window.face < 12 && window.column >= 0 && window.row >= 0 && width > 0 &&
+                      height > 0 && window.column + width <= nside && window.row + height <= nside;
+  return within ? std::optional(window) : std::nullopt;
 }
 
 PagePyramid stripPyramid(std::int64_t nside) {

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include <strata/crs.hpp>
@@ -22,6 +23,7 @@
 
 #include "projection/projection_terms.hpp"
 #include "tiling/cog_writing.hpp"
+#include "tiling/face_window.hpp"
 #include "tiling/globe_wrapping.hpp"
 #include "tiling/page_range_scan.hpp"
 #include "tiling/tile_target.hpp"
@@ -53,6 +55,22 @@ struct Pyramid {
   double scale = 1.0;
   Samples samples;
 };
+
+// A part of one face that the warper fills, in level-0 face texels, and where its first texel lies in the
+// file written: a face of the strip (fileColumn = face nside), or a windowed pyramid's whole file.
+struct FaceArea {
+  healpix::FaceWindow texels;
+  std::int64_t fileColumn = 0;
+};
+
+// What the file holds: the twelve faces side by side, or, finer than the strip allows, a window of one face.
+std::vector<FaceArea> areasOf(const Pyramid& pyramid, const std::optional<healpix::FaceWindow>& window) {
+  if (window) return {{*window, 0}};
+  std::vector<FaceArea> faces;
+  const int side = int(pyramid.nside);
+  for (int face = 0; face < 12; ++face) faces.push_back({{face, 0, 0, side, side}, face * pyramid.nside});
+  return faces;
+}
 
 // A face is a twelfth of the sphere, R sqrt(pi / 3) across.
 double faceTexelMetres(double radius, std::int64_t nside) {
@@ -104,12 +122,12 @@ std::int64_t checkedNside(std::int64_t nside) {
     problem = "is not a power of two";
   else if (nside < healpix::kLeastNside)
     problem = "is below " + std::to_string(healpix::kLeastNside) + ", the least: a face must fill a whole page";
-  else if (nside > healpix::kMostNside)
-    problem = "is above 2^26, the most: 12 nside texels across must fit GDAL's 32-bit sizes, with room to spare";
+  else if (nside > healpix::kMostWindowedNside)
+    problem = "is above 2^30, the most: a window of one face counts its texels in 32 bits";
   if (problem.empty()) return nside;
   throw Error({"--nside"}, "nside " + std::to_string(nside) + " " + problem,
               "give a power of two from " + std::to_string(healpix::kLeastNside) +
-                  " (e.g. 1024 or 4096), or leave --nside out to match the input's texels");
+                  " (e.g. 1024 or 4096) to 2^30, or leave --nside out to match the input's texels");
 }
 
 // The haversine distance (m) between places i and j of x (longitudes) and y (latitudes), in degrees, on a
@@ -144,10 +162,10 @@ double centreTexelMetres(GDALDataset& input, const SourceLocation& where) {
 // The least nside whose face texels are no larger than `inputTexel` (m).
 std::int64_t automaticNside(double inputTexel, double radius, const SourceLocation& where) {
   std::int64_t nside = healpix::kLeastNside;
-  while (faceTexelMetres(radius, nside) > inputTexel && nside < healpix::kMostNside) nside *= 2;
+  while (faceTexelMetres(radius, nside) > inputTexel && nside < healpix::kMostWindowedNside) nside *= 2;
   if (faceTexelMetres(radius, nside) > inputTexel)
     throw Error(where, "its texels (" + std::to_string(inputTexel) + " m) are finer than the finest HEALPix pyramid's",
-                "choose a coarser resolution: --nside N, a power of two up to 2^26");
+                "choose a coarser resolution: --nside N, a power of two up to 2^30");
   return nside;
 }
 
@@ -157,12 +175,12 @@ struct Chunk {
   std::vector<std::byte> texels;
 };
 
-// Rows of a face of about kChunkTexels texels together, whole rows of strip tiles where they fit, so that
+// Rows of an area of about kChunkTexels texels together, whole rows of strip tiles where they fit, so that
 // no compressed tile of the strip is written twice.
-Chunk chunkFor(const Pyramid& pyramid) {
-  const std::int64_t rows = std::clamp<std::int64_t>(kChunkTexels / pyramid.nside, 1, pyramid.nside);
+Chunk chunkFor(const Pyramid& pyramid, const healpix::FaceWindow& area) {
+  const std::int64_t rows = std::clamp<std::int64_t>(kChunkTexels / area.width, 1, area.height);
   const std::int64_t whole = rows >= kStripTile ? rows / kStripTile * kStripTile : rows;
-  const std::size_t bytes = std::size_t(whole * pyramid.nside) * std::size_t(pyramid.samples.bands) *
+  const std::size_t bytes = std::size_t(whole * area.width) * std::size_t(pyramid.samples.bands) *
                             std::size_t(GDALGetDataTypeSizeBytes(pyramid.samples.type));
   return {int(whole), std::vector<std::byte>(bytes)};
 }
@@ -190,14 +208,14 @@ void clearChunk(Chunk& chunk, std::size_t texels, const Samples& samples) {
   }
 }
 
-// A MEM dataset over `chunk`'s texels for rows [row, row + rows) of face `face`, in the plane centred on the
+// A MEM dataset over `chunk`'s texels for rows [row, row + rows) of `area`, in the plane centred on the
 // face's meridian where the face lies whole.
-Dataset faceWindow(const Pyramid& pyramid, int face, int row, int rows, Chunk& chunk) {
-  const int side = int(pyramid.nside);
+Dataset areaWindow(const Pyramid& pyramid, const healpix::FaceWindow& area, int row, int rows, Chunk& chunk) {
+  const int width = area.width;
   Dataset window(
-      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", side, rows, 0, pyramid.samples.type, nullptr));
+      GetGDALDriverManager()->GetDriverByName("MEM")->Create("", width, rows, 0, pyramid.samples.type, nullptr));
   const std::size_t bandBytes =
-      std::size_t(side) * std::size_t(rows) * std::size_t(GDALGetDataTypeSizeBytes(pyramid.samples.type));
+      std::size_t(width) * std::size_t(rows) * std::size_t(GDALGetDataTypeSizeBytes(pyramid.samples.type));
   for (int band = 0; band < pyramid.samples.bands; ++band) {
     char pointer[64] = {};
     CPLPrintPointer(pointer, chunk.texels.data() + band * bandBytes, sizeof(pointer) - 1);
@@ -207,11 +225,12 @@ Dataset faceWindow(const Pyramid& pyramid, int face, int row, int rows, Chunk& c
   }
   markMissing(*window, pyramid.samples);
   OGRSpatialReference plane;
-  plane.SetFromUserInput((pyramid.figure + term("lon_0", healpix::faceCentralMeridian(face))).c_str());
+  plane.SetFromUserInput((pyramid.figure + term("lon_0", healpix::faceCentralMeridian(area.face))).c_str());
   window->SetSpatialRef(&plane);
-  std::array<double, 6> t = healpix::facePlaneGeotransform(face, pyramid.nside, pyramid.radius);
-  t[0] += row * t[2];  // the window's first row is row `row` of the face
-  t[3] += row * t[5];
+  std::array<double, 6> t = healpix::facePlaneGeotransform(area.face, pyramid.nside, pyramid.radius);
+  const double column = double(area.column), first = double(area.row + row);  // the window's first texel's
+  t[0] += column * t[1] + first * t[2];
+  t[3] += column * t[4] + first * t[5];
   window->SetGeoTransform(t.data());
   return window;
 }
@@ -244,7 +263,9 @@ void warp(GDALDataset& input, GDALDataset& window, const Pyramid& pyramid, const
                 "check that `gdalinfo` reads the input, and that PROJ knows its CRS");
 }
 
-Dataset createStrip(const std::filesystem::path& file, const Pyramid& pyramid, const SourceLocation& where) {
+// The file the faces are warped into: the strip of twelve faces, or a window of one.
+Dataset createFaces(const std::filesystem::path& file, const Pyramid& pyramid,
+                    const std::optional<healpix::FaceWindow>& window, const SourceLocation& where) {
   CPLStringList options;
   for (const char* option : {"TILED=YES", "COMPRESS=DEFLATE", "ZLEVEL=1", "BIGTIFF=YES", "SPARSE_OK=TRUE"})
     options.AddString(option);
@@ -253,15 +274,18 @@ Dataset createStrip(const std::filesystem::path& file, const Pyramid& pyramid, c
   if (pyramid.samples.alpha) options.SetNameValue("ALPHA", "YES");
   if (pyramid.samples.rgb) options.SetNameValue("PHOTOMETRIC", "RGB");
   CPLErrorReset();
-  Dataset strip(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(file.c_str(), int(12 * pyramid.nside),
-                                                                         int(pyramid.nside), pyramid.samples.bands,
-                                                                         pyramid.samples.type, options.List()));
+  const int width = window ? window->width : int(12 * pyramid.nside), height = window ? window->height : int(pyramid.nside);
+  Dataset strip(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(file.c_str(), width, height,
+                                                                         pyramid.samples.bands, pyramid.samples.type,
+                                                                         options.List()));
   if (!strip)
     throw Error(where, "GDAL could not create the temporary '" + file.string() + "': " + CPLGetLastErrorMsg(),
                 "check that the output's folder is writable and that the disk has room");
   markMissing(*strip, pyramid.samples);
-  std::array<double, 6> geotransform = healpix::stripGeotransform(pyramid.nside);
+  std::array<double, 6> geotransform =
+      window ? healpix::windowGeotransform(pyramid.nside, *window) : healpix::stripGeotransform(pyramid.nside);
   strip->SetGeoTransform(geotransform.data());
+  if (window) strip->SetMetadataItem(healpix::kWindowItem, healpix::windowItem(*window).c_str());
   strip->SetMetadataItem(healpix::kNsideItem, std::to_string(pyramid.nside).c_str());
   strip->SetMetadataItem(healpix::kFigureItem, pyramid.figure.c_str());
   strip->SetMetadataItem(healpix::kOrderingItem, "NESTED");
@@ -282,27 +306,32 @@ bool reached(const Chunk& chunk, std::size_t texels, const Samples& samples) {
   return false;
 }
 
-void writeFaces(GDALDataset& input, GDALDataset& strip, const Pyramid& pyramid,
+void writeAreas(GDALDataset& input, GDALDataset& file, const Pyramid& pyramid, const std::vector<FaceArea>& areas,
                 const std::function<void(double)>& progress, const SourceLocation& where) {
-  Chunk chunk = chunkFor(pyramid);
-  const int side = int(pyramid.nside);
-  for (int face = 0; face < 12; ++face)
-    for (int row = 0; row < side; row += chunk.rows) {
-      const int rows = std::min(chunk.rows, side - row);
-      clearChunk(chunk, std::size_t(side) * std::size_t(rows), pyramid.samples);
-      warp(input, *faceWindow(pyramid, face, row, rows, chunk), pyramid, where);
+  double total = 0.0, done = 0.0;
+  for (const FaceArea& area : areas) total += double(area.texels.width) * area.texels.height;
+  for (const FaceArea& area : areas) {
+    const healpix::FaceWindow& texels = area.texels;
+    Chunk chunk = chunkFor(pyramid, texels);
+    for (int row = 0; row < texels.height; row += chunk.rows) {
+      const int rows = std::min(chunk.rows, texels.height - row);
+      const std::size_t count = std::size_t(texels.width) * std::size_t(rows);
+      clearChunk(chunk, count, pyramid.samples);
+      warp(input, *areaWindow(pyramid, texels, row, rows, chunk), pyramid, where);
       CPLErrorReset();
       // The strip is sparse: what is not written reads as missing, which spares compressing and writing the
       // empty faces of an input that covers a small part of the sphere.
-      if (reached(chunk, std::size_t(side) * std::size_t(rows), pyramid.samples) &&
-          strip.RasterIO(GF_Write, face * side, row, side, rows, chunk.texels.data(), side, rows, pyramid.samples.type,
-                         pyramid.samples.bands, nullptr, 0, 0, 0, nullptr) != CE_None)
+      if (reached(chunk, count, pyramid.samples) &&
+          file.RasterIO(GF_Write, int(area.fileColumn), row, texels.width, rows, chunk.texels.data(), texels.width,
+                        rows, pyramid.samples.type, pyramid.samples.bands, nullptr, 0, 0, 0, nullptr) != CE_None)
         throw Error(
             where,
-            "GDAL could not write the temporary '" + std::string(strip.GetDescription()) + "': " + CPLGetLastErrorMsg(),
+            "GDAL could not write the temporary '" + std::string(file.GetDescription()) + "': " + CPLGetLastErrorMsg(),
             "check that the disk has room");
-      if (progress) progress(kFacesShare * double(face * side + row + rows) / (12.0 * side));
+      done += double(count);
+      if (progress) progress(kFacesShare * done / total);
     }
+  }
 }
 
 }  // namespace
@@ -315,12 +344,16 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   const std::int64_t nside =
       request.nside != 0 ? checkedNside(request.nside) : automaticNside(inputTexel, radius, where);
   const Pyramid pyramid{nside, figure, radius, inputTexel / faceTexelMetres(radius, nside), samplesOf(input)};
+  std::optional<healpix::FaceWindow> window;
+  if (nside > healpix::kMostNside)
+    window = faceWindowCovering(input, *healpix::stripProjection(projectionOfCrs(plugins, figure, where)), nside, where);
   // Beside the output, in the scratch folder tileRaster writes it in, which goes with everything it holds.
-  Dataset faces = createStrip(request.output.parent_path() / "faces.strip.tif", pyramid, where);
+  Dataset faces = createFaces(request.output.parent_path() / "faces.strip.tif", pyramid, window, where);
   const Dataset wrapped = wrapAroundGlobe(input);
-  writeFaces(wrapped ? *wrapped : input, *faces, pyramid, request.progress, where);
-  // One-channel pyramids (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes.
-  if (pyramid.samples.bands == 1)
+  writeAreas(wrapped ? *wrapped : input, *faces, pyramid, areasOf(pyramid, window), request.progress, where);
+  // One-channel strips (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes.
+  // A window is paged as any raster, and bounded by its whole range.
+  if (pyramid.samples.bands == 1 && !window)
     for (const auto& [name, value] : scanPageRanges(*faces, nside).metadataItems())
       faces->SetMetadataItem(name.c_str(), value.c_str());
   std::function<void(double)> progress;

@@ -8,6 +8,10 @@
 // value at that pixel's centre. Its 512x512 tiles are pages of the page cache; the one-sample overlap of the
 // paper's tiles is the pages' border, which the cache fills from the neighbouring face on the sphere (see
 // texelAcross), so that filtering is seamless across face edges.
+//
+// Finer than kMostNside (about 10 cm texels on Earth) the twelve faces no longer fit GDAL's sizes, and data
+// that fine covers a small place anyway: such a pyramid holds a window of one face (kWindowItem), paged as
+// any raster is, at nside up to kMostWindowedNside (6 mm texels on Earth).
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -29,15 +33,37 @@ namespace strata::healpix {
 inline constexpr const char* kNsideItem = "STRATA_HEALPIX_NSIDE";        // a power of two, at least kLeastNside
 inline constexpr const char* kFigureItem = "STRATA_HEALPIX_CRS";         // "+proj=healpix" and the body's figure
 inline constexpr const char* kOrderingItem = "STRATA_HEALPIX_ORDERING";  // "NESTED"
+inline constexpr const char* kWindowItem = "STRATA_HEALPIX_WINDOW";      // a window of one face: see FaceWindow
 
 // The least nside written: a face of one page, so that no page holds texels of two faces.
 inline constexpr std::int64_t kLeastNside = kPagePayload;
-// The greatest: 12 nside columns fit an int, with room to spare.
+// The greatest of a strip of all twelve faces: 12 nside columns fit an int, with room to spare.
 inline constexpr std::int64_t kMostNside = std::int64_t{1} << 26;
+// The greatest of a window of one face: face texels are still counted in an int, and strip coordinates
+// (face + x, x in steps of 1 / nside) keep 20 bits to spare in a double.
+inline constexpr std::int64_t kMostWindowedNside = std::int64_t{1} << 30;
+
+// The part of face `face` a windowed pyramid holds: level-0 face texels [column, column + width) along x and
+// [row, row + height) down from the face's y = 1 edge, numbered as a strip's texels are within their face.
+// kWindowItem stores "face column row"; the file is width x height texels.
+struct FaceWindow {
+  int face = 0;
+  std::int64_t column = 0;
+  std::int64_t row = 0;
+  int width = 0;
+  int height = 0;
+};
+
+// kWindowItem's text for `window`, and the window that text and a file of `width` x `height` texels at
+// `nside` describe; empty where they do not describe one within a face.
+std::string windowItem(const FaceWindow& window);
+std::optional<FaceWindow> windowOf(const std::string& item, std::int64_t nside, int width, int height);
 
 // Map coordinates of the strip: x = face + the face point's x, y = the face point's y (see FacePoint), so
 // that the strip's geotransform is (0, 1 / nside, 0, 1, 0, -1 / nside).
 std::array<double, 6> stripGeotransform(std::int64_t nside);
+// The geotransform of a windowed pyramid's texels in the same strip coordinates.
+std::array<double, 6> windowGeotransform(std::int64_t nside, const FaceWindow& window);
 
 // The strip's pages: levels halve the faces down to faces of one page (kLeastNside), never beyond, so that
 // a page lies on one face at every level.

@@ -54,7 +54,8 @@ class ProjectedRasterLayer : public Layer {
   const std::string& prefix() const { return prefix_; }
   // Raw values, least and greatest, as the layer returns them (after scale and offset).
   ValueRange transformed(double rawLeast, double rawGreatest) const;
-  // Whether the raster is a HEALPix pyramid's strip of faces (strata/healpix_pyramid.hpp).
+  // Whether the raster is a HEALPix pyramid's whole strip of faces (strata/healpix_pyramid.hpp), not a
+  // window of one face.
   bool onHealpixFaces() const;
   bool repeatX() const { return repeatX_; }
 

@@ -23,8 +23,8 @@ struct TilingRequest {
   bool overwrite = false;  // without it an existing output is an error: nothing a user wrote is replaced
   // Called with the fraction done; empty: quiet.
   std::function<void(double)> progress;
-  // The HEALPix pyramid's nside: a power of two from healpix::kLeastNside to 2^26. 0: the least whose
-  // texels are no larger than the input's finest.
+  // The HEALPix pyramid's nside: a power of two from healpix::kLeastNside to 2^30 (above 2^26, a window of
+  // one face: strata/healpix_pyramid.hpp). 0: the least whose texels are no larger than the input's finest.
   std::int64_t nside = 0;
 };
 
