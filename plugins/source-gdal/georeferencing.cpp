@@ -6,6 +6,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
 
 #include <strata/crs.hpp>
 
@@ -86,6 +90,49 @@ std::array<double, 6> geotransformOf(GDALDataset& dataset, const Projection& pro
                          : "georeference it: gdal_translate -a_ullr ulx uly lrx lry in.tif out.tif");
 }
 
+// A texel finer than this (rad of the body) is below what doubles of planet-sized values hold apart: a few
+// micrometres on Earth, far below the centimetres Strata is built for.
+constexpr double kFinestTexelAngle = 1e-12;
+
+std::string geotransformText(const std::array<double, 6>& t) {
+  std::array<char, 200> text{};
+  std::snprintf(text.data(), text.size(), "%g, %g, %g, %g, %g, %g", t[0], t[1], t[2], t[3], t[4], t[5]);
+  return text.data();
+}
+
+// The angle (rad) between two places on the body, through their unit vectors.
+double angleBetween(glm::dvec2 a, glm::dvec2 b) {
+  const auto unit = [](glm::dvec2 p) {
+    return glm::dvec3(std::cos(p.y) * std::cos(p.x), std::cos(p.y) * std::sin(p.x), std::sin(p.y));
+  };
+  return 2.0 * std::asin(std::min(glm::length(unit(a) - unit(b)) / 2.0, 1.0));
+}
+
+// A geotransform that places the raster nowhere on the body (NaN, infinite, texels of no size, or so far out
+// that its texels fall together) would draw an empty planet: refused, naming the file.
+void refuseNowhere(GDALDataset& dataset, const Projection& projection, const std::array<double, 6>& t,
+                   const SourceLocation& where) {
+  const auto mapOf = [&t](double column, double row) {
+    return glm::dvec2(t[0] + column * t[1] + row * t[2], t[3] + column * t[4] + row * t[5]);
+  };
+  const double column = 0.5 * dataset.GetRasterXSize(), row = 0.5 * dataset.GetRasterYSize();
+  const std::optional<glm::dvec2> centre = projection.inverse(mapOf(column, row));
+  const std::optional<glm::dvec2> east = projection.inverse(mapOf(column + 1.0, row));
+  const std::optional<glm::dvec2> south = projection.inverse(mapOf(column, row + 1.0));
+  const bool finite = std::all_of(t.begin(), t.end(), [](double v) { return std::isfinite(v); });
+  std::string problem;
+  if (!finite || t[1] == 0.0 || t[5] == 0.0)
+    problem = "is not finite or gives its texels no size";
+  else if (!centre || !east || !south)
+    problem = "places its centre outside its projection's domain";
+  else if (std::min(angleBetween(*centre, *east), angleBetween(*centre, *south)) < kFinestTexelAngle)
+    problem = "makes its texels finer than 1e-12 rad of the body, where doubles no longer hold them apart";
+  if (problem.empty()) return;
+  throw Error(where, "'" + describe(dataset) + "' has the geotransform " + geotransformText(t) + ", which " + problem,
+              "correct it: gdal_edit.py -a_ullr ulx uly lrx lry " + describe(dataset) +
+                  " (gdalinfo shows what it says now)");
+}
+
 }  // namespace
 
 RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& plugins,
@@ -93,6 +140,7 @@ RasterGeoreference georeferenceOf(GDALDataset& dataset, const PluginRegistry& pl
   std::unique_ptr<Projection> projection = projectionOf(dataset, plugins, options);
   const std::array<double, 6> geotransform = geotransformOf(dataset, *projection, options);
   if (options.crs.empty() && !dataset.GetSpatialRef()) refuseNonDegrees(dataset, geotransform, options.fileWhere);
+  refuseNowhere(dataset, *projection, geotransform, options.fileWhere);
   return makeGeoreference(std::move(projection), geotransform, dataset.GetRasterXSize());
 }
 

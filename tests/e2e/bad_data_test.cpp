@@ -136,6 +136,22 @@ TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
   expectRefused(result, {"2000000000x1000000000", "more than the page index holds", "gdal_translate -outsize"});
 }
 
+// A geotransform that places a raster nowhere (was: an empty planet, exit 0): NaN or infinite terms, texels
+// of 1e-300 degrees, or an origin so far out (1e300) that all texels fall on one double.
+TEST_F(BadData, AGeotransformThatPlacesTheRasterNowhereIsRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"nan, 5.625, 0, 90, 0, -5.625", "not finite"},
+      {"-180, inf, 0, 90, 0, -5.625", "not finite"},
+      {"-180, 1e-300, 0, 90, 0, -1e-300", "finer than 1e-12 rad"},
+      {"1e300, 5.625, 0, 90, 0, -5.625", "finer than 1e-12 rad"},
+  };
+  for (const auto& [geotransform, says] : cases) {
+    const CommandResult result =
+        renderHeights(write("nowhere.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"", "EPSG:4326", geotransform)));
+    expectRefused(result, {"nowhere.vrt' has the geotransform", says, "gdal_edit.py -a_ullr"});
+  }
+}
+
 TEST_F(BadData, ABrokenCrsIsRefusedNamingTheFile) {
   const CommandResult result = renderHeights(
       write("broken.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"", "GEOGCS[\"broken\",DATUM[\"nothing\"",
