@@ -81,7 +81,7 @@ TEST_F(ParametersTest, IntegerOutOfRangeNamesTheRange) {
   EXPECT_EQ(error.where().column, 47);
 }
 
-// The value as written: through a double, 123456789012345679 came back as 1.2345678901234568e+17 (issue 37).
+// The value as written: through a double, 123456789012345679 came back as 123456789012345680 (issue 37).
 TEST_F(ParametersTest, AnIntegerOutOfRangeIsReportedAsGiven) {
   const Error error = parseError(withNode("globe: {type: geometry.icosahedral, levels: 123456789012345679}"));
   EXPECT_EQ(error.problem(), "parameter 'levels' must be in [1, 24], got 123456789012345679");
