@@ -63,10 +63,12 @@ std::string facesNamed(const std::set<int>& faces) {
 healpix::FaceWindow faceWindowCovering(GDALDataset& input, const Projection& strip, std::int64_t nside,
                                        const SourceLocation& where) {
   const FaceBox box = boxOf(input, strip, nside, where);
-  const std::string finer = "at nside " + std::to_string(nside) + ", finer than 2^26, a HEALPix pyramid holds a part of one face";
+  const std::string most = std::to_string(healpix::kMostNside);
+  const std::string finer =
+      "at nside " + std::to_string(nside) + ", finer than " + most + ", a HEALPix pyramid holds a part of one face";
   if (box.faces.size() > 1)
     throw Error(where, finer + ", but '" + std::string(input.GetDescription()) + "' reaches faces " + facesNamed(box.faces),
-                "give --nside 67108864 or less for a pyramid of all twelve faces, or cut the input where the faces meet");
+                "give --nside " + most + " or less for a pyramid of all twelve faces, or cut the input where the faces meet");
   const double margin = kMarginTexels + kMarginShare * std::max(box.east - box.west, box.south - box.north);
   const auto bound = [nside](double texel) { return std::clamp(texel, 0.0, double(nside)); };
   const std::int64_t west = std::int64_t(std::floor(bound(box.west - margin)));
