@@ -100,11 +100,17 @@ TEST_F(SceneTest, TiltOutOfRange) {
   EXPECT_EQ(error.problem(), "camera 'tilt' must be in [0, 90] deg, got -5 deg");
 }
 
-TEST_F(SceneTest, FieldOfViewExcludesItsBounds) {
+// Issue 37, item 7: a field of view of 1e-8 degrees drew a torn surface and 1e-320 nothing at all.
+TEST_F(SceneTest, FieldOfViewKeepsWithinWhatFloatDraws) {
   EXPECT_EQ(parseError(withSection("camera: {fov: 180}")).problem(),
-            "camera 'fov' must be in (0, 180) deg, got 180 deg");
-  EXPECT_EQ(parseError(withSection("camera: {fov: 0}")).problem(), "camera 'fov' must be in (0, 180) deg, got 0 deg");
-  EXPECT_DOUBLE_EQ(parse(withSection("camera: {fov: 179.9}")).camera.fov, 179.9);
+            "camera 'fov' must be in [0.001, 179] deg, got 180 deg");
+  EXPECT_EQ(parseError(withSection("camera: {fov: 0}")).problem(), "camera 'fov' must be in [0.001, 179] deg, got 0 deg");
+  EXPECT_EQ(parseError(withSection("camera: {fov: 1e-8}")).problem(),
+            "camera 'fov' must be in [0.001, 179] deg, got 1e-8 deg");
+  EXPECT_EQ(parseError(withSection("camera: {fov: 1e-320}")).problem(),
+            "camera 'fov' must be in [0.001, 179] deg, got 1e-320 deg");
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {fov: 179}")).camera.fov, 179.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {fov: 0.001}")).camera.fov, 0.001);
 }
 
 TEST_F(SceneTest, UnknownCameraKeySuggestsTheNearest) {
@@ -134,11 +140,14 @@ TEST_F(SceneTest, BodyNameAndRadius) {
   EXPECT_DOUBLE_EQ(body.radius, 1737400.0);
 }
 
-TEST_F(SceneTest, BodyRadiusMustBePositive) {
+// Issue 37, item 7: a body of 1e14 m was drawn speckled and of 1e20 m grey.
+TEST_F(SceneTest, BodyRadiusKeepsWithinWhatFloatDraws) {
   const Error error = parseError(withSection("body: {name: Moon, radius: -1}"));
-  EXPECT_EQ(error.problem(), "body 'radius' must be > 0 m, got -1 m");
+  EXPECT_EQ(error.problem(), "body 'radius' must be in [1, 1e+09] m, got -1 m");
   EXPECT_EQ(error.where().line, 2);
   EXPECT_EQ(error.where().column, 28);
+  EXPECT_EQ(parseError(withSection("body: {radius: 1e14}")).problem(), "body 'radius' must be in [1, 1e+09] m, got 1e14 m");
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Sun, radius: 6.957e8}")).body.radius, 6.957e8);
 }
 
 TEST_F(SceneTest, BodyRadiusThatIsNotANumber) {

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "camera_path/sphere_geodesics.hpp"
+#include "pipeline/camera_fields.hpp"
 #include "pipeline/interval.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
@@ -14,22 +15,10 @@ namespace {
 using loader::Interval;
 using loader::SourceMap;
 
-struct CameraField {
-  const char* name;
-  double Camera::*member;
-  Interval allowed;
-  const char* units;
-  bool required;  // where the camera is must be said; how it looks defaults to Camera's (north up, straight down)
-};
-
-const std::array<CameraField, 6> kCameraFields{{
-    {"lon", &Camera::lon, Interval::any(), "deg", true},
-    {"lat", &Camera::lat, Interval::closed(-90.0, 90.0), "deg", true},
-    {"altitude", &Camera::altitude, Interval::above(0.0), "m", true},
-    {"heading", &Camera::heading, Interval::any(), "deg", false},
-    {"tilt", &Camera::tilt, Interval::closed(0.0, 90.0), "deg", false},
-    {"fov", &Camera::fov, Interval::open(0.0, 180.0), "deg", false},
-}};
+// Where the camera is must be said; how it looks defaults to Camera's (north up, straight down).
+bool required(const loader::CameraField& field) {
+  return field.member == &Camera::lon || field.member == &Camera::lat || field.member == &Camera::altitude;
+}
 
 constexpr const char* kCameraExample = "{lon: 10, lat: 46, altitude: 5000}";
 
@@ -56,11 +45,11 @@ double readField(const YAML::Node& map, const char* key, const Interval& allowed
 Camera readCamera(const YAML::Node& map, const SourceMap& source, const std::string& what,
                   std::vector<std::string> extraKeys) {
   requireMap(map, source, what, kCameraExample);
-  for (const auto& field : kCameraFields) extraKeys.emplace_back(field.name);
+  for (const auto& field : loader::kCameraFields) extraKeys.emplace_back(field.name);
   loader::requireKnownKeys(map, extraKeys, source, what);
   Camera camera;
-  for (const auto& field : kCameraFields)
-    if (field.required || map[field.name])
+  for (const auto& field : loader::kCameraFields)
+    if (required(field) || map[field.name])
       camera.*field.member = readField(map, field.name, field.allowed, field.units, source, what);
   return camera;
 }

@@ -9,7 +9,7 @@
 namespace strata::loader {
 
 // The values a number may take: a bound on either side or none, each inclusive or exclusive. Declared
-// parameters have inclusive bounds; the camera needs exclusive ones (altitude > 0, fov in (0, 180)).
+// parameters have inclusive bounds; the camera needs exclusive ones (altitude > 0).
 struct Interval {
   std::optional<double> low;
   std::optional<double> high;
@@ -17,12 +17,11 @@ struct Interval {
   bool highExclusive = false;
 
   static Interval closed(std::optional<double> low, std::optional<double> high) { return {low, high, false, false}; }
-  static Interval open(double low, double high) { return {low, high, true, true}; }
   static Interval above(double low) { return {low, std::nullopt, true, false}; }
   static Interval any() { return {std::nullopt, std::nullopt, false, false}; }
 
   bool contains(double value) const;
-  // "[0, 90] deg", "(0, 180) deg", "> 0 m", "<= 1", "any value"
+  // "[0, 90] deg", "> 0 m", "<= 1", "any value"
   std::string str(const std::string& units) const;
 };
 

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "pipeline/camera_fields.hpp"
 #include "pipeline/interval.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
@@ -10,27 +11,15 @@
 namespace strata::loader {
 namespace {
 
-struct CameraField {
-  const char* name;
-  double Camera::*member;
-  Interval allowed;
-  const char* units;
-};
-
-const std::array<CameraField, 6> kCameraFields{{
-    {"lon", &Camera::lon, Interval::any(), "deg"},
-    {"lat", &Camera::lat, Interval::closed(-90.0, 90.0), "deg"},
-    {"altitude", &Camera::altitude, Interval::above(0.0), "m"},
-    {"heading", &Camera::heading, Interval::any(), "deg"},
-    {"tilt", &Camera::tilt, Interval::closed(0.0, 90.0), "deg"},
-    {"fov", &Camera::fov, Interval::open(0.0, 180.0), "deg"},
-}};
-
 std::vector<std::string> cameraKeys() {
   std::vector<std::string> keys;
   for (const auto& field : kCameraFields) keys.emplace_back(field.name);
   return keys;
 }
+
+// From a boulder to beyond the Sun (6.96e8 m). Far larger, heights and footprints the GPU takes in float
+// relative to the radius lose their digits: a body of 1e14 m was drawn speckled, of 1e20 m grey.
+const Interval kBodyRadius = Interval::closed(1.0, 1.0e9);
 
 // Longitudes name the same meridian modulo 360; one range keeps later arithmetic simple.
 double wrapLongitude(double lon) {
@@ -73,7 +62,7 @@ Body parseBody(const YAML::Node& map, const SourceMap& source) {
   if (const YAML::Node radius = map["radius"]) {
     const ValueContext context{source, "body 'radius'", {}};
     body.radius = readReal(radius, context);
-    requireWithin(body.radius, Interval::above(0.0), "m", radius, context);
+    requireWithin(body.radius, kBodyRadius, "m", radius, context);
   }
   return body;
 }

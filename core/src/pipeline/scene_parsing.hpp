@@ -20,7 +20,7 @@ Body parseBody(const YAML::Node& map, const SourceMap& source);
 // camera: {lon, lat, altitude, heading, tilt, fov}, all numbers:
 //   lon: degrees, any value, wrapped into [-180, 180)     lat: degrees in [-90, 90]
 //   altitude: metres above the body's radius, > 0        heading: degrees, any value, kept as given
-//   tilt: degrees in [0, 90] (0 looks straight down)      fov: vertical, degrees in (0, 180)
+//   tilt: degrees in [0, 90] (0 looks straight down)      fov: vertical, degrees in [0.001, 179]
 Camera parseCamera(const YAML::Node& map, const SourceMap& source);
 
 // cache: {budget, uploads_per_frame, loader_threads}, whole numbers (PageCacheSettings):
