@@ -48,7 +48,8 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_, nodeHeights());
+    if (!nodeHeights_) nodeHeights_ = nodeHeights();  // once the height layer has placed its texels
+    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_, *nodeHeights_);
     batch_ = batchNodes(selected, frame.view, radius_, settings_.gridCells);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
@@ -72,6 +73,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   HeightInput heights_;
   double radius_;
   SelectionSettings settings_;
+  std::optional<NodeHeights> nodeHeights_;  // made by the first prepare()
   NodeBatch batch_;
   ShaderProgram surface_;
   std::optional<NodeBuffers> buffers_;
@@ -80,15 +82,19 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   Framebuffer gbuffer_;
 };
 
-// The height layer's bounds over each node, where it knows them (a HEALPix pyramid's pages' true ranges).
+// The height layer's bounds over each node, where it knows them: a HEALPix pyramid's pages' true ranges, or
+// another raster's over the node's cone.
 NodeHeights HealpixGeometry::nodeHeights() const {
   const Layer* layer = heights_.layer();
-  if (!layer || layer->faceSamplingFunction().empty()) return {};
-  return [layer](const NodeKey& key) -> std::optional<HeightRange> {
-    const std::optional<ValueRange> values = layer->faceNodeValues(key.face, key.level, key.ix, key.iy);
-    if (!values) return std::nullopt;
-    return HeightRange{values->least, values->greatest};
-  };
+  if (!layer) return {};
+  if (!layer->faceSamplingFunction().empty())
+    return [layer](const NodeKey& key, const NodeCone&) -> std::optional<HeightRange> {
+      const std::optional<ValueRange> values = layer->faceNodeValues(key.face, key.level, key.ix, key.iy);
+      if (!values) return std::nullopt;
+      return HeightRange{values->least, values->greatest};
+    };
+  if (!heights_.boundsRegions()) return {};
+  return [this](const NodeKey&, const NodeCone& cone) -> std::optional<HeightRange> { return heights_.within(cone); };
 }
 
 // The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand

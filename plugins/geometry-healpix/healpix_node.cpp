@@ -77,10 +77,6 @@ FacePoint acrossEdge(const NodeKey& key, int edge) {
   return facePointOf(glm::normalize(2.0 * unitVector(middle) - inside));
 }
 
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b) {
-  return 2.0 * std::asin(std::min(1.0, 0.5 * glm::length(a - b)));
-}
-
 std::array<glm::dvec3, 8> boundarySamples(const NodeKey& key) {
   std::array<glm::dvec3, 8> samples;
   for (std::size_t c = 0; c < 4; ++c) {

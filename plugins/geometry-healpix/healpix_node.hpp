@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include <strata/healpix.hpp>
+#include <strata/spherical_cap.hpp>
 
 namespace strata::healpix {
 
@@ -51,22 +52,16 @@ NodeKey nodeAt(const FacePoint& point, int level);
 // level holds the point.
 FacePoint acrossEdge(const NodeKey& key, int edge);
 
-// A cone from the body's centre holding every direction of the node: its centre's unit vector and a half
-// angle kConeMargin times the largest angle from it to the node's corners and edge midpoints (the edges are
-// curves, so the farthest point may lie between those; node_selection_test checks the margin against dense
-// samples of whole faces down to deep nodes).
-struct NodeCone {
-  glm::dvec3 axis{0.0, 0.0, 1.0};
-  double halfAngle = 0.0;  // rad
-};
+// The node's cone from the body's centre: the cap holding every direction of the node, around its centre's unit
+// vector, kConeMargin times as wide as the largest angle from it to the node's corners and edge midpoints (the
+// edges are curves, so the farthest point may lie between those; node_selection_test checks the margin against
+// dense samples of whole faces down to deep nodes).
+using NodeCone = SphericalCap;
 constexpr double kConeMargin = 1.1;
 NodeCone coneOf(const NodeKey& key);
 // The unit vectors of the node's boundary samples: corner 0, the middle of edge 0, corner 1, ..., the middle
 // of edge 3; and the cone around `axis` they give.
 std::array<glm::dvec3, 8> boundarySamples(const NodeKey& key);
 NodeCone coneAround(const glm::dvec3& axis, const std::array<glm::dvec3, 8>& boundary);
-
-// The angle between two unit vectors, accurate for tiny angles too (2 asin of half the chord).
-double angleBetween(const glm::dvec3& a, const glm::dvec3& b);
 
 }  // namespace strata::healpix

@@ -19,7 +19,7 @@ double tangentAngle(double r, double d) { return std::atan2(std::sqrt((d - r) * 
 
 // The largest of dot(n, u) over the unit vectors u of the cone: the cosine of n's angle to the nearest of them.
 double largestDot(const NodeCone& cone, const glm::dvec3& n) {
-  return std::cos(std::max(0.0, angleBetween(cone.axis, n) - cone.halfAngle));
+  return std::cos(std::max(0.0, angleBetween(cone.centre, n) - cone.angle));
 }
 
 // The convex hull of points in the plane, counter-clockwise (Andrew's monotone chain).
@@ -97,19 +97,19 @@ NodeShell ShellView::shellOf(const NodeKey& key) const {
   NodeShell shell;
   const std::array<glm::dvec3, 8> boundary = boundarySamples(key);
   shell.cone = coneAround(unitVector(key.centre()), boundary);
-  const std::optional<HeightRange> known = nodeHeights_ ? nodeHeights_(key) : std::nullopt;
+  const std::optional<HeightRange> known = nodeHeights_ ? nodeHeights_(key, shell.cone) : std::nullopt;
   const HeightRange heights = known.value_or(heights_);
   const double innerRadius = radius_ + heights.lowest, outerRadius = radius_ + heights.highest;
   shell.innerRadius = innerRadius;
   shell.outerRadius = outerRadius;
-  const glm::dvec3& n = shell.cone.axis;
+  const glm::dvec3& n = shell.cone.centre;
   // Tangent axes along the node's x direction (south and west corners to east and north), so that the box
   // fits the node's sides rather than its diagonals.
   const glm::dvec3 along = boundary[2] - boundary[0] + boundary[4] - boundary[6];
   const glm::dvec3 t1 = glm::normalize(along - glm::dot(along, n) * n), t2 = glm::cross(n, t1);
   // Extents over the samples at both radii, widened by the cone's margin for the edges' bulge between them
   // and clipped to the cone, which holds the node with that margin.
-  const double angle = std::min(shell.cone.halfAngle, 0.5 * std::numbers::pi);
+  const double angle = std::min(shell.cone.angle, 0.5 * std::numbers::pi);
   const double sampledSine = std::sin(angle / kConeMargin), coneSine = std::sin(angle);
   const double widen = (kConeMargin - 1.0) * sampledSine * outerRadius, clip = coneSine * outerRadius;
   glm::dvec2 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
@@ -142,7 +142,7 @@ bool ShellView::culled(const NodeShell& shell) const {
   const double distance = glm::length(eye_), lowest = radius_ + heights_.lowest;
   if (distance <= lowest) return false;
   const double horizon = tangentAngle(lowest, distance) + tangentAngle(lowest, std::max(shell.outerRadius, lowest));
-  return angleBetween(shell.cone.axis, eye_ / distance) - shell.cone.halfAngle > horizon;
+  return angleBetween(shell.cone.centre, eye_ / distance) - shell.cone.angle > horizon;
 }
 
 double ShellView::boxArea(const NodeShell& shell) const {
@@ -160,7 +160,7 @@ double ShellView::faceOnArea(const NodeShell& shell, const NodeKey& key) const {
   // The nearest point of the cone's shell: at the cone's nearest direction, at the radius nearest the eye;
   // its squared distance as (d - r)^2 + 4 d r sin^2(psi / 2), which keeps its digits 1 m above the ground.
   const double d = glm::length(eye_);
-  const double psi = std::max(0.0, angleBetween(shell.cone.axis, eye_ / d) - shell.cone.halfAngle);
+  const double psi = std::max(0.0, angleBetween(shell.cone.centre, eye_ / d) - shell.cone.angle);
   const double r = std::clamp(d * std::cos(psi), shell.innerRadius, shell.outerRadius), s = std::sin(0.5 * psi);
   const double nearest = (d - r) * (d - r) + 4.0 * d * r * s * s;
   const double area = std::numbers::pi * shell.outerRadius * shell.outerRadius / (3.0 * std::ldexp(1.0, 2 * key.level));

@@ -42,10 +42,10 @@ struct NodeShell {
   std::array<glm::dvec3, 8> box;                // corners, m
 };
 
-// The heights over one node where they are known more closely than the body's range (a HEALPix pyramid's
-// pages' true ranges, Layer::faceNodeValues; the paper's per-node boxes, digest 004 section 2); empty: the
-// body's range.
-using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&)>;
+// The heights over one node, of the cone given, where they are known more closely than the body's range (a
+// HEALPix pyramid's pages' true ranges, Layer::faceNodeValues, or another raster's over the cone,
+// Layer::valuesWithin; the paper's per-node boxes, digest 004 section 2); empty: the body's range.
+using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&, const NodeCone&)>;
 
 // One view's tests of node shells. Culling is exact for the cone's shell, so never removes what the cone
 // holds; the area is the paper's, the projection of a bounding box (digest 004 section 2).

@@ -14,6 +14,7 @@
 #include <strata/height_input.hpp>
 #include <strata/layer.hpp>
 #include <strata/plugin.hpp>
+#include <strata/spherical_cap.hpp>
 
 #include "patch_buffers.hpp"
 
@@ -30,8 +31,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
         treeSettings_{.patches = int(setup.parameters.integer("patches")),
                       .operationsPerFrame = int(setup.parameters.integer("operations"))} {}
 
-  // The height layer has opened: the patches' shells take the heights it holds.
-  void open() override { tree_.emplace(radius_, heights_.open(), treeSettings_); }
+  void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
@@ -47,6 +47,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
+    if (!tree_) plantTree();
     const std::array<ViewVolume, 1> views{ViewVolume(frame.view)};
     if (frame.index == 0 || frame.still)
       tree_->settle(views);  // a still image, or the first of many, is drawn from a settled tree
@@ -54,6 +55,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
       tree_->update(views);
     batch_ = batchPatches(tree_->visiblePatches(), frame.view, radius_, tree_->splitDistanceAtLevelZero(), table_,
                           windings_);
+    batch_.onTerrain = tree_->measuresOnTerrain();
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
@@ -72,13 +74,14 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
 
  private:
   void clear();
+  void plantTree();
 
   HeightInput heights_;
   double radius_;
   SubdivisionTable table_;
   EdgeWindings windings_;
   PatchTreeSettings treeSettings_;
-  std::optional<PatchTree> tree_;  // made in open(), once the heights are known
+  std::optional<PatchTree> tree_;  // made by the first prepare(), once the height layer has placed its texels
   PatchBatch batch_;
   ShaderProgram subdivision_;
   ShaderProgram surface_;
@@ -88,6 +91,14 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   double visibilityMs_ = 0.0;
   Framebuffer gbuffer_;
 };
+
+// The patches' shells take the heights the layer holds, each patch its own where the layer knows them.
+void IcosahedralGeometry::plantTree() {
+  PatchHeights patchHeights;
+  if (heights_.boundsRegions())
+    patchHeights = [this](const SphericalTriangle& corners) { return heights_.within(capAround(corners)); };
+  tree_.emplace(radius_, heights_.range(), treeSettings_, std::move(patchHeights));
+}
 
 void IcosahedralGeometry::clear() {
   const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far

@@ -31,6 +31,9 @@ struct PatchBatch {
   // vertex alone it gives a vertex shared by two patches the same height footprint in both, so that the
   // displaced surface stays closed where their levels differ.
   double footprintPerMetre = 0.0;
+  // Whether vertices measure their face-on distances at their displaced points, as the tree measures to each
+  // patch's own shell (PatchTree::measuresOnTerrain), or on the sphere.
+  bool onTerrain = false;
   std::vector<SeedCorner> seeds;
   std::vector<DrawElementsIndirectCommand> draws;
 };

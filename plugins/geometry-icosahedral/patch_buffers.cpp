@@ -106,6 +106,7 @@ void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int d
   program.set("footprintPerMetre", float(batch.footprintPerMetre));
   program.set("splitDistanceAtLevelZero", float(batch.splitDistanceAtLevelZero));
   program.set("grazingCosine", float(kGrazingCosine));
+  program.set("onTerrain", int(batch.onTerrain));
 }
 
 }  // namespace strata::icosahedral

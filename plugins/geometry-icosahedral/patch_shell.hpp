@@ -37,9 +37,10 @@ bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occlude
 // compute pass computes it per vertex (subdivide_patches.comp).
 constexpr double kGrazingCosine = 1.0 / 16.0;  // at the horizon a patch counts as 4 times as far: seen edge on
                                                // it still needs some detail for its silhouette
-// The least face-on distance of any point of the spherical triangle: a bound from below, from the
-// nearest distance (exact, by the support function: the nearest point is the one of largest dot with the
-// eye's direction) and the largest cosine any point can have.
-double leastFaceOnDistance(const SphericalTriangle& corners, double radius, const glm::dvec3& eye);
+// The least face-on distance of any point of the shell, its cosine taken to the sphere's normal below it as
+// the compute pass takes a displaced vertex's: a bound from below, from the nearest distance (exact: the
+// nearest point lies in the direction of largest dot with the eye's, found by the support function, at the
+// radius nearest the eye's projection on it) and the largest cosine any point can have.
+double leastFaceOnDistance(const PatchShell& shell, const glm::dvec3& eye);
 
 }  // namespace strata::icosahedral

@@ -1,8 +1,11 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
+
+#include <strata/body.hpp>
 
 #include "icosahedron.hpp"
 
@@ -17,6 +20,7 @@ struct PatchNode {
   bool alive = false;
   bool visible = false;      // set by the tree's visibility test
   double distance = 0.0;     // m: the least face-on distance (patch_shell.hpp) from an eye that sees it
+  std::optional<HeightRange> heights;  // the terrain's within it, once the tree asked (PatchHeights)
   bool leaf() const { return children[0] < 0; }
 };
 

@@ -15,8 +15,8 @@ constexpr double kRestingShare = 0.8;    // the count may fall to this share of 
 
 }  // namespace
 
-PatchTree::PatchTree(double radius, HeightRange heights, PatchTreeSettings settings)
-    : radius_(radius), heights_(heights), settings_(settings) {}
+PatchTree::PatchTree(double radius, HeightRange heights, PatchTreeSettings settings, PatchHeights patchHeights)
+    : radius_(radius), heights_(heights), settings_(settings), patchHeights_(std::move(patchHeights)) {}
 
 int PatchTree::update(std::span<const ViewVolume> views, int operations) {
   views_ = views;
@@ -76,20 +76,26 @@ double PatchTree::splitDistance(int level, double detail) const {
   return std::ldexp(detail * radius_ * kFaceEdgeAngle, -level);
 }
 
-PatchShell PatchTree::shellOf(std::int32_t id) const {
-  return {topology_.cornersOf(id), radius_ + heights_.lowest, radius_ + heights_.highest};
+PatchShell PatchTree::shellOf(std::int32_t id) {
+  const SphericalTriangle corners = topology_.cornersOf(id);
+  std::optional<HeightRange>& heights = topology_[id].heights;
+  if (!heights) heights = patchHeights_ ? patchHeights_(corners) : heights_;
+  return {corners, radius_ + heights->lowest, radius_ + heights->highest};
 }
 
 // A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. Its
-// distance is the least face-on distance of the patch on the body's sphere, as the compute pass measures
-// its vertices' (per-patch height ranges would place it nearer the terrain).
+// distance is the least face-on distance of any point of the shell, which bounds from below that of every
+// vertex the compute pass displaces into it: so a split brings its vertices in at their parents' midpoints.
+// Without each patch's heights, both measure on the sphere: an eye inside the whole terrain's range would
+// lie at no distance from every shell near it, and the tree would split beneath it to the deepest level.
 std::optional<double> PatchTree::viewedDistance(const PatchShell& shell) const {
   const double occluder = radius_ + heights_.lowest;
   std::optional<double> distance;
   for (const ViewVolume& view : views_)
     if (!belowHorizon(shell, view.eye(), occluder) && view.mayHold(shell))
       distance = std::min(distance.value_or(std::numeric_limits<double>::infinity()),
-                          leastFaceOnDistance(shell.corners, radius_, view.eye()));
+                          leastFaceOnDistance(measuresOnTerrain() ? shell : PatchShell{shell.corners, radius_, radius_},
+                                              view.eye()));
   return distance;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -16,6 +17,9 @@ struct PatchTreeSettings {
   int operationsPerFrame = 64;  // splits and merges one frame may make: bounds the CPU's share of it
 };
 
+// The heights of the terrain within a patch (HeightInput::within), asked once per patch.
+using PatchHeights = std::function<HeightRange(const SphericalTriangle& corners)>;
+
 // A visible leaf, as the geometry generation takes it (seed 000 section 3.2.4).
 struct Patch {
   SphericalTriangle corners;
@@ -25,7 +29,8 @@ struct Patch {
 
 // The frame-coherent patch tree of seed 000 section 3.2.1, computed once for all views: the faces of
 // the icosahedron split 1-to-4. A visible patch is split while its face-on distance from an eye
-// (patch_shell.hpp) is below its level's split distance, the detail scale times the level's nominal
+// (patch_shell.hpp: the least over the patch's shell, between its own lowest and highest heights, where
+// they are known; else on the sphere) is below its level's split distance, the detail scale times the level's nominal
 // size, and four siblings are merged when their parent would not be split: the largest patches in solid
 // angle split first, as in seed 000, but by a threshold on a measure each vertex also has, which is what
 // geomorphing needs (docs/geometry.md; the split distances are CDLOD's, Strugar 2009, on the sphere).
@@ -35,7 +40,9 @@ struct Patch {
 // break the rule is not made (digest 000 section 2.1).
 class PatchTree {
  public:
-  PatchTree(double radius, HeightRange heights, PatchTreeSettings settings = {});
+  // `heights`: the whole terrain's, below which the body hides what lies behind; `patchHeights`: each patch's
+  // own, within them (none: every patch takes `heights`).
+  PatchTree(double radius, HeightRange heights, PatchTreeSettings settings = {}, PatchHeights patchHeights = {});
 
   // Reclassifies the leaves for the views, merges and splits at most `operations` times, and, when that
   // was enough to follow the views, moves the detail scale a step toward `patches` visible patches.
@@ -50,6 +57,9 @@ class PatchTree {
   std::vector<Patch> visiblePatches() const;
   int visibleCount() const { return visibleCount_; }
   const PatchTopology& topology() const { return topology_; }
+  // Whether distances are measured to each patch's own shell, which the compute pass must then match by
+  // measuring its vertices' displaced points (PatchBatch::onTerrain); else both measure on the sphere.
+  bool measuresOnTerrain() const { return bool(patchHeights_); }
 
   // A patch of `level` is split while its face-on distance from an eye is below this, m.
   double splitDistance(int level) const;
@@ -66,7 +76,7 @@ class PatchTree {
   static constexpr double kLeastDetail = 1.0, kMostDetail = 64.0;
 
  private:
-  PatchShell shellOf(std::int32_t id) const;
+  PatchShell shellOf(std::int32_t id);
   std::optional<double> viewedDistance(const PatchShell& shell) const;
   void classify(std::int32_t id);
   int refine(int operations);
@@ -83,6 +93,7 @@ class PatchTree {
   double radius_;
   HeightRange heights_;
   PatchTreeSettings settings_;
+  PatchHeights patchHeights_;
   PatchTopology topology_;
   std::span<const ViewVolume> views_;  // during update() only
   int visibleCount_ = 0;

@@ -39,9 +39,7 @@ class GdalSource : public Node {
     std::unique_ptr<GDALDataset> dataset = openDataset(where);
     checkRaster(*dataset, kind_, where);
     std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where);
-    if (kind_ != LayerKind::Color)
-      if (const std::optional<ValueRange> raw = exactRawRange(*dataset, healpix ? healpix->ranges.get() : nullptr))
-        layer_.setRawRange(*raw);
+    if (kind_ != LayerKind::Color) countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
     if (kind_ == LayerKind::Height) refuseHeightsNoTerrainHas(where);
     if (healpix) {
       refusePlacement("a HEALPix pyramid");
@@ -104,6 +102,17 @@ class GdalSource : public Node {
                  int(parameters_.integer("texels")), !parameters_.string("projection").empty(), where});
     polygonMask_ = std::move(mask.file);
     return std::move(mask.raster);
+  }
+
+  // The range of a one-channel raster's values, and a height raster's block by block, which patches of
+  // terrain take their own heights from (Layer::valuesWithin); a HEALPix pyramid's stored page ranges need
+  // no reading.
+  void countValues(GDALDataset& dataset, const healpix::PageRanges* pageRanges) {
+    const std::shared_ptr<BlockRanges> blocks =
+        kind_ == LayerKind::Height && !pageRanges ? countBlockRanges(dataset) : nullptr;
+    const std::optional<ValueRange> raw = blocks ? exactRawRange(dataset, *blocks) : exactRawRange(dataset, pageRanges);
+    if (raw) layer_.setRawRange(*raw);
+    layer_.setBlockRanges(blocks);
   }
 
   // A file that places itself (a HEALPix pyramid) takes no `projection` or `extent`.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "quiet_gdal_errors.hpp"
@@ -19,10 +20,13 @@ bool finite(const ValueRange& range) { return std::isfinite(range.least) && std:
 // Rows read at a time: a band of a 4096-wide raster is 4 MiB of floats.
 constexpr int kRowsAtATime = 256;
 
-// Widens `range` by the finite values of the window [column, column + columns) x [row, row + rows) that the
-// mask lets through. A window that cannot be read is read again block by block (the file's tiles or strips),
-// so that only the blocks that cannot be read widen nothing.
-void widenByWindow(GDALRasterBand& band, int column, int row, int columns, int rows, std::optional<ValueRange>& range) {
+// A texel that can be drawn, at (column, row) of level 0.
+using DrawnTexel = std::function<void(int column, int row, double value)>;
+
+// Visits the finite values of the window [column, column + columns) x [row, row + rows) that the mask lets
+// through. A window that cannot be read is read again block by block (the file's tiles or strips), so that
+// only the blocks that cannot be read are left out.
+void visitWindow(GDALRasterBand& band, int column, int row, int columns, int rows, const DrawnTexel& visit) {
   std::vector<float> values(std::size_t(columns) * std::size_t(rows));
   std::vector<GByte> valid(values.size());
   if (band.RasterIO(GF_Read, column, row, columns, rows, values.data(), columns, rows, GDT_Float32, 0, 0) != CE_None ||
@@ -33,25 +37,30 @@ void widenByWindow(GDALRasterBand& band, int column, int row, int columns, int r
     if (columns <= blockColumns && rows <= blockRows) return;
     for (int y = row; y < row + rows; y = (y / blockRows + 1) * blockRows)
       for (int x = column; x < column + columns; x = (x / blockColumns + 1) * blockColumns)
-        widenByWindow(band, x, y, std::min((x / blockColumns + 1) * blockColumns, column + columns) - x,
-                      std::min((y / blockRows + 1) * blockRows, row + rows) - y, range);
+        visitWindow(band, x, y, std::min((x / blockColumns + 1) * blockColumns, column + columns) - x,
+                    std::min((y / blockRows + 1) * blockRows, row + rows) - y, visit);
     return;
   }
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!valid[i] || !std::isfinite(values[i])) continue;
-    const double value = values[i];
-    range = range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
-  }
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (valid[i] && std::isfinite(values[i]))
+      visit(column + int(i % std::size_t(columns)), row + int(i / std::size_t(columns)), values[i]);
 }
 
-// The extremes of the finite values the mask lets through, band of rows by band of rows: GDAL's own count
-// takes in infinities, which pages mask as they mask NaN (raster_reading.cpp), and gives up on a file of which
-// some part cannot be read. Those parts are drawn as no data, the sphere, so they bound nothing either. A
-// raster of which nothing is drawn returns no value, which any range bounds: {0, 0}.
+// Every texel of band 1 that can be drawn, band of rows by band of rows.
+void visitDrawnTexels(GDALRasterBand& band, const DrawnTexel& visit) {
+  for (int row = 0; row < band.GetYSize(); row += kRowsAtATime)
+    visitWindow(band, 0, row, band.GetXSize(), std::min(kRowsAtATime, band.GetYSize() - row), visit);
+}
+
+// The extremes of the finite values the mask lets through: GDAL's own count takes in infinities, which pages
+// mask as they mask NaN (raster_reading.cpp), and gives up on a file of which some part cannot be read. Those
+// parts are drawn as no data, the sphere, so they bound nothing either. A raster of which nothing is drawn
+// returns no value, which any range bounds: {0, 0}.
 ValueRange drawnRange(GDALRasterBand& band) {
   std::optional<ValueRange> range;
-  for (int row = 0; row < band.GetYSize(); row += kRowsAtATime)
-    widenByWindow(band, 0, row, band.GetXSize(), std::min(kRowsAtATime, band.GetYSize() - row), range);
+  visitDrawnTexels(band, [&](int, int, double value) {
+    range = range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
+  });
   return range.value_or(ValueRange{0.0, 0.0});
 }
 
@@ -62,18 +71,41 @@ ValueRange countedRange(GDALRasterBand& band) {
   return finite(range) ? range : drawnRange(band);
 }
 
-}  // namespace
+bool countable(GDALDataset& dataset) {
+  return double(dataset.GetRasterXSize()) * dataset.GetRasterYSize() <= kCountableTexels;
+}
 
-std::optional<ValueRange> exactRawRange(GDALDataset& dataset) {
-  GDALRasterBand& band = *dataset.GetRasterBand(1);
+// The file's own statistics, where they are exact.
+std::optional<ValueRange> exactStatistics(GDALRasterBand& band) {
   const char* approximate = band.GetMetadataItem("STATISTICS_APPROXIMATE");
   int hasLeast = 0, hasGreatest = 0;
   const double least = band.GetMinimum(&hasLeast), greatest = band.GetMaximum(&hasGreatest);
   if (hasLeast && hasGreatest && !(approximate && CPLTestBool(approximate)) && finite({least, greatest}))
     return ValueRange{least, greatest};
-  if (double(dataset.GetRasterXSize()) * dataset.GetRasterYSize() > kCountableTexels) return std::nullopt;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<ValueRange> exactRawRange(GDALDataset& dataset) {
+  GDALRasterBand& band = *dataset.GetRasterBand(1);
+  if (const std::optional<ValueRange> statistics = exactStatistics(band)) return statistics;
+  if (!countable(dataset)) return std::nullopt;
   const QuietGdalErrors quiet;  // a file that cannot be read whole is reported page by page when drawn
   return countedRange(band);
+}
+
+std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges& blocks) {
+  if (const std::optional<ValueRange> statistics = exactStatistics(*dataset.GetRasterBand(1))) return statistics;
+  return blocks.whole().value_or(ValueRange{0.0, 0.0});
+}
+
+std::shared_ptr<BlockRanges> countBlockRanges(GDALDataset& dataset) {
+  if (!countable(dataset)) return nullptr;
+  auto blocks = std::make_shared<BlockRanges>(dataset.GetRasterXSize(), dataset.GetRasterYSize());
+  const QuietGdalErrors quiet;  // as exactRawRange()
+  visitDrawnTexels(*dataset.GetRasterBand(1), [&](int column, int row, double value) { blocks->count(column, row, value); });
+  return blocks;
 }
 
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const healpix::PageRanges* ranges) {

@@ -1,8 +1,10 @@
 #pragma once
+#include <memory>
 #include <optional>
 
 #include <gdal_priv.h>
 
+#include <strata/block_ranges.hpp>
 #include <strata/healpix_pyramid.hpp>
 #include <strata/layer.hpp>
 
@@ -13,6 +15,11 @@ namespace strata::gdal {
 // count over a raster small enough to read whole quickly. None for a large raster without them (GDAL's
 // approximate statistics come from averaged overviews and miss the extremes).
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset);
+// The same from the blocks countBlockRanges() counted, where the file holds no exact statistics.
+std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges& blocks);
+// The ranges of band 1's blocks, by the same rules, for a raster small enough to read whole quickly; null
+// for a larger one.
+std::shared_ptr<BlockRanges> countBlockRanges(GDALDataset& dataset);
 // The same for a HEALPix pyramid from the true page ranges `strata tile` stored in it (`ranges`, or null where
 // it stored none), which need no reading.
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const healpix::PageRanges* ranges);

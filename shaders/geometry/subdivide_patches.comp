@@ -33,6 +33,7 @@ uniform float radius;            // m, only to turn height differences into slop
 uniform float footprintPerMetre;  // rad between vertices per metre of face-on distance (patch_batch.hpp)
 uniform float splitDistanceAtLevelZero;  // m: a patch of level L splits nearer than this halved L times
 uniform float grazingCosine;  // the least cosine a face-on distance counts (patch_shell.hpp's kGrazingCosine)
+uniform bool onTerrain;       // face-on distances at the displaced points, else on the sphere (PatchBatch::onTerrain)
 
 // The share of a split distance over which a vertex morphs: from its parents' midpoint where its level's
 // split distance lies at the vertex to its own point a third nearer. A vertex of a patch's finest level
@@ -89,6 +90,9 @@ float morphOf(int globalLevel, float faceOn) {
 }
 
 // Displaces vertex v by the height layer: its own surface point, longitude and latitude, and shading normal.
+// On terrain the heights are filtered over the vertex spacing at the displaced point's face-on distance,
+// found from a first height filtered at the sphere's: 2 m above a plateau 3 km high the sphere's would filter
+// the heights as seen from 3 km.
 void displace(uint v) {
   vec3 position = positions[v].xyz, n = normals[v].xyz;
   vec2 lonlat = lonlats[v].xy;
@@ -96,6 +100,7 @@ void displace(uint v) {
   vec3 shading = n;
 #ifdef STRATA_HAS_HEIGHT
   float spacing = footprintPerMetre * faceOnDistance(position, n);
+  if (onTerrain) spacing = footprintPerMetre * faceOnDistance(position + heightAt(lonlat, n, spacing) * n, n);
   h = heightAt(lonlat, n, spacing);
   shading = shadingNormal(h, lonlat, n, spacing);
 #endif
@@ -105,9 +110,12 @@ void displace(uint v) {
 }
 
 // Morphs displaced vertex v, of `globalLevel`, from the midpoint of its parents' drawn points toward its
-// own: drawn = mix(midpoint, own, m), and its longitude, latitude and shading normal alike.
+// own: drawn = mix(midpoint, own, m), and its longitude, latitude and shading normal alike. The morph follows
+// the vertex's face-on distance where the patch tree measures it (at its displaced point on terrain, which
+// the tree's distance to the patch's shell bounds from below: patch_shell.hpp), so that a split brings a
+// vertex in at morph 0.
 void morph(uint v, uint j, uint k, int globalLevel) {
-  float m = morphOf(globalLevel, faceOnDistance(positions[v].xyz, normals[v].xyz));
+  float m = morphOf(globalLevel, faceOnDistance(onTerrain ? surface[v].xyz : positions[v].xyz, normals[v].xyz));
   surface[v].w = m;
   if (m == 1.0) return;
   surface[v].xyz = mix(0.5 * (surface[j].xyz + surface[k].xyz), surface[v].xyz, m);

@@ -48,9 +48,9 @@ TEST(HealpixNode, ConeHoldsTheNode) {
   for (const NodeKey& key : probeNodes()) {
     const NodeCone cone = coneOf(key);
     for (const glm::dvec3& u : denseSamples(key)) {
-      const double angle = angleBetween(cone.axis, u);
-      tightest = std::min(tightest, 1.0 - angle / cone.halfAngle);
-      ASSERT_LE(angle, cone.halfAngle) << "face " << key.face << " level " << key.level;
+      const double angle = angleBetween(cone.centre, u);
+      tightest = std::min(tightest, 1.0 - angle / cone.angle);
+      ASSERT_LE(angle, cone.angle) << "face " << key.face << " level " << key.level;
     }
   }
   std::printf("cone: least margin left %.3f of the half angle\n", tightest);

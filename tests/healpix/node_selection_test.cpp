@@ -74,11 +74,11 @@ TEST(NodeSelection, PerNodeHeightsRefineOnlyWhatTheViewNeeds) {
   const HeightRange global{-240000.0, 240000.0}, local{-2000.0, 2000.0};
   const View view = makeView(Body{"Earth", kEarthRadius}, {20.0, 30.0, 5000.0, 60.0, 70.0, 45.0}, kWidth, kHeight);
   const std::vector<SelectedNode> coarse = selectNodes(view, kEarthRadius, global, {});
-  const NodeHeights known = [&](const NodeKey&) -> std::optional<HeightRange> { return local; };
+  const NodeHeights known = [&](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> { return local; };
   const std::vector<SelectedNode> fine = selectNodes(view, kEarthRadius, global, {}, known);
   std::printf("5 km up, heights +-240 km: %zu nodes; known to lie within +-2 km: %zu nodes\n", coarse.size(), fine.size());
   EXPECT_LT(fine.size() * 4, coarse.size());
-  const NodeHeights unknown = [](const NodeKey&) -> std::optional<HeightRange> { return std::nullopt; };
+  const NodeHeights unknown = [](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> { return std::nullopt; };
   EXPECT_EQ(selectNodes(view, kEarthRadius, global, {}, unknown).size(), coarse.size());
   int seen = 0;
   for (int i = 0; i < 97; ++i)

@@ -3,7 +3,9 @@
 // an eye descending in steps of a thousandth of its height; every drawn vertex must move, between steps,
 // by a small share of its distance, where a vertex that popped from its parents' midpoint to its own point
 // would jump by its share of the relief. And a patch whose split is just being made draws its finest
-// vertices at their parents' midpoints, so that the split itself changes nothing on screen.
+// vertices at their parents' midpoints, so that the split itself changes nothing on screen. Both hold
+// whether the tree and the vertices measure on the sphere or, where each patch's heights are known, on the
+// terrain (the tree to each patch's shell, the vertices at their displaced points).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,11 +32,23 @@ vec4 testTerrain(SurfacePoint p) {
 }
 )";
 
-// The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
-std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
-                                  double splitDistanceAtLevelZero) {
+// Measured on the terrain (true) or on the sphere.
+class Geomorphing : public ::testing::TestWithParam<bool> {
+ protected:
+  // The tree, told each patch's heights on the terrain: here the relief's whole range, which bounds them.
+  PatchTree tree() const {
+    if (!GetParam()) return PatchTree(kEarth, {-kRelief, kRelief});
+    return PatchTree(kEarth, {-kRelief, kRelief}, {}, [](const SphericalTriangle&) { return HeightRange{-kRelief, kRelief}; });
+  }
+  // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
+  std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
+                                      double splitDistanceAtLevelZero) const;
+};
+
+std::vector<glm::dvec4> Geomorphing::drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches,
+                                                 const View& view, double splitDistanceAtLevelZero) const {
   std::vector<glm::dvec4> points;
-  for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceAtLevelZero).vertices)
+  for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceAtLevelZero, GetParam()).vertices)
     points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
   return points;
 }
@@ -46,9 +60,9 @@ View viewFrom(double altitude) {
 // The largest move of a drawn vertex between steps, over its distance from the eye, must stay under 2e-5:
 // a thirtieth of a pixel of a 1280-pixel, 45-degree view (6e-4 rad), where vertices drawn without
 // morphing (a morph band of 1e-6) jumped by up to 4.7e-4, most of a pixel, at every step.
-TEST(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
+TEST_P(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
   test::GpuPatches gpu("testTerrain", kTerrain);
-  PatchTree tree(kEarth, {-kRelief, kRelief});
+  PatchTree tree = this->tree();
   const std::vector<ViewVolume> views{ViewVolume(viewFrom(3e4))};
   tree.settle(views);
   const std::vector<Patch> patches = tree.visiblePatches();
@@ -71,9 +85,9 @@ TEST(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
 
 // The four children of every visible leaf: a leaf lies at or beyond its split distance, so the children's
 // finest vertices, which its split would bring in, must be drawn fully at their parents' midpoint.
-TEST(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
+TEST_P(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
   test::GpuPatches gpu("testTerrain", kTerrain);
-  PatchTree tree(kEarth, {-kRelief, kRelief});
+  PatchTree tree = this->tree();
   const View view = viewFrom(3e4);
   const std::vector<ViewVolume> views{ViewVolume(view)};
   tree.settle(views);
@@ -94,6 +108,9 @@ TEST(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
   EXPECT_GT(children.size(), 400u);
   EXPECT_LT(largestMorph, 1e-6);
 }
+
+INSTANTIATE_TEST_SUITE_P(MeasuredOn, Geomorphing, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& measured) { return measured.param ? "Terrain" : "Sphere"; });
 
 }  // namespace
 }  // namespace strata::icosahedral

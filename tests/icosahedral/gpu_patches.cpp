@@ -17,8 +17,9 @@ GpuPatches::GpuPatches(const std::string& heightFunction, const std::string& hei
 }
 
 GpuPatches::Subdivided GpuPatches::subdivide(const std::vector<Patch>& patches, const View& view,
-                                             double splitDistanceAtLevelZero) {
+                                             double splitDistanceAtLevelZero, bool onTerrain) {
   Subdivided result{batchPatches(patches, view, kRadius, splitDistanceAtLevelZero, table_, windings_), {}};
+  result.batch.onTerrain = onTerrain;
   buffers_.upload(result.batch);
   useSubdivision(program_, result.batch, kDepth, kRadius);
   buffers_.subdivide();

@@ -25,7 +25,9 @@ class GpuPatches {
     PatchBatch batch;
     std::vector<PatchBuffers::Vertex> vertices;  // kDepth's vertices of each patch in turn
   };
-  Subdivided subdivide(const std::vector<Patch>& patches, const View& view, double splitDistanceAtLevelZero);
+  // `onTerrain`: vertices measure their distances at their displaced points (PatchBatch::onTerrain).
+  Subdivided subdivide(const std::vector<Patch>& patches, const View& view, double splitDistanceAtLevelZero,
+                       bool onTerrain = false);
   const SubdivisionTable& table() const { return table_; }
 
  private:

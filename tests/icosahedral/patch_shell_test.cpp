@@ -68,7 +68,7 @@ double faceOnDistance(const glm::dvec3& unit, double radius, const glm::dvec3& e
 // octant: the sampled nearest distance may lie up to about 0.02 above the true one).
 TEST(PatchShell, TheLeastFaceOnDistanceBoundsEveryPointOfThePatch) {
   const SphericalTriangle octant{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-  EXPECT_NEAR(leastFaceOnDistance(octant, kEarth, glm::normalize(glm::dvec3(1, 1, 1)) * (kEarth + 1.0)), 1.0, 1e-6);
+  EXPECT_NEAR(leastFaceOnDistance({octant, kEarth, kEarth}, glm::normalize(glm::dvec3(1, 1, 1)) * (kEarth + 1.0)), 1.0, 1e-6);
   for (const glm::dvec3& eye : {glm::dvec3(-1, 1, 1) * 2.0, glm::dvec3(3, -1, 0.5), glm::dvec3(0.2, 0.3, 1.05)}) {
     double nearest = 1e300, leastFaceOn = 1e300;
     for (double a = 0.0; a <= 1.0; a += 1.0 / 64.0)
@@ -77,7 +77,7 @@ TEST(PatchShell, TheLeastFaceOnDistanceBoundsEveryPointOfThePatch) {
         nearest = std::min(nearest, glm::length(eye - unit));
         leastFaceOn = std::min(leastFaceOn, faceOnDistance(unit, 1.0, eye));
       }
-    const double bound = leastFaceOnDistance(octant, 1.0, eye);
+    const double bound = leastFaceOnDistance({octant, 1.0, 1.0}, eye);
     EXPECT_GE(bound, nearest - 0.02) << "eye " << eye.x << ", " << eye.y << ", " << eye.z;
     EXPECT_LE(bound, leastFaceOn) << "eye " << eye.x << ", " << eye.y << ", " << eye.z;
   }

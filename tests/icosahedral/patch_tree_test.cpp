@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include <strata/body.hpp>
@@ -72,7 +73,7 @@ TEST(PatchTree, PatchesNearerThanTheirSplitDistanceAreSplit) {
   EXPECT_DOUBLE_EQ(tree.splitDistance(3), tree.splitDistanceAtLevelZero() / 8.0);
   for (const Patch& patch : tree.visiblePatches()) {
     if (patch.level == PatchTree::kDeepestLevel) continue;
-    EXPECT_GE(leastFaceOnDistance(patch.corners, kEarth, view.eye), tree.splitDistance(patch.level))
+    EXPECT_GE(leastFaceOnDistance({patch.corners, kEarth, kEarth}, view.eye), tree.splitDistance(patch.level))
         << "a visible leaf of level " << patch.level << " is near enough to be split";
   }
 }
@@ -138,6 +139,40 @@ TEST(PatchTree, NeighboursDifferByAtMostOneLevelFromTheGround) {
   int deepest = 0;
   for (const Patch& patch : tree.visiblePatches()) deepest = std::max(deepest, patch.level);
   EXPECT_GE(deepest, 20) << "2 m up, the patch below the eye should be a few metres across";
+}
+
+// Each patch measured on its own heights (CDLOD's bounding boxes, Strugar 2009, as spherical shells): 2 m
+// above a plateau 3 km high, in terrain that reaches from 0 to 5 km elsewhere, the tree splits as it would 2 m
+// above the bare sphere. Without them it measures on the sphere and splits as for a view from 3 km.
+TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
+  const Camera overSphere{.lon = 137.4, .lat = -4.6, .altitude = 2.0, .tilt = 60};
+  Camera overPlateau = overSphere;
+  overPlateau.altitude = 3002.0;
+  const HeightRange terrain{0.0, 5000.0};
+  const glm::dvec3 below = glm::normalize(viewFrom(overSphere).eye);
+  // The plateau: everything within 20 km of the point below the eye.
+  const PatchHeights plateau = [&](const SphericalTriangle& corners) {
+    for (const glm::dvec3& corner : corners)
+      if (std::acos(std::min(glm::dot(corner, below), 1.0)) * kEarth > 20e3) return terrain;
+    return HeightRange{3000.0, 3000.0};
+  };
+  const auto deepest = [](const PatchTree& tree) {
+    int level = 0;
+    for (const Patch& patch : tree.visiblePatches()) level = std::max(level, patch.level);
+    return level;
+  };
+  PatchTree bare(kEarth, {0.0, 0.0});
+  settle(bare, std::vector<ViewVolume>{ViewVolume(viewFrom(overSphere))});
+  const std::vector<ViewVolume> plateauViews{ViewVolume(makeView(Body{"Earth", kEarth}, overPlateau, 1280, 720, terrain))};
+  PatchTree own(kEarth, terrain, {}, plateau);
+  settle(own, plateauViews);
+  PatchTree whole(kEarth, terrain);
+  settle(whole, plateauViews);
+  EXPECT_GE(deepest(bare), 20);
+  EXPECT_NEAR(deepest(own), deepest(bare), 1);
+  std::printf("deepest levels: %d over the sphere, %d over the plateau, %d measured on the sphere\n", deepest(bare),
+              deepest(own), deepest(whole));
+  EXPECT_LE(deepest(whole), deepest(bare) - 8) << "3 km is 2^10 times 2 m: about ten levels coarser";
 }
 
 // Points of terrain that the eye sees (in its frustum, the segment to them clear of the sphere below

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <optional>
 
 #include <strata/layer.hpp>
 #include <strata/node.hpp>
+#include <strata/spherical_cap.hpp>
 
 namespace strata {
 namespace {
@@ -70,6 +72,17 @@ HeightRange HeightInput::open() {
   range_ = {lowest_.value_or(std::min(known ? known->least : 0.0, 0.0)),
             highest_.value_or(std::max(known ? known->greatest : 0.0, 0.0))};
   return range_;
+}
+
+bool HeightInput::boundsRegions() const {
+  return layer_ && layer_->valuesWithin(SphericalCap{glm::dvec3(0.0, 0.0, 1.0), std::numbers::pi}).has_value();
+}
+
+HeightRange HeightInput::within(const SphericalCap& cap) const {
+  const std::optional<ValueRange> known = layer_ ? layer_->valuesWithin(cap) : std::nullopt;
+  if (!known) return range_;
+  const HeightRange there{std::max(known->least, range_.lowest), std::min(known->greatest, range_.highest)};
+  return there.lowest <= there.highest ? there : range_;
 }
 
 void HeightInput::checkGivenHold(const ValueRange& known) const {

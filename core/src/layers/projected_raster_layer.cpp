@@ -5,6 +5,7 @@
 #include <strata/healpix_pyramid.hpp>
 #include <strata/projected_raster_layer.hpp>
 
+#include "layers/block_caps.hpp"
 #include "layers/local_texture_frame.hpp"
 
 namespace strata {
@@ -31,6 +32,10 @@ glm::vec4 mapToTextureOf(const RasterGeoreference& georeference, int width, int 
 // A hundredth of a level-0 texel: the relative path's error, far below what filtering blurs.
 constexpr double kRelativeTolerance = 0.01;
 
+// A query is widened by a tenth: a vertex near a patch's edge filters heights over about a vertex spacing
+// beyond it, and a patch is 32 spacings across at the default depth.
+constexpr double kQueryMargin = 0.1;
+
 glm::vec4 columns(const glm::dmat2& m) { return glm::vec4(glm::dvec4(m[0], m[1])); }
 
 }  // namespace
@@ -48,6 +53,15 @@ std::optional<ValueRange> ProjectedRasterLayer::valueRange() const {
   return transformed(rawRange_->least, rawRange_->greatest);
 }
 
+std::optional<ValueRange> ProjectedRasterLayer::valuesWithin(const SphericalCap& cap) const {
+  if (!blockCaps_ || isColour(kind_)) return std::nullopt;
+  const BlockValues found = blockCaps_->within(cap.widened(kQueryMargin * cap.angle));
+  std::optional<ValueRange> values;
+  if (found.counted()) values = transformed(found.least, found.greatest);
+  if (found.gaps) values = values ? ValueRange{std::min(values->least, 0.0), std::max(values->greatest, 0.0)} : ValueRange{};
+  return values.value_or(ValueRange{});
+}
+
 ValueRange ProjectedRasterLayer::transformed(double rawLeast, double rawGreatest) const {
   const double a = rawLeast * scale_ + offset_, b = rawGreatest * scale_ + offset_;
   return ValueRange{std::min(a, b), std::max(a, b)};  // a negative scale turns the range over
@@ -60,6 +74,7 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   mapToTexture_ = mapToTextureOf(georeference_, width, height);
   texels_ = glm::vec2(float(width), float(height));
   repeatX_ = spansPeriod(georeference_, width);
+  if (blockRanges_) blockCaps_ = std::make_shared<const BlockCaps>(blockRanges_, georeference_, repeatX_);
 }
 
 void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {

@@ -16,6 +16,7 @@ namespace strata {
 class Layer;
 struct ValueRange;
 struct NodeSetup;
+struct SphericalCap;
 
 // What every geometry generator does with its optional `height` input and its optional `lowest` and
 // `highest` parameters, declared once so that generators agree and a pipeline switches between them by
@@ -39,6 +40,12 @@ class HeightInput {
   HeightRange open();
   // What open() settled.
   HeightRange range() const { return range_; }
+  // Whether the layer knows its heights over regions (Layer::valuesWithin), once it has placed its texels:
+  // then within() tells a plateau from the lowland around it.
+  bool boundsRegions() const;
+  // The heights within `cap`, where the layer knows them there, within range(); else range(). Culling and
+  // levels of detail take a patch's own, so that a patch on a plateau lies on it.
+  HeightRange within(const SphericalCap& cap) const;
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
   // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when

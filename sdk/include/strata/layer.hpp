@@ -15,6 +15,7 @@ namespace strata {
 class Node;
 class ShaderProgram;
 struct SourceLocation;
+struct SphericalCap;
 class TextureUnits;
 
 // The least and greatest values a one-channel layer returns, as its sampling function returns them
@@ -64,6 +65,14 @@ class Layer {
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
+  // The values the layer can return for points within `cap` (one-channel kinds, once its node has placed its
+  // texels): bounds, 0 included where some of the cap holds no data, within valueRange(). Geometry takes a
+  // patch's heights from them, so that a patch on a plateau is measured on the plateau (docs/geometry.md,
+  // "Height ranges"). None where the layer does not know them; generators then take valueRange().
+  virtual std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const {
+    (void)cap;
+    return std::nullopt;
+  }
   // Layers whose texels are the faces of a HEALPix pyramid (strata/healpix_pyramid.hpp) can also be sampled
   // by face point, with no projection on the way (geometry.healpix does so):
   //   vec4 <faceSamplingFunction()>(vec3 point, float footprint)

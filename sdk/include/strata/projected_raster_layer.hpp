@@ -1,6 +1,7 @@
 #pragma once
 #include <strata/export.hpp>
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,8 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
+class BlockCaps;
+class BlockRanges;
 class ShaderProgram;
 
 // What every raster sampled through a projection shares, whether its texels sit in one texture
@@ -27,6 +30,10 @@ class ProjectedRasterLayer : public Layer {
   // One-channel kinds: the least and greatest raw values, where the source knows them exactly.
   void setRawRange(ValueRange raw) { rawRange_ = raw; }
   std::optional<ValueRange> valueRange() const override;
+  // One-channel kinds: the raw ranges of the raster's blocks, where the source counted them (before place()),
+  // which valuesWithin() bounds regions by; without them it knows none.
+  void setBlockRanges(std::shared_ptr<const BlockRanges> blocks) { blockRanges_ = std::move(blocks); }
+  std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const override;
 
   LayerKind kind() const override { return kind_; }
   std::string samplingFunction() const override { return prefix_; }
@@ -68,6 +75,8 @@ class ProjectedRasterLayer : public Layer {
   double scale_ = 1.0;
   double offset_ = 0.0;
   std::optional<ValueRange> rawRange_;
+  std::shared_ptr<const BlockRanges> blockRanges_;
+  std::shared_ptr<const BlockCaps> blockCaps_;  // made by place() from blockRanges_
   RasterGeoreference georeference_;
   // Fixed by place():
   std::array<glm::vec4, 2> projection_{};  // Projection::glslParameters()

@@ -1,0 +1,134 @@
+#include "layers/block_caps.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include <glm/glm.hpp>
+
+namespace strata {
+namespace {
+
+// Samples along each edge of a block, corners included: the cap from them holds the block's image with the
+// margin below for any projection smooth at the scale of 64 texels.
+constexpr int kEdgeSamples = 8;
+// Block caps are widened by a tenth: the bilinear filter reads a texel up to a texel beyond its block (about
+// 2 % of a block's half diagonal) and the edges bulge between samples.
+constexpr double kCapMargin = 1.1;
+// Points on a cap's rim a query tests to lie inside the raster, a twentieth beyond the rim.
+constexpr int kRimSamples = 32;
+constexpr double kRimMargin = 1.05;
+
+BlockValues spanning(const BlockValues& a, const BlockValues& b) {
+  return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps};
+}
+
+// The point `angle` from the cap's centre in direction `turn` (rad about the centre).
+glm::dvec3 rimPoint(const SphericalCap& cap, double angle, double turn) {
+  const glm::dvec3 c = cap.centre;
+  const glm::dvec3 helper = std::abs(c.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(helper, c)), e2 = glm::cross(c, e1);
+  return std::cos(angle) * c + std::sin(angle) * (std::cos(turn) * e1 + std::sin(turn) * e2);
+}
+
+}  // namespace
+
+BlockCaps::BlockCaps(std::shared_ptr<const BlockRanges> ranges, RasterGeoreference georeference, bool repeatX)
+    : ranges_(std::move(ranges)), georeference_(std::move(georeference)), repeatX_(repeatX) {
+  Level blocks;
+  for (int row = 0; row < ranges_->rows(); ++row)
+    for (int column = 0; column < ranges_->columns(); ++column) {
+      const BlockRanges::Block& block = ranges_->at(column, row);
+      blocks.push_back({capOfBlock(column, row), {block.least, block.greatest, ranges_->holdsGaps(column, row)}});
+    }
+  levels_.push_back(std::move(blocks));
+  while (columnsAt(levels_.size() - 1) > 1 || rowsAt(levels_.size() - 1) > 1) addCoarserLevel();
+}
+
+int BlockCaps::columnsAt(std::size_t level) const {
+  return ((ranges_->columns() - 1) >> level) + 1;
+}
+
+int BlockCaps::rowsAt(std::size_t level) const { return ((ranges_->rows() - 1) >> level) + 1; }
+
+// The cap around the block's edges as the georeference places them; the whole sphere where some edge point
+// lies outside the projection's domain.
+SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
+  const int x0 = blockColumn * BlockRanges::kBlockTexels, y0 = blockRow * BlockRanges::kBlockTexels;
+  const int x1 = std::min(x0 + BlockRanges::kBlockTexels, ranges_->width());
+  const int y1 = std::min(y0 + BlockRanges::kBlockTexels, ranges_->height());
+  const std::array<double, 6>& t = georeference_.geotransform;
+  std::vector<glm::dvec3> edge;
+  for (int i = 0; i < kEdgeSamples; ++i) {
+    const double s = double(i) / kEdgeSamples;
+    for (const glm::dvec2 texel : {glm::dvec2(x0 + s * (x1 - x0), y0), glm::dvec2(x1, y0 + s * (y1 - y0)),
+                                   glm::dvec2(x1 - s * (x1 - x0), y1), glm::dvec2(x0, y1 - s * (y1 - y0))}) {
+      const glm::dvec2 map(t[0] + texel.x * t[1] + texel.y * t[2], t[3] + texel.x * t[4] + texel.y * t[5]);
+      const std::optional<glm::dvec2> lonlat = georeference_.projection->inverse(map);
+      if (!lonlat) return {glm::dvec3(0, 0, 1), std::numbers::pi};
+      edge.push_back(directionOf(*lonlat));
+    }
+  }
+  const SphericalCap cap = capAround(edge);
+  return {cap.centre, std::min(cap.angle * kCapMargin, std::numbers::pi)};
+}
+
+void BlockCaps::addCoarserLevel() {
+  const std::size_t finer = levels_.size() - 1;
+  const int finerColumns = columnsAt(finer), finerRows = rowsAt(finer);
+  Level coarser;
+  for (int row = 0; row < rowsAt(finer + 1); ++row)
+    for (int column = 0; column < columnsAt(finer + 1); ++column) {
+      std::optional<Group> group;
+      for (int y = 2 * row; y < std::min(2 * row + 2, finerRows); ++y)
+        for (int x = 2 * column; x < std::min(2 * column + 2, finerColumns); ++x) {
+          const Group& child = levels_[finer][std::size_t(y) * finerColumns + x];
+          group = group ? Group{joined(group->cap, child.cap), spanning(group->values, child.values)} : child;
+        }
+      coarser.push_back(*group);
+    }
+  levels_.push_back(std::move(coarser));
+}
+
+void BlockCaps::gather(std::size_t level, int column, int row, const SphericalCap& cap, BlockValues& found) const {
+  const Group& group = levels_[level][std::size_t(row) * columnsAt(level) + column];
+  if (!group.cap.meets(cap)) return;
+  if (level == 0) {
+    found = spanning(found, group.values);
+    return;
+  }
+  for (int y = 2 * row; y < std::min(2 * row + 2, rowsAt(level - 1)); ++y)
+    for (int x = 2 * column; x < std::min(2 * column + 2, columnsAt(level - 1)); ++x) gather(level - 1, x, y, cap, found);
+}
+
+BlockValues BlockCaps::within(const SphericalCap& cap) const {
+  BlockValues found;
+  gather(levels_.size() - 1, 0, 0, cap, found);
+  found.gaps = found.gaps || !holdsWhole(cap);
+  return found;
+}
+
+// Whether the cap lies inside the raster, a texel from its edges: its centre and points a little beyond its
+// rim all map into it. The image of a cap that small through a smooth projection is a smooth, nearly
+// elliptic blob, which the rim points bound with that margin.
+bool BlockCaps::holdsWhole(const SphericalCap& cap) const {
+  if (cap.angle >= 0.5 * std::numbers::pi) return false;  // a hemisphere: its image is no small blob
+  const std::array<double, 6>& t = georeference_.geotransform;
+  const glm::dmat2 toTexels = glm::inverse(glm::dmat2(t[1], t[4], t[2], t[5]));
+  const auto inside = [&](const glm::dvec3& unit) {
+    const std::optional<glm::dvec2> map = georeference_.projection->forward(lonlatOf(unit));
+    if (!map) return false;
+    const glm::dvec2 texel = toTexels * (*map - glm::dvec2(t[0], t[3]));
+    const bool across = repeatX_ || (texel.x >= 1.0 && texel.x <= ranges_->width() - 1.0);
+    return across && texel.y >= 1.0 && texel.y <= ranges_->height() - 1.0;
+  };
+  if (!inside(cap.centre)) return false;
+  for (int i = 0; i < kRimSamples; ++i)
+    if (!inside(rimPoint(cap, std::min(cap.angle * kRimMargin, std::numbers::pi), 2.0 * std::numbers::pi * i / kRimSamples)))
+      return false;
+  return true;
+}
+
+}  // namespace strata

@@ -1,0 +1,49 @@
+#pragma once
+#include <memory>
+#include <vector>
+
+#include <strata/block_ranges.hpp>
+#include <strata/raster_georeference.hpp>
+#include <strata/spherical_cap.hpp>
+
+namespace strata {
+
+// What a raster's blocks hold within a cap (BlockCaps::within): raw values, and whether no data shows there.
+struct BlockValues {
+  double least = std::numeric_limits<double>::infinity();
+  double greatest = -std::numeric_limits<double>::infinity();
+  bool gaps = false;  // some texel there holds no data, or the cap reaches beyond the raster: the sphere shows
+  bool counted() const { return least <= greatest; }
+};
+
+// A raster's BlockRanges placed on the body: each block bounded by a cap through the raster's georeference,
+// and the blocks grouped 2 x 2 level by level into a quadtree of caps, so that a query visits the blocks near
+// its cap only. Built once, when the layer is placed.
+class BlockCaps {
+ public:
+  BlockCaps(std::shared_ptr<const BlockRanges> ranges, RasterGeoreference georeference, bool repeatX);
+
+  // The values of every block whose cap meets `cap`, and gaps where the cap is not wholly inside the raster.
+  BlockValues within(const SphericalCap& cap) const;
+
+ private:
+  struct Group {
+    SphericalCap cap;
+    BlockValues values;
+  };
+  using Level = std::vector<Group>;  // row by row, columnsAt(level) across
+
+  SphericalCap capOfBlock(int blockColumn, int blockRow) const;
+  void addCoarserLevel();
+  int columnsAt(std::size_t level) const;
+  int rowsAt(std::size_t level) const;
+  void gather(std::size_t level, int column, int row, const SphericalCap& cap, BlockValues& found) const;
+  bool holdsWhole(const SphericalCap& cap) const;
+
+  std::shared_ptr<const BlockRanges> ranges_;
+  RasterGeoreference georeference_;
+  bool repeatX_;
+  std::vector<Level> levels_;  // blocks first, then groups of 2 x 2 up to one
+};
+
+}  // namespace strata

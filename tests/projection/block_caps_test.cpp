@@ -1,0 +1,134 @@
+// A raster's block ranges placed on the body (core/src/layers/block_caps.cpp): whatever texel a point of a
+// cap samples, the cap's values hold it, and a cap that reaches beyond the raster says so; small caps get
+// ranges about as tight as their blocks. Through the built-in projections' own inverse and forward, on a
+// global longitude/latitude map seen across its seam and at its poles, a polar stereographic cap map and a
+// small map far from longitude 0.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <glm/glm.hpp>
+
+#include "layers/block_caps.hpp"
+#include "projection_cases.hpp"
+
+namespace strata {
+namespace {
+
+constexpr double kEarth = 6371000.0;
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+// A field over the body with a different value at every texel: what the texels hold, by their centres.
+double field(glm::dvec2 lonlat) { return 1000.0 * std::sin(3.0 * lonlat.x) * std::cos(lonlat.y) + 500.0 * lonlat.y; }
+
+struct Raster {
+  std::string terms;
+  std::array<double, 6> geotransform;
+  int width, height;
+  bool repeatX;
+};
+
+glm::dvec2 texelOf(const Raster& raster, glm::dvec2 map) {
+  const std::array<double, 6>& t = raster.geotransform;
+  return {(map.x - t[0]) / t[1], (map.y - t[3]) / t[5]};  // north up, no rotation
+}
+
+// The raster's texels hold the field at their centres; those of column 0 hold no data, for the gaps.
+std::shared_ptr<BlockRanges> countField(const Raster& raster, const Projection& projection) {
+  auto blocks = std::make_shared<BlockRanges>(raster.width, raster.height);
+  const std::array<double, 6>& t = raster.geotransform;
+  for (int row = 0; row < raster.height; ++row)
+    for (int column = 1; column < raster.width; ++column) {
+      const std::optional<glm::dvec2> lonlat =
+          projection.inverse({t[0] + (column + 0.5) * t[1], t[3] + (row + 0.5) * t[5]});
+      if (lonlat) blocks->count(column, row, field(*lonlat));
+    }
+  return blocks;
+}
+
+// A random direction within `angle` of `centre`.
+glm::dvec3 inside(const SphericalCap& cap, std::mt19937& random) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const glm::dvec3 helper = std::abs(cap.centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 e1 = glm::normalize(glm::cross(helper, cap.centre)), e2 = glm::cross(cap.centre, e1);
+  const double angle = cap.angle * std::sqrt(unit(random)), turn = 2.0 * std::numbers::pi * unit(random);
+  return std::cos(angle) * cap.centre + std::sin(angle) * (std::cos(turn) * e1 + std::sin(turn) * e2);
+}
+
+// Every point sampled in every cap: its texel's value lies in the cap's range, and a point off the raster
+// or on its empty column finds gaps.
+void expectHeld(const Raster& raster, const std::vector<SphericalCap>& caps) {
+  std::shared_ptr<const Projection> projection = test::makeProjection(raster.terms, Ellipsoid{kEarth, 0.0});
+  const std::shared_ptr<BlockRanges> ranges = countField(raster, *projection);
+  const BlockCaps blockCaps(ranges, {projection, raster.geotransform}, raster.repeatX);
+  std::mt19937 random(5);
+  int sampled = 0;
+  for (const SphericalCap& cap : caps) {
+    const BlockValues values = blockCaps.within(cap);
+    for (int i = 0; i < 300; ++i) {
+      const std::optional<glm::dvec2> map = projection->forward(lonlatOf(inside(cap, random)));
+      const glm::dvec2 texel = map ? texelOf(raster, *map) : glm::dvec2(-1.0);
+      const int column = int(std::floor(texel.x)), row = int(std::floor(texel.y));
+      if (column < 1 || row < 0 || column >= raster.width || row >= raster.height) {
+        EXPECT_TRUE(values.gaps) << "a point of the cap lies off the raster";
+        continue;
+      }
+      const std::optional<glm::dvec2> lonlat = projection->inverse(
+          {raster.geotransform[0] + (column + 0.5) * raster.geotransform[1],
+           raster.geotransform[3] + (row + 0.5) * raster.geotransform[5]});
+      ASSERT_TRUE(lonlat);
+      ++sampled;
+      EXPECT_GE(field(*lonlat), values.least) << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
+      EXPECT_LE(field(*lonlat), values.greatest) << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
+    }
+  }
+  EXPECT_GT(sampled, 100 * int(caps.size()));
+}
+
+std::vector<SphericalCap> capsNear(glm::dvec2 lonlatDegrees, std::initializer_list<double> angles) {
+  std::vector<SphericalCap> caps;
+  for (const double angle : angles)
+    caps.push_back({directionOf({radians(lonlatDegrees.x), radians(lonlatDegrees.y)}), angle});
+  return caps;
+}
+
+TEST(BlockCaps, AGlobalMapHoldsEveryTexelACapSamplesAcrossItsSeamAndAtItsPoles) {
+  const Raster global{"+proj=longlat", {-180.0, 0.25, 0.0, 90.0, 0.0, -0.25}, 1440, 720, true};
+  for (const glm::dvec2 place : {glm::dvec2(137.4, -4.6), glm::dvec2(179.99, 10.0), glm::dvec2(-179.99, -30.0),
+                                 glm::dvec2(0.0, 89.95), glm::dvec2(60.0, -89.95)})
+    expectHeld(global, capsNear(place, {1e-4, 3e-3, 0.05, 0.6}));
+}
+
+TEST(BlockCaps, APolarStereographicMapHoldsEveryTexelACapSamples) {
+  const Raster polar{"+proj=stere +lat_0=-90 +lat_ts=-71", {-3.0e6, 5000.0, 0.0, 3.0e6, 0.0, -5000.0}, 1200, 1200, false};
+  for (const glm::dvec2 place : {glm::dvec2(0.0, -90.0), glm::dvec2(137.4, -70.0), glm::dvec2(-45.0, -62.0)})
+    expectHeld(polar, capsNear(place, {1e-4, 5e-3, 0.1}));
+}
+
+// A map 2 by 1 degrees at 137.4 E: caps inside it are told they hold no gaps, and their ranges are those of
+// their blocks, a share of the map's as small as their extent; caps across its edge or beyond it find gaps.
+TEST(BlockCaps, ASmallMapTellsCapsInsideFromCapsAcrossItsEdge) {
+  const Raster small{"+proj=longlat", {136.4, 0.001, 0.0, -4.1, 0.0, -0.001}, 2000, 1000, false};
+  const std::vector<SphericalCap> caps = capsNear({137.4, -4.6}, {1e-5, 1e-3, 0.05});
+  expectHeld(small, caps);
+  expectHeld(small, capsNear({136.41, -4.6}, {1e-5, 1e-3}));
+  std::shared_ptr<const Projection> projection = test::makeProjection(small.terms, Ellipsoid{kEarth, 0.0});
+  const BlockCaps blockCaps(countField(small, *projection), {projection, small.geotransform}, false);
+  const BlockValues whole = blockCaps.within(capsNear({137.4, -4.6}, {0.05})[0]);
+  const BlockValues near = blockCaps.within(caps[1]);
+  EXPECT_FALSE(near.gaps);
+  // The cap is 2e-3 rad across and its blocks reach about 1e-3 rad beyond it: a tenth of the map's 0.035 rad
+  // width, over which the field changes about evenly; a fifth leaves room for the blocks' corners.
+  EXPECT_LT(near.greatest - near.least, 0.2 * (whole.greatest - whole.least));
+  EXPECT_TRUE(whole.gaps) << "a cap of 0.05 rad reaches beyond a map 0.017 rad high";
+  EXPECT_TRUE(blockCaps.within(capsNear({136.41, -4.6}, {1e-5})[0]).gaps) << "the empty first column";
+  const BlockValues beyond = blockCaps.within(capsNear({140.0, -4.6}, {1e-3})[0]);
+  EXPECT_TRUE(beyond.gaps);
+  EXPECT_FALSE(beyond.counted());
+}
+
+}  // namespace
+}  // namespace strata
