@@ -83,7 +83,8 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 };
 
 // The height layer's bounds over each node, where it knows them: a HEALPix pyramid's pages' true ranges, or
-// another raster's over the node's cone.
+// another raster's over the node's cone widened by two vertex spacings (a node is at most the cone's width
+// across, gridCells spacings), for the footprints of the heights sampled at its edges.
 NodeHeights HealpixGeometry::nodeHeights() const {
   const Layer* layer = heights_.layer();
   if (!layer) return {};
@@ -94,7 +95,9 @@ NodeHeights HealpixGeometry::nodeHeights() const {
       return HeightRange{values->least, values->greatest};
     };
   if (!heights_.boundsRegions()) return {};
-  return [this](const NodeKey&, const NodeCone& cone) -> std::optional<HeightRange> { return heights_.within(cone); };
+  return [this](const NodeKey&, const NodeCone& cone) -> std::optional<HeightRange> {
+    return heights_.within(cone.widened(4.0 * cone.angle / settings_.gridCells));
+  };
 }
 
 // The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand

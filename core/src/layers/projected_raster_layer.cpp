@@ -32,10 +32,6 @@ glm::vec4 mapToTextureOf(const RasterGeoreference& georeference, int width, int 
 // A hundredth of a level-0 texel: the relative path's error, far below what filtering blurs.
 constexpr double kRelativeTolerance = 0.01;
 
-// A query is widened by a tenth: a vertex near a patch's edge filters heights over about a vertex spacing
-// beyond it, and a patch is 32 spacings across at the default depth.
-constexpr double kQueryMargin = 0.1;
-
 glm::vec4 columns(const glm::dmat2& m) { return glm::vec4(glm::dvec4(m[0], m[1])); }
 
 }  // namespace
@@ -55,7 +51,7 @@ std::optional<ValueRange> ProjectedRasterLayer::valueRange() const {
 
 std::optional<ValueRange> ProjectedRasterLayer::valuesWithin(const SphericalCap& cap) const {
   if (!blockCaps_ || isColour(kind_)) return std::nullopt;
-  const BlockValues found = blockCaps_->within(cap.widened(kQueryMargin * cap.angle));
+  const BlockValues found = blockCaps_->within(cap);
   std::optional<ValueRange> values;
   if (found.counted()) values = transformed(found.least, found.greatest);
   if (found.gaps) values = values ? ValueRange{std::min(values->least, 0.0), std::max(values->greatest, 0.0)} : ValueRange{};

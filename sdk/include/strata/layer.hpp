@@ -68,7 +68,8 @@ class Layer {
   // The values the layer can return for points within `cap` (one-channel kinds, once its node has placed its
   // texels): bounds, 0 included where some of the cap holds no data, within valueRange(). Geometry takes a
   // patch's heights from them, so that a patch on a plateau is measured on the plateau (docs/geometry.md,
-  // "Height ranges"). None where the layer does not know them; generators then take valueRange().
+  // "Height ranges"), and widens the cap by the reach of its samples' footprints beyond the patch. None where
+  // the layer does not know them; generators then take valueRange().
   virtual std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const {
     (void)cap;
     return std::nullopt;
