@@ -94,16 +94,11 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   Framebuffer gbuffer_;
 };
 
-// The patches' shells take the heights the layer holds, each patch its own where the layer knows them: over
-// its cap widened by two vertex spacings, since a vertex at its edge filters heights over a spacing and the
-// filter reads texels of about that size on either side.
+// The patches' shells take the heights the layer holds, each patch its own where the layer knows them.
 void IcosahedralGeometry::plantTree() {
   PatchHeights patchHeights;
   if (heights_.boundsRegions())
-    patchHeights = [this](const SphericalTriangle& c) {
-      const double edge = std::max({angleBetween(c[0], c[1]), angleBetween(c[1], c[2]), angleBetween(c[2], c[0])});
-      return heights_.within(capAround(c).widened(2.0 * std::ldexp(edge, -table_.depth())));
-    };
+    patchHeights = [this](const SphericalTriangle& c) { return heights_.within(sampledCap(c, table_.depth())); };
   tree_.emplace(radius_, heights_.range(), treeSettings_, std::move(patchHeights));
 }
 

@@ -25,6 +25,12 @@ double largestDotOnArc(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec
 
 }  // namespace
 
+SphericalCap sampledCap(const SphericalTriangle& corners, int depth) {
+  const double edge = std::max({angleBetween(corners[0], corners[1]), angleBetween(corners[1], corners[2]),
+                                angleBetween(corners[2], corners[0])});
+  return capAround(corners).widened(2.0 * std::ldexp(edge, -depth));
+}
+
 bool holds(const SphericalTriangle& t, const glm::dvec3& unit) {
   return glm::dot(glm::cross(t[0], t[1]), unit) >= 0.0 && glm::dot(glm::cross(t[1], t[2]), unit) >= 0.0 &&
          glm::dot(glm::cross(t[2], t[0]), unit) >= 0.0;

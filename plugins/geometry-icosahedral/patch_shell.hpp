@@ -1,5 +1,6 @@
 #pragma once
 #include <glm/glm.hpp>
+#include <strata/spherical_cap.hpp>
 
 #include "icosahedron.hpp"
 
@@ -17,6 +18,11 @@ struct PatchShell {
 // The largest value of dot(direction, u) over the unit vectors u of the spherical triangle: the
 // triangle's support function, exact (the direction's nearest point lies inside or on an edge arc).
 double largestDot(const SphericalTriangle& triangle, const glm::dvec3& direction);
+
+// The directions whose heights a patch of subdivision `depth` (2^depth segments an edge) samples: the cap
+// around its corners widened by two vertex spacings, since a vertex at its edge filters heights over a
+// spacing and the filter reads texels of about that size on either side. Its shell takes their heights.
+SphericalCap sampledCap(const SphericalTriangle& corners, int depth);
 
 // Whether the unit vector lies inside the spherical triangle (edges included).
 bool holds(const SphericalTriangle& triangle, const glm::dvec3& unit);

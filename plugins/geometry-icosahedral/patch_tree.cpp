@@ -78,9 +78,21 @@ double PatchTree::splitDistance(int level, double detail) const {
 
 PatchShell PatchTree::shellOf(std::int32_t id) {
   const SphericalTriangle corners = topology_.cornersOf(id);
-  std::optional<HeightRange>& heights = topology_[id].heights;
-  if (!heights) heights = patchHeights_ ? patchHeights_(corners) : heights_;
-  return {corners, radius_ + heights->lowest, radius_ + heights->highest};
+  if (!topology_[id].heights) topology_[id].heights = heightsOf(id, corners);
+  return {corners, radius_ + topology_[id].heights->lowest, radius_ + topology_[id].heights->highest};
+}
+
+// A patch's heights within its parent's: what a child samples lies within what its parent samples, so both
+// bound the child's terrain, and nested shells keep a split patch's children no nearer than itself can be (bounds
+// such as source.procedural's, from the value at each cap's centre, need not nest by themselves).
+HeightRange PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& corners) {
+  if (!patchHeights_) return heights_;
+  const HeightRange own = patchHeights_(corners);
+  const std::int32_t parent = topology_[id].parent;
+  if (parent < 0) return own;
+  const PatchShell outer = shellOf(parent);
+  const HeightRange nested{std::max(own.lowest, outer.innerRadius - radius_), std::min(own.highest, outer.outerRadius - radius_)};
+  return nested.lowest <= nested.highest ? nested : own;
 }
 
 // A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. Its

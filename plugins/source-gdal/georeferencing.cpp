@@ -8,10 +8,10 @@
 #include <cstdio>
 #include <optional>
 
-#include <glm/geometric.hpp>
-#include <glm/vec3.hpp>
+#include <glm/vec2.hpp>
 
 #include <strata/crs.hpp>
+#include <strata/spherical_cap.hpp>
 
 namespace strata::gdal {
 namespace {
@@ -100,13 +100,8 @@ std::string geotransformText(const std::array<double, 6>& t) {
   return text.data();
 }
 
-// The angle (rad) between two places on the body, through their unit vectors.
-double angleBetween(glm::dvec2 a, glm::dvec2 b) {
-  const auto unit = [](glm::dvec2 p) {
-    return glm::dvec3(std::cos(p.y) * std::cos(p.x), std::cos(p.y) * std::sin(p.x), std::sin(p.y));
-  };
-  return 2.0 * std::asin(std::min(glm::length(unit(a) - unit(b)) / 2.0, 1.0));
-}
+// The angle (rad) between two places on the body (longitude, latitude in rad).
+double angleBetween(glm::dvec2 a, glm::dvec2 b) { return strata::angleBetween(directionOf(a), directionOf(b)); }
 
 // A geotransform that places the raster nowhere on the body (NaN, infinite, texels of no size, or so far out
 // that its texels fall together) would draw an empty planet: refused, naming the file.

@@ -9,10 +9,6 @@
 namespace strata::procedural {
 namespace {
 
-// Each octave's amplitude is half the one before, as its wavelength is: the sum is fractional Brownian
-// motion with slopes alike at every scale (Mandelbrot 1982; Musgrave et al. 1989), as terrain tends to be.
-constexpr double kGain = 0.5;
-
 // A colour ramp: heights as fractions of the amplitude, colours in linear RGB, linear in between.
 struct ColourStop {
   double height;
@@ -55,20 +51,26 @@ PlanetModel::PlanetModel(const PlanetParameters& parameters, double radius)
 double PlanetModel::height(const glm::dvec3& unitNormal) const { return height(unitNormal, 0.0); }
 
 double PlanetModel::height(const glm::dvec3& unitNormal, double footprint) const {
-  // Lattice units per unit of the normal: the first octave's features are `wavelength` metres across.
-  const glm::dvec3 point = unitNormal * (radius_ / parameters_.wavelength);
   double sum = 0.0, amplitude = 1.0;
-  for (int k = 0; k < parameters_.octaves; ++k, amplitude *= kGain) {
+  for (int k = 0; k < parameters_.octaves; ++k, amplitude *= kOctaveGain) {
     const double weight = octaveWeight(k, parameters_.wavelength, footprint);
     if (weight == 0.0) break;  // and so are all finer octaves
-    // seed * 32 + k: a field of its own for every seed and octave (octaves are at most 24).
-    const std::uint32_t seed = parameters_.seed * 32u + std::uint32_t(k);
-    sum += weight * amplitude * simplexNoise(std::ldexp(1.0, k) * point + double(k) * kOctaveShift, seed);
+    sum += weight * amplitude * octaveNoise(k, unitNormal);
   }
-  // Divided by the amplitudes of every octave, not only those summed, so that leaving fine octaves out
-  // keeps the coarse heights where they were.
-  const double total = (1.0 - std::pow(kGain, parameters_.octaves)) / (1.0 - kGain);
-  return parameters_.amplitude * sum / total;
+  return metresPerNoise() * sum;
+}
+
+double PlanetModel::octaveNoise(int octave, const glm::dvec3& unitNormal) const {
+  // seed * 32 + k: a field of its own for every seed and octave (octaves are at most 24).
+  const std::uint32_t seed = parameters_.seed * 32u + std::uint32_t(octave);
+  return simplexNoise(std::ldexp(latticeUnitsPerNormal(), octave) * unitNormal + double(octave) * kOctaveShift, seed);
+}
+
+double PlanetModel::latticeUnitsPerNormal() const { return radius_ / parameters_.wavelength; }
+
+double PlanetModel::metresPerNoise() const {
+  const double total = (1.0 - std::pow(kOctaveGain, parameters_.octaves)) / (1.0 - kOctaveGain);
+  return parameters_.amplitude / total;
 }
 
 // Metres from `height` to the nearest multiple of the contour interval.

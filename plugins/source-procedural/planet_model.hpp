@@ -22,6 +22,10 @@ struct PlanetParameters {
   double contourInterval = 1000.0;
 };
 
+// Each octave's amplitude is half the one before, as its wavelength is: the sum is fractional Brownian
+// motion with slopes alike at every scale (Mandelbrot 1982; Musgrave et al. 1989), as terrain tends to be.
+inline constexpr double kOctaveGain = 0.5;
+
 // Moves each octave's lattice off the one before. Without it every octave's lattice points would fall on
 // the first octave's (2^k times a lattice point is one), where simplex noise is zero, and all octaves would
 // vanish together there. Octave k samples the noise at 2^k R / wavelength times the unit normal, plus k times
@@ -42,6 +46,14 @@ class PlanetModel {
   double height(const glm::dvec3& unitNormal, double footprint) const;
   // Linear RGB of a height: sea, lowland, highland, rock and snow, with dark contour lines.
   glm::dvec3 colour(double height) const;
+  // Octave `octave`'s noise (within +-kSimplexReach) at a unit normal, unweighted.
+  double octaveNoise(int octave, const glm::dvec3& unitNormal) const;
+  // Lattice units of the first octave per unit of the normal: the first octave's features are `wavelength`
+  // metres across; octave k's lattice is 2^k times as fine.
+  double latticeUnitsPerNormal() const;
+  // Metres of height per unit of the octaves' weighted sum of noise: the amplitude over the sum of every
+  // octave's amplitude, so that leaving fine octaves out keeps the coarse heights where they were.
+  double metresPerNoise() const;
   // Whether a height lies on a contour line.
   bool onContour(double height) const;
   // Metres of height from `height` to the nearest step of colour (an edge of a contour line; the coast is

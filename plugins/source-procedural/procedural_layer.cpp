@@ -1,8 +1,12 @@
 #include "procedural_layer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/spherical_cap.hpp>
+
+#include "planet_bounds.hpp"
 
 namespace strata::procedural {
 
@@ -29,6 +33,13 @@ std::optional<ValueRange> ProceduralLayer::valueRange() const {
   if (kind_ != LayerKind::Height) return std::nullopt;
   const double reach = planet_.amplitude * std::abs(scale_);
   return ValueRange{-reach, reach};
+}
+
+std::optional<ValueRange> ProceduralLayer::valuesWithin(const SphericalCap& cap) const {
+  if (kind_ != LayerKind::Height) return std::nullopt;
+  const HeightBounds bounds = heightsWithin(PlanetModel(planet_, radius_), cap.centre, cap.angle);
+  const double a = bounds.least * scale_, b = bounds.greatest * scale_;
+  return ValueRange{std::min(a, b), std::max(a, b)};
 }
 
 void ProceduralLayer::setReference(glm::dvec2 referenceLonlat) {

@@ -23,6 +23,8 @@ class ProceduralLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   // Heights: within +-amplitude x scale, which the noise never reaches (planet_model.hpp).
   std::optional<ValueRange> valueRange() const override;
+  // Heights: bounded from the noise at the cap's centre and its slope (planet_bounds.hpp).
+  std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const override;
   // Samples the planet relative to the frame's reference from now on (planet_lattice.hpp); from prepare().
   void setReference(glm::dvec2 referenceLonlat);
 

@@ -16,4 +16,12 @@ double simplexNoise(const glm::dvec3& point, std::uint32_t seed);
 inline constexpr double kSimplexSkew = 1.0 / 3.0;
 inline constexpr double kSimplexUnskew = 1.0 / 6.0;
 
+// |simplexNoise| never exceeds it: 76 times the largest sum of the four kernels, 0.013007 (simplex_noise.cpp).
+inline constexpr double kSimplexReach = 0.9886;
+// The field's slope never exceeds it, per lattice unit. A corner's kernel (0.5 - r^2)^4 (g . r) has a gradient
+// of at most |g| (0.5 - r^2)^3 (0.5 + 7 r^2), 0.0787 |g| at r^2 = 1/14; the sum of that bound over the four
+// corners of a tetrahedron peaks at 0.110626 (on a grid of 800 steps a side over the tetrahedron, the same to
+// six digits on one of 400), times sqrt 2 (|g|) and 76: 11.89. Rounded up.
+inline constexpr double kSimplexSlope = 11.9;
+
 }  // namespace strata::procedural

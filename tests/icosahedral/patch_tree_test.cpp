@@ -11,7 +11,9 @@
 #include <strata/camera.hpp>
 
 #include "fly_in_path.hpp"
+#include "patch_shell.hpp"
 #include "patch_tree.hpp"
+#include "planet_bounds.hpp"
 
 namespace strata::icosahedral {
 namespace {
@@ -108,6 +110,54 @@ TEST(PatchTree, TheDefaultOperationsFollowAThirtyHertzFlyIn) {
   EXPECT_LT(busiest, PatchTreeSettings{}.operationsPerFrame);
 }
 
+// The deepest level among the visible patches.
+int deepestLevel(const PatchTree& tree) {
+  int level = 0;
+  for (const Patch& patch : tree.visiblePatches()) level = std::max(level, patch.level);
+  return level;
+}
+
+// The same fly-in with each patch measured on the planet's own heights (source.procedural's bounds over its
+// sampled cap, planet_bounds.hpp), as geometry.icosahedral measures it. The path falls geometrically in
+// altitude above the sphere, so measured from the ground its last frame closes from 733 m to 300 m above it
+// and asks more than a frame's operations; every frame before it keeps within them, and the next (held at
+// the bottom) catches up. There the deepest patch is as deep as at the eye's height above the ground below
+// it over the bare sphere; measured on the sphere, 9 km up, it is several levels coarser.
+TEST(PatchTree, OnTheProceduralPlanetsOwnHeightsTheFlyInSplitsAsAboveTheGround) {
+  const FlyInPath flight{-74.0, 4.0, 8672.0};
+  const procedural::PlanetModel planet({}, FlyInPath::kMarsRadius);
+  const HeightRange range{-12000.0, 12000.0};
+  const PatchHeights own = [&](const SphericalTriangle& corners) {
+    const SphericalCap cap = sampledCap(corners, 5);
+    const procedural::HeightBounds bounds = procedural::heightsWithin(planet, cap.centre, cap.angle);
+    return HeightRange{std::max(bounds.least, range.lowest), std::min(bounds.greatest, range.highest)};
+  };
+  const Body mars{"Mars", FlyInPath::kMarsRadius};
+  const auto viewsAt = [&](const Camera& camera) {
+    return std::vector<ViewVolume>{ViewVolume(makeView(mars, camera, 1280, 720, range))};
+  };
+  PatchTree tree(FlyInPath::kMarsRadius, range, {}, own);
+  tree.settle(viewsAt(flight.cameraAt(0)));
+  int busiest = 0;
+  for (int frame = 1; frame < FlyInPath::kFramesEachWay - 1; ++frame)
+    busiest = std::max(busiest, tree.update(viewsAt(flight.cameraAt(frame))));
+  EXPECT_LT(busiest, PatchTreeSettings{}.operationsPerFrame);
+  const Camera bottom = flight.cameraAt(FlyInPath::kFramesEachWay - 1);
+  tree.update(viewsAt(bottom));
+  EXPECT_LT(tree.update(viewsAt(bottom)), PatchTreeSettings{}.operationsPerFrame);
+  settle(tree, viewsAt(bottom));
+  Camera aboveSphere = bottom;
+  aboveSphere.altitude -= planet.height(directionOf(glm::radians(glm::dvec2(bottom.lon, bottom.lat))));
+  PatchTree bare(FlyInPath::kMarsRadius, {0.0, 0.0});
+  settle(bare, std::vector<ViewVolume>{ViewVolume(makeView(mars, aboveSphere, 1280, 720))});
+  PatchTree onSphere(FlyInPath::kMarsRadius, range);
+  settle(onSphere, viewsAt(bottom));
+  std::printf("deepest levels: %d on the planet's heights, %d %.0f m above the sphere, %d measured on the sphere\n",
+              deepestLevel(tree), deepestLevel(bare), aboveSphere.altitude, deepestLevel(onSphere));
+  EXPECT_NEAR(deepestLevel(tree), deepestLevel(bare), 1);
+  EXPECT_LE(deepestLevel(onSphere), deepestLevel(tree) - 4);
+}
+
 // Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser
 // exactly where the patch flags that edge as coarse.
 void expectOneLevelApartWithCoarseEdgesFlagged(const PatchTree& tree) {
@@ -136,9 +186,7 @@ TEST(PatchTree, NeighboursDifferByAtMostOneLevelFromTheGround) {
   const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 179.99, .lat = 10, .altitude = 2.0, .tilt = 60}))};
   settle(tree, views);
   expectOneLevelApartWithCoarseEdgesFlagged(tree);
-  int deepest = 0;
-  for (const Patch& patch : tree.visiblePatches()) deepest = std::max(deepest, patch.level);
-  EXPECT_GE(deepest, 20) << "2 m up, the patch below the eye should be a few metres across";
+  EXPECT_GE(deepestLevel(tree), 20) << "2 m up, the patch below the eye should be a few metres across";
 }
 
 // Each patch measured on its own heights (CDLOD's bounding boxes, Strugar 2009, as spherical shells): 2 m
@@ -156,11 +204,6 @@ TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
       if (std::acos(std::min(glm::dot(corner, below), 1.0)) * kEarth > 20e3) return terrain;
     return HeightRange{3000.0, 3000.0};
   };
-  const auto deepest = [](const PatchTree& tree) {
-    int level = 0;
-    for (const Patch& patch : tree.visiblePatches()) level = std::max(level, patch.level);
-    return level;
-  };
   PatchTree bare(kEarth, {0.0, 0.0});
   settle(bare, std::vector<ViewVolume>{ViewVolume(viewFrom(overSphere))});
   const std::vector<ViewVolume> plateauViews{ViewVolume(makeView(Body{"Earth", kEarth}, overPlateau, 1280, 720, terrain))};
@@ -168,11 +211,11 @@ TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
   settle(own, plateauViews);
   PatchTree whole(kEarth, terrain);
   settle(whole, plateauViews);
-  EXPECT_GE(deepest(bare), 20);
-  EXPECT_NEAR(deepest(own), deepest(bare), 1);
-  std::printf("deepest levels: %d over the sphere, %d over the plateau, %d measured on the sphere\n", deepest(bare),
-              deepest(own), deepest(whole));
-  EXPECT_LE(deepest(whole), deepest(bare) - 8) << "3 km is 2^10 times 2 m: about ten levels coarser";
+  EXPECT_GE(deepestLevel(bare), 20);
+  EXPECT_NEAR(deepestLevel(own), deepestLevel(bare), 1);
+  std::printf("deepest levels: %d over the sphere, %d over the plateau, %d measured on the sphere\n", deepestLevel(bare),
+              deepestLevel(own), deepestLevel(whole));
+  EXPECT_LE(deepestLevel(whole), deepestLevel(bare) - 8) << "3 km is 2^10 times 2 m: about ten levels coarser";
 }
 
 // Points of terrain that the eye sees (in its frustum, the segment to them clear of the sphere below

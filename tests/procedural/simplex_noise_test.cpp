@@ -1,8 +1,9 @@
 // The simplex noise in double: deterministic per seed, continuous across the lattice's cells and the
-// tetrahedra inside them, and within [-1, 1].
+// tetrahedra inside them, within [-1, 1], and never steeper than its slope bound.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "simplex_noise.hpp"
@@ -72,10 +73,26 @@ TEST(SimplexNoise, StaysWithinPlusMinusOneAndUsesMostOfIt) {
     lowest = std::min(lowest, value);
     highest = std::max(highest, value);
   }
-  EXPECT_GE(lowest, -1.0);
-  EXPECT_LE(highest, 1.0);
+  EXPECT_GE(lowest, -kSimplexReach);
+  EXPECT_LE(highest, kSimplexReach);
   EXPECT_LT(lowest, -0.8);
   EXPECT_GT(highest, 0.8);
+}
+
+// The slope bound that procedural height bounds rest on (simplex_noise.hpp): no difference quotient over a
+// short step exceeds it, and the steepest found is within a factor of two of it, so the bound is not idle.
+TEST(SimplexNoise, NeverSteeperThanItsSlopeBound) {
+  std::mt19937_64 random(5);
+  std::normal_distribution<double> gaussian;
+  double steepest = 0.0;
+  for (int i = 0; i < 200000; ++i) {
+    const glm::dvec3 p = randomPoint(random);
+    const glm::dvec3 step = 1e-6 * glm::normalize(glm::dvec3(gaussian(random), gaussian(random), gaussian(random)));
+    steepest = std::max(steepest, std::abs(simplexNoise(p + step, 12) - simplexNoise(p, 12)) / 1e-6);
+  }
+  std::printf("steepest slope found: %.3f per lattice unit, bound %.3f\n", steepest, kSimplexSlope);
+  EXPECT_LE(steepest, kSimplexSlope);
+  EXPECT_GT(steepest, 0.5 * kSimplexSlope);
 }
 
 }  // namespace
