@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "quiet_gdal_errors.hpp"
+#include "stored_block_ranges.hpp"
 
 namespace strata::gdal {
 namespace {
@@ -101,7 +102,7 @@ std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges&
 }
 
 std::shared_ptr<BlockRanges> countBlockRanges(GDALDataset& dataset) {
-  if (!countable(dataset)) return nullptr;
+  if (!countable(dataset)) return storedBlockRanges(dataset);
   auto blocks = std::make_shared<BlockRanges>(dataset.GetRasterXSize(), dataset.GetRasterYSize());
   const QuietGdalErrors quiet;  // as exactRawRange()
   visitDrawnTexels(*dataset.GetRasterBand(1), [&](int column, int row, double value) { blocks->count(column, row, value); });

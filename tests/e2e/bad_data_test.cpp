@@ -11,6 +11,8 @@
 #include <limits>
 #include <string>
 
+#include <strata/block_ranges.hpp>
+
 #include "strata_command.hpp"
 #include "test_rasters.hpp"
 
@@ -29,12 +31,18 @@ std::function<float(int, int)> blocksOf(float bad) {
 }
 
 // A raster GDAL describes in a few lines of VRT: a band of zeros with no file behind it (and `band`, its
-// overviews for one).
+// overviews for one; `metadata`, MDI elements of the dataset's).
 std::string vrt(const std::string& size, const std::string& srs, const std::string& geotransform,
-                const std::string& band = "") {
+                const std::string& band = "", const std::string& metadata = "") {
   return "<VRTDataset " + size + ">" + (srs.empty() ? "" : "<SRS>" + srs + "</SRS>") +
          (geotransform.empty() ? "" : "<GeoTransform>" + geotransform + "</GeoTransform>") +
+         (metadata.empty() ? "" : "<Metadata>" + metadata + "</Metadata>") +
          "<VRTRasterBand dataType=\"Float32\" band=\"1\">" + band + "</VRTRasterBand></VRTDataset>";
+}
+
+// A VRT band's overview: band 1 of `file`.
+std::string overviewElement(const fs::path& file) {
+  return "<Overview><SourceFilename>" + file.string() + "</SourceFilename><SourceBand>1</SourceBand></Overview>";
 }
 
 const std::string kGlobalGeotransform = "-180, 5.625, 0, 90, 0, -5.625";
@@ -130,10 +138,37 @@ TEST_F(BadData, AbsurdDimensionsWithoutOverviewsAreRefusedWithTheirSize) {
 TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
   writeFloatRaster(file("overview.tif"), 512, 256, kGlobe, [](int, int) { return 0.0f; });
   const CommandResult result = renderHeights(write(
-      "absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform,
-                        "<Overview><SourceFilename>" + file("overview.tif").string() +
-                            "</SourceFilename><SourceBand>1</SourceBand></Overview>")));
+      "absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform, overviewElement(file("overview.tif")))));
   expectRefused(result, {"2000000000x1000000000", "more than the page index holds", "gdal_translate -outsize"});
+}
+
+// Block ranges `strata tile` stored (strata/block_ranges.hpp) in a raster too large to count (4100 x 4100
+// zeros), saying `value` in every block, as a file rescaled after tiling keeps them.
+std::string claimingBlocks(float value) {
+  BlockRanges ranges(4100, 4100);
+  for (int row = 0; row < ranges.height(); ++row)
+    for (int column = 0; column < ranges.width(); ++column) ranges.count(column, row, value);
+  std::string items;
+  for (const auto& [name, text] : ranges.metadataItems()) items += "<MDI key=\"" + name + "\">" + text + "</MDI>";
+  return items;
+}
+
+// Ranges the file's coarsest overview contradicts are not trusted (culling by them would drop the terrain),
+// and the user is told why and what to do; ranges it agrees with are taken without a word.
+TEST_F(BadData, BlockRangesTheOverviewContradictsAreIgnoredWithAWarning) {
+  writeFloatRaster(file("overview.tif"), 128, 128, kGlobe, [](int, int) { return 0.0f; });
+  const std::string overview = overviewElement(file("overview.tif"));
+  const std::string size = "rasterXSize=\"4100\" rasterYSize=\"4100\"";
+  const std::string globe = "-180, 0.087804878048780488, 0, 90, 0, -0.043902439024390244";
+  CommandResult result =
+      renderHeights(write("stale.vrt", vrt(size, "EPSG:4326", globe, overview, claimingBlocks(1500.0f))));
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_TRUE(contains(result.err, "stale.vrt' carries block ranges that its coarsest overview contradicts") &&
+              contains(result.err, "run `strata tile` on it again"))
+      << result.err;
+  result = renderHeights(write("agreeing.vrt", vrt(size, "EPSG:4326", globe, overview, claimingBlocks(0.0f))));
+  EXPECT_EQ(result.exitCode, 0) << result.err;
+  EXPECT_FALSE(contains(result.err, "warning")) << result.err;
 }
 
 // A geotransform that places a raster nowhere (was: an empty planet, exit 0): NaN or infinite terms, texels

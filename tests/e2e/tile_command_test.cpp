@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include <strata/block_ranges.hpp>
 #include <strata/crs.hpp>
 #include <strata/healpix.hpp>
 #include <strata/healpix_pyramid.hpp>
@@ -43,6 +44,9 @@ std::string projName(GDALDataset& dataset) {
 }
 
 const RasterFileSpec kLongLat{"+proj=longlat +R=3396190", {-30.0, 0.1, 0.0, 15.0, 0.0, -0.1}, 1200, 600};
+
+// Every longitude south of 50 S.
+const RasterFileSpec kSouthernRing{"+proj=longlat +R=3396190", {-180.0, 0.5, 0.0, -50.0, 0.0, -0.5}, 720, 80};
 
 class TileCommand : public StrataCommandTest {};
 
@@ -89,7 +93,7 @@ TEST_F(TileCommand, ReprojectsAnUnsupportedCrsIntoTheBestSuitedProjection) {
 }
 
 TEST_F(TileCommand, ReprojectsIntoTheProjectionNamed) {
-  writeRasterFile(file("in.tif"), {"+proj=longlat +R=3396190", {-180.0, 0.5, 0.0, -50.0, 0.0, -0.5}, 720, 80});
+  writeRasterFile(file("in.tif"), kSouthernRing);
   const CommandResult result =
       run({"tile", file("in.tif").string(), file("south.tif").string(), "--to", "polar-south"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
@@ -99,6 +103,57 @@ TEST_F(TileCommand, ReprojectsIntoTheProjectionNamed) {
   out->GetSpatialRef()->exportToProj4(&proj);
   EXPECT_TRUE(contains(proj, "+proj=stere +lat_0=-90")) << proj;
   CPLFree(proj);
+}
+
+// Every texel of band 1 that holds data (its mask's and finite) lies within its block's stored range, and a
+// block is said to hold gaps exactly where some texel holds none.
+void expectBlocksHoldTheirTexels(GDALDataset& tiled) {
+  const int width = tiled.GetRasterXSize(), height = tiled.GetRasterYSize();
+  const std::optional<BlockRanges> ranges = BlockRanges::fromMetadata(
+      width, height, [&](const std::string& name) { return tiled.GetMetadataItem(name.c_str()); });
+  ASSERT_TRUE(ranges) << "the file carries its blocks' ranges";
+  std::vector<double> values(std::size_t(width) * height);
+  std::vector<GByte> mask(values.size());
+  ASSERT_EQ(tiled.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float64,
+                                             0, 0), CE_None);
+  ASSERT_EQ(tiled.GetRasterBand(1)->GetMaskBand()->RasterIO(GF_Read, 0, 0, width, height, mask.data(), width, height,
+                                                            GDT_Byte, 0, 0), CE_None);
+  const int side = ranges->blockTexels();
+  std::vector<bool> gaps(std::size_t(ranges->columns()) * ranges->rows(), false);
+  for (int row = 0; row < height; ++row)
+    for (int column = 0; column < width; ++column) {
+      const std::size_t i = std::size_t(row) * width + column;
+      if (mask[i] == 0 || !std::isfinite(values[i])) {
+        gaps[std::size_t(row / side) * ranges->columns() + column / side] = true;
+        continue;
+      }
+      const BlockRanges::Block& block = ranges->at(column / side, row / side);
+      ASSERT_TRUE(values[i] >= block.least && values[i] <= block.greatest) << "texel " << column << ", " << row;
+    }
+  for (int row = 0; row < ranges->rows(); ++row)
+    for (int column = 0; column < ranges->columns(); ++column)
+      EXPECT_EQ(ranges->holdsGaps(column, row), gaps[std::size_t(row) * ranges->columns() + column])
+          << "block " << column << ", " << row;
+}
+
+// One-channel pyramids carry the value ranges of their blocks of level-0 texels (strata/block_ranges.hpp), which
+// bound a patch's heights by its data in a raster of any size: those of the texels written, reprojected too.
+TEST_F(TileCommand, OneChannelPyramidsCarryTheirBlocksRanges) {
+  writeRasterFile(file("in.tif"), kLongLat);
+  writeRasterFile(file("ring.tif"), kSouthernRing);
+  ASSERT_EQ(run({"tile", file("in.tif").string(), file("out.tif").string()}).exitCode, 0);
+  ASSERT_EQ(run({"tile", file("ring.tif").string(), file("south.tif").string(), "--to", "polar-south"}).exitCode, 0);
+  for (const std::string name : {"out.tif", "south.tif"}) {
+    SCOPED_TRACE(name);
+    expectBlocksHoldTheirTexels(*openRaster(file(name)));
+  }
+  RasterFileSpec colour = kLongLat;
+  colour.bands = 3;
+  colour.type = GDT_Byte;
+  writeRasterFile(file("colour.tif"), colour);
+  ASSERT_EQ(run({"tile", file("colour.tif").string(), file("colour-out.tif").string()}).exitCode, 0);
+  EXPECT_EQ(openRaster(file("colour-out.tif"))->GetMetadataItem("STRATA_BLOCK_RANGES"), nullptr)
+      << "colours bound no heights";
 }
 
 TEST_F(TileCommand, RefusesToReplaceAnExistingOutputUnlessAsked) {

@@ -15,7 +15,8 @@
 // tilted, must be as exact: the generators measure their detail from the ground the height layer's range
 // allows nearest the eye, not from the sphere 3 km below, which gave the heights' filtering the detail of a
 // view from 3 km (geometry.healpix was 3 cm off), and geometry.icosahedral's patches are measured on their own
-// heights (Layer::valuesWithin; measured on the sphere they stood 82 cm off straight down, 2.2 m tilted).
+// heights (Layer::valuesWithin; measured on the sphere they stood 82 cm off straight down, 2.2 m tilted),
+// also where the strip lies in a raster too large to count when opened, from the ranges `strata tile` stored.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,6 +30,8 @@
 
 #include <strata/geometry.hpp>
 #include <strata/output.hpp>
+#include <strata/plugin_registry.hpp>
+#include <strata/tiling.hpp>
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
@@ -46,6 +49,9 @@ constexpr int kColumns = 2048, kRows = 512;      // east, north
 constexpr double kAmplitude = 2.0;               // m: the sines' amplitudes sum to this
 constexpr double kMargin = 2.0;                  // m inside the strip's edges
 constexpr double kTolerance = 0.01;              // m along the ray
+constexpr float kNoData = -32768.0f;
+// Texels of no data around the strip in the large raster: 5,120 x 3,584, 18 million texels.
+constexpr int kAroundLargeStrip = 1536;
 
 // The analytic surface at metres east and north of the strip's centre.
 double analyticHeight(double east, double north) {
@@ -78,14 +84,30 @@ std::function<double(double, double)> terrainHeight(double plateau) {
   };
 }
 
-std::string writeStrip(const TemporaryDirectory& directory) {
-  const std::array<double, 4> extent = stripExtent();
-  const double lonStep = (extent[2] - extent[0]) / kColumns, latStep = (extent[3] - extent[1]) / kRows;
-  writeFloatRaster(directory.path() / "strip.tif", kColumns, kRows, extent, [&](int column, int row) {
-    const glm::dvec2 metres = metresFromCentre(extent[0] + (column + 0.5) * lonStep, extent[3] - (row + 0.5) * latStep);
-    return float(analyticHeight(metres.x, metres.y));
-  });
+// The strip alone, or with `around` texels of no data on every side.
+std::string writeStrip(const TemporaryDirectory& directory, int around) {
+  const std::array<double, 4> strip = stripExtent();
+  const double lonStep = (strip[2] - strip[0]) / kColumns, latStep = (strip[3] - strip[1]) / kRows;
+  const std::array<double, 4> extent{strip[0] - around * lonStep, strip[1] - around * latStep,
+                                     strip[2] + around * lonStep, strip[3] + around * latStep};
+  writeFloatRaster(
+      directory.path() / "strip.tif", kColumns + 2 * around, kRows + 2 * around, extent,
+      [&](int column, int row) {
+        if (column < around || column >= around + kColumns || row < around || row >= around + kRows) return kNoData;
+        const glm::dvec2 metres =
+            metresFromCentre(extent[0] + (column + 0.5) * lonStep, extent[3] - (row + 0.5) * latStep);
+        return float(analyticHeight(metres.x, metres.y));
+      },
+      kNoData);
   return "strip.tif";
+}
+
+// The strip amid no data in a raster too large for source.gdal to count its blocks when opening it
+// (more than 16 million texels), tiled by `strata tile`, which stores them.
+std::string writeTiledStrip(const TemporaryDirectory& directory, const PluginRegistry& plugins) {
+  writeStrip(directory, kAroundLargeStrip);
+  tileRaster(plugins, {.input = directory.path() / "strip.tif", .output = directory.path() / "tiled.tif"});
+  return "tiled.tif";
 }
 
 struct Errors {
@@ -117,23 +139,24 @@ Errors measure(const View& view, const std::vector<float>& depth, double plateau
   return errors;
 }
 
-// Tilt (deg) and plateau (m).
-using Setting = std::tuple<double, double>;
+// Tilt (deg), plateau (m), and whether the strip lies in a large tiled raster.
+using Setting = std::tuple<double, double, bool>;
 class HeightPrecision : public ::testing::TestWithParam<std::tuple<std::string, Setting>> {};
 
 TEST_P(HeightPrecision, QuarterMetreDemLiesWithinOneCentimetreFromTenMetres) {
   const auto& [geometry, setting] = GetParam();
-  const auto& [tilt, plateau] = setting;
+  const auto& [tilt, plateau, large] = setting;
   TemporaryDirectory directory;
+  auto engine = makeEngine();
+  const std::string strip = large ? writeTiledStrip(directory, engine->plugins()) : writeStrip(directory, 0);
   const auto pipeline = directory.write(
       "strip.yaml", "strata: 1\nbody: {name: Mars, radius: 3389500}\n"
                     "camera: {lon: 137.40002, lat: -4.60001, altitude: " + std::to_string(plateau + 10.0) +
                         ", heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
-                        "  strip: {type: source.gdal, path: " + writeStrip(directory) + ", kind: height, offset: " +
+                        "  strip: {type: source.gdal, path: " + strip + ", kind: height, offset: " +
                         std::to_string(plateau) + "}\n"
                         "  terrain: {type: " + geometry + ", height: strip}\n"
                         "  frame: {type: output.image, geometry: terrain, shading: none}\n");
-  auto engine = makeEngine();
   engine->load(pipeline);
   const FrameOutput& output = engine->renderComplete(kSize, kSize);
   ASSERT_NE(output.surface(), nullptr);
@@ -150,17 +173,23 @@ std::string nameOf(const ::testing::TestParamInfo<std::tuple<std::string, Settin
   const std::string& type = std::get<0>(param.param);
   const Setting& setting = std::get<1>(param.param);
   return type.substr(type.find('.') + 1) + "_tilt" + std::to_string(int(std::get<0>(setting))) +
-         (std::get<1>(setting) > 0.0 ? "_plateau" : "");
+         (std::get<1>(setting) > 0.0 ? "_plateau" : "") + (std::get<2>(setting) ? "_tiled" : "");
 }
 
 INSTANTIATE_TEST_SUITE_P(GeneratorsAndTilts, HeightPrecision,
                          ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm",
                                                               "geometry.healpix"),
-                                            ::testing::Values(Setting(0.0, 0.0), Setting(45.0, 0.0))),
+                                            ::testing::Values(Setting(0.0, 0.0, false), Setting(45.0, 0.0, false))),
                          nameOf);
 INSTANTIATE_TEST_SUITE_P(GeneratorsOverAPlateau, HeightPrecision,
                          ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
-                                            ::testing::Values(Setting(0.0, 3000.0), Setting(45.0, 3000.0))),
+                                            ::testing::Values(Setting(0.0, 3000.0, false), Setting(45.0, 3000.0, false))),
+                         nameOf);
+// Heights region by region from the ranges `strata tile` stored: without them the icosahedral tree measured
+// the plateau's patches on the sphere, 3 km below, and the surface stood 82 cm off.
+INSTANTIATE_TEST_SUITE_P(GeneratorsOverAPlateauTiled, HeightPrecision,
+                         ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.healpix"),
+                                            ::testing::Values(Setting(0.0, 3000.0, true))),
                          nameOf);
 
 }  // namespace

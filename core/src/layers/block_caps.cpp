@@ -12,7 +12,8 @@ namespace strata {
 namespace {
 
 // Samples along each edge of a block, corners included: the cap from them holds the block's image with the
-// margin below for any projection smooth at the scale of 64 texels.
+// margin below for any projection smooth at the scale of a block (64 texels; larger where `strata tile`
+// stored fewer, at most about a degree of a global map: BlockRanges::kMostStoredBlocks).
 constexpr int kEdgeSamples = 8;
 // Block caps are widened by a tenth: the bilinear filter reads a texel up to a texel beyond its block (about
 // 2 % of a block's half diagonal) and the edges bulge between samples.
@@ -56,9 +57,9 @@ int BlockCaps::rowsAt(std::size_t level) const { return ((ranges_->rows() - 1) >
 // The cap around the block's edges as the georeference places them; the whole sphere where some edge point
 // lies outside the projection's domain.
 SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
-  const int x0 = blockColumn * BlockRanges::kBlockTexels, y0 = blockRow * BlockRanges::kBlockTexels;
-  const int x1 = std::min(x0 + BlockRanges::kBlockTexels, ranges_->width());
-  const int y1 = std::min(y0 + BlockRanges::kBlockTexels, ranges_->height());
+  const double side = ranges_->blockTexels();
+  const double x0 = blockColumn * side, y0 = blockRow * side;
+  const double x1 = std::min(x0 + side, double(ranges_->width())), y1 = std::min(y0 + side, double(ranges_->height()));
   const std::array<double, 6>& t = georeference_.geotransform;
   std::vector<glm::dvec3> edge;
   for (int i = 0; i < kEdgeSamples; ++i) {

@@ -1,12 +1,11 @@
 // The true value ranges of a HEALPix pyramid's pages (strata/healpix_pyramid.hpp, PageRanges).
 #include <strata/healpix_pyramid.hpp>
 
-#include <cpl_string.h>
-
 #include <algorithm>
 #include <bit>
-#include <cstring>
 #include <limits>
+
+#include "layers/metadata_words.hpp"
 
 namespace strata::healpix {
 namespace {
@@ -59,28 +58,18 @@ Level widened(const Level& level, std::int64_t side) {
 }
 
 std::string encoded(const Level& level) {
-  std::vector<GByte> bytes;
-  bytes.reserve(level.size() * 12);
+  std::vector<std::uint32_t> words;
+  words.reserve(level.size() * 3);
   for (const Range& range : level)
-    for (const float value : {range.least, range.greatest, range.uncovered ? 1.0f : 0.0f}) {
-      const auto bits = std::bit_cast<std::uint32_t>(value);
-      for (int shift = 0; shift < 32; shift += 8) bytes.push_back(GByte(bits >> shift));  // little-endian
-    }
-  char* text = CPLBase64Encode(int(bytes.size()), bytes.data());
-  std::string result(text);
-  CPLFree(text);
-  return result;
+    for (const float value : {range.least, range.greatest, range.uncovered ? 1.0f : 0.0f})
+      words.push_back(std::bit_cast<std::uint32_t>(value));
+  return base64OfWords(words);
 }
 
 std::optional<Level> decoded(const char* text, std::size_t pages) {
-  std::string buffer(text);
-  const int length = CPLBase64DecodeInPlace(reinterpret_cast<GByte*>(buffer.data()));
-  if (std::size_t(length) != pages * 12) return std::nullopt;
-  const auto value = [&](std::size_t i) {
-    std::uint32_t bits = 0;
-    for (int k = 3; k >= 0; --k) bits = bits << 8 | std::uint8_t(buffer[4 * i + std::size_t(k)]);
-    return std::bit_cast<float>(bits);
-  };
+  const std::optional<std::vector<std::uint32_t>> words = wordsOfBase64(text, pages * 3);
+  if (!words) return std::nullopt;
+  const auto value = [&](std::size_t i) { return std::bit_cast<float>((*words)[i]); };
   Level level(pages);
   for (std::size_t i = 0; i < pages; ++i) level[i] = {value(3 * i), value(3 * i + 1), value(3 * i + 2) != 0.0f};
   return level;

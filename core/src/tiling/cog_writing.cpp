@@ -7,7 +7,7 @@ namespace strata::tiling {
 namespace {
 
 // GDAL's command-line style options for the COG driver.
-std::vector<std::string> translateArguments(const std::string& targetCrs) {
+std::vector<std::string> translateArguments(const std::string& targetCrs, const MetadataItems& metadata) {
   std::vector<std::string> arguments{"-of", "COG",
       "-co", "BLOCKSIZE=512",          // the page size of seed 000 section 4.3.1
       "-co", "COMPRESS=DEFLATE",       // lossless: heights must come back bit for bit
@@ -18,6 +18,7 @@ std::vector<std::string> translateArguments(const std::string& targetCrs) {
   if (!targetCrs.empty()) {
     arguments.insert(arguments.end(), {"-co", "TARGET_SRS=" + targetCrs, "-co", "WARP_RESAMPLING=BILINEAR"});
   }
+  for (const auto& [name, value] : metadata) arguments.insert(arguments.end(), {"-mo", name + "=" + value});
   return arguments;
 }
 
@@ -38,14 +39,19 @@ std::vector<char*> argvOf(std::vector<std::string>& arguments) {
   return argv;
 }
 
+std::function<void(double)> progressShare(const std::function<void(double)>& progress, double from, double to) {
+  if (!progress) return {};
+  return [=](double fraction) { progress(from + (to - from) * fraction); };
+}
+
 int reportProgress(double fraction, const char*, void* progress) {
   (*static_cast<std::function<void(double)>*>(progress))(fraction);
   return 1;
 }
 
 Dataset writeCog(GDALDataset& source, const std::filesystem::path& output, const std::string& targetCrs,
-                 std::function<void(double)> progress, const SourceLocation& where) {
-  std::vector<std::string> arguments = translateArguments(targetCrs);
+                 std::function<void(double)> progress, const SourceLocation& where, const MetadataItems& metadata) {
+  std::vector<std::string> arguments = translateArguments(targetCrs, metadata);
   std::unique_ptr<GDALTranslateOptions, void (*)(GDALTranslateOptions*)> options(
       GDALTranslateOptionsNew(argvOf(arguments).data(), nullptr), GDALTranslateOptionsFree);
   if (progress) GDALTranslateOptionsSetProgress(options.get(), reportProgress, &progress);

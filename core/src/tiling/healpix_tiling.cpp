@@ -22,6 +22,7 @@
 #include <strata/healpix_pyramid.hpp>
 
 #include "projection/projection_terms.hpp"
+#include "tiling/block_range_scan.hpp"
 #include "tiling/cog_writing.hpp"
 #include "tiling/face_window.hpp"
 #include "tiling/globe_wrapping.hpp"
@@ -351,15 +352,12 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   Dataset faces = createFaces(request.output.parent_path() / "faces.strip.tif", pyramid, window, where);
   const Dataset wrapped = wrapAroundGlobe(input);
   writeAreas(wrapped ? *wrapped : input, *faces, pyramid, areasOf(pyramid, window), request.progress, where);
-  // One-channel strips (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes.
-  // A window is paged as any raster, and bounded by its whole range.
-  if (pyramid.samples.bands == 1 && !window)
-    for (const auto& [name, value] : scanPageRanges(*faces, nside).metadataItems())
-      faces->SetMetadataItem(name.c_str(), value.c_str());
-  std::function<void(double)> progress;
-  if (request.progress)
-    progress = [&](double fraction) { request.progress(kFacesShare + (1.0 - kFacesShare) * fraction); };
-  Dataset output = writeCog(*faces, request.output, "", progress, {request.output.string()});
+  // One-channel strips (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes;
+  // a window is paged as any raster, and carries its blocks' ranges as any raster does.
+  MetadataItems ranges;
+  if (pyramid.samples.bands == 1) ranges = window ? blockRangeItems(*faces) : scanPageRanges(*faces, nside).metadataItems();
+  Dataset output = writeCog(*faces, request.output, "", progressShare(request.progress, kFacesShare, 1.0),
+                            {request.output.string()}, ranges);
   return {figure,
           true,
           output->GetRasterXSize(),

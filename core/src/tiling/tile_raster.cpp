@@ -9,6 +9,7 @@
 #include <strata/tiling.hpp>
 
 #include "pipeline/files_gdal_reads.hpp"
+#include "tiling/block_range_scan.hpp"
 #include "tiling/cog_writing.hpp"
 #include "tiling/healpix_tiling.hpp"
 #include "tiling/tile_target.hpp"
@@ -17,6 +18,9 @@ namespace strata {
 namespace {
 
 using tiling::Dataset;
+
+// Of a reprojected raster's time, warping takes the most; writing it again, without warping, the rest.
+constexpr double kWarpedShare = 0.7;
 
 Dataset openInput(const std::filesystem::path& file, const SourceLocation& where) {
   CPLErrorReset();
@@ -39,6 +43,20 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
                 "convert to 8/16/32-bit integers or floats: gdal_translate -ot Float32");
 }
 
+// The COG of `input` in `target` (empty: its own CRS). A one-channel raster carries its blocks' ranges
+// (strata/block_ranges.hpp), which bound a patch's heights by its data at any size; they are those of the
+// texels written, so a reprojected raster is written twice: warped, then again with the ranges of what was
+// warped.
+Dataset writePyramid(GDALDataset& input, const std::filesystem::path& partial, const std::string& target,
+                     const std::function<void(double)>& progress, const SourceLocation& where) {
+  if (input.GetRasterCount() != 1) return tiling::writeCog(input, partial, target, progress, where);
+  if (target.empty()) return tiling::writeCog(input, partial, "", progress, where, tiling::blockRangeItems(input));
+  Dataset warped = tiling::writeCog(input, partial.parent_path() / "reprojected.tif", target,
+                                    tiling::progressShare(progress, 0.0, kWarpedShare), where);
+  return tiling::writeCog(*warped, partial, "", tiling::progressShare(progress, kWarpedShare, 1.0), where,
+                          tiling::blockRangeItems(*warped));
+}
+
 // The pyramid, written into `partial` (in the scratch folder beside the output).
 TilingResult tileInto(const PluginRegistry& plugins, GDALDataset& input, TilingRequest request,
                       const std::filesystem::path& partial) {
@@ -55,7 +73,7 @@ TilingResult tileInto(const PluginRegistry& plugins, GDALDataset& input, TilingR
                 "add --to " + std::string(tiling::kHealpixPyramid) + ", or leave --nside out");
   const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input.GetRasterXSize(),
                                                 input.GetRasterYSize(), request.target, {"--to"});
-  Dataset output = tiling::writeCog(input, partial, target, request.progress, where);
+  Dataset output = writePyramid(input, partial, target, request.progress, where);
   return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(),
           output->GetRasterYSize(), output->GetRasterBand(1)->GetOverviewCount()};
 }

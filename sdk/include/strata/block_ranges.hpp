@@ -1,7 +1,11 @@
 #pragma once
 #include <strata/export.hpp>
+#include <cstdint>
+#include <functional>
 #include <limits>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <strata/layer.hpp>
@@ -9,28 +13,36 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// The raw values of a raster's square blocks of level-0 texels, as its source counts them while reading the
-// raster whole: what lets a layer bound its heights over a region (Layer::valuesWithin), so that a patch of
-// a plateau knows it lies on the plateau (docs/geometry.md, "Height ranges").
+// The raw values of a raster's square blocks of level-0 texels: what lets a layer bound its heights over a
+// region (Layer::valuesWithin), so that a patch of a plateau knows it lies on the plateau (docs/geometry.md,
+// "Height ranges"). A source counts them while reading a small raster whole, or reads those `strata tile`
+// stored in the file (metadataItems), for a raster of any size.
 class BlockRanges {
  public:
   // 64 texels a side: 4,096 blocks for a 4096 x 4096 raster, each a few vertex spacings of the finest patch
   // that covers it, so that the ranges are about as tight as any patch can use.
   static constexpr int kBlockTexels = 64;
+  // At most 65,536 blocks go into a file (768 KiB, 1 MiB of metadata text): a 46080 x 23040 global DEM
+  // (MOLA's 463 m) keeps blocks of 128 texels, 59 km; blocks are doubled until they fit.
+  static constexpr std::size_t kMostStoredBlocks = 65536;
 
   struct Block {
     double least = std::numeric_limits<double>::infinity();
     double greatest = -std::numeric_limits<double>::infinity();
-    int counted = 0;  // texels that hold data
+    std::int64_t counted = 0;  // texels that hold data
   };
 
-  BlockRanges(int width, int height);
+  // Blocks of `blockTexels` a side (a power of two, at least kBlockTexels).
+  BlockRanges(int width, int height, int blockTexels = kBlockTexels);
+  // The least block side from kBlockTexels up whose blocks of a width x height raster a file can store.
+  static int storedBlockTexels(int width, int height);
 
   // A texel that holds data (drawn: finite and let through by the mask).
   void count(int column, int row, double value);
 
   int width() const { return width_; }
   int height() const { return height_; }
+  int blockTexels() const { return blockTexels_; }
   int columns() const { return columns_; }  // blocks across
   int rows() const { return rows_; }        // blocks down
   const Block& at(int blockColumn, int blockRow) const { return blocks_[index(blockColumn, blockRow)]; }
@@ -39,10 +51,24 @@ class BlockRanges {
   // The extremes of every counted texel; none where no texel holds data.
   std::optional<ValueRange> whole() const;
 
+  // Blocks twice as large each way, each holding the four it covers.
+  BlockRanges coarsened() const;
+
+  // The items that store the ranges in a file's metadata (GDAL's default domain), coarsened to at most
+  // kMostStoredBlocks; extremes as floats rounded outwards, so that they still bound every value. And the
+  // ranges read back from them (`item` gives an item's value, or null): none where the file has none or
+  // they do not fit a raster of width x height.
+  std::vector<std::pair<std::string, std::string>> metadataItems() const;
+  using MetadataItem = std::function<const char*(const std::string& name)>;
+  static std::optional<BlockRanges> fromMetadata(int width, int height, const MetadataItem& item);
+  // Whether the metadata holds such items at all, read back or not.
+  static bool inMetadata(const MetadataItem& item);
+
  private:
   std::size_t index(int blockColumn, int blockRow) const { return std::size_t(blockRow) * columns_ + blockColumn; }
+  std::int64_t texelsOf(int blockColumn, int blockRow) const;
 
-  int width_, height_, columns_, rows_;
+  int width_, height_, blockTexels_, columns_, rows_;
   std::vector<Block> blocks_;
 };
 
