@@ -2,10 +2,13 @@
 // sit in an atlas (a 2D array texture of 514x514 slots: 512 texels and a 1-texel border) and the index
 // of page references, shared by every layer, says which slot holds each page of each level, or which
 // coarser page stands in for it (core/src/paging/page_index.hpp gives the layout).
+#include "strata/texel_address.glsl"
+
 uniform usampler2D strata_pageIndex;
 
 const int kPageIndexWidth = 4096;
 const int kPagePayload = 512;
+const int kPagePayloadBits = 9;  // kPagePayload = 2^9
 
 uint pageIndexEntry(uint i) {
   return texelFetch(strata_pageIndex, ivec2(int(i % uint(kPageIndexWidth)), int(i / uint(kPageIndexWidth))), 0).r;
@@ -14,8 +17,18 @@ uint pageIndexEntry(uint i) {
 // Texels of a level: the raster's size / 2^level, rounded up, as PagePyramid has it.
 ivec2 pagedLevelSize(ivec2 size, int level) { return (size + (1 << level) - 1) >> level; }
 
-// The page of a level holding texel position `texel` (continuous, texel centres at .5), among pages [low, high].
-ivec2 pageAt(vec2 texel, ivec2 low, ivec2 high) { return clamp(ivec2(floor(texel / float(kPagePayload))), low, high); }
+// The level texel of `address` on pyramid level `level` (level-0 texels / 2^level): its whole part, and in
+// `part` what lies beyond it, in [0, 1). Integer shifts divide the whole texel, so it keeps every digit.
+ivec2 levelTexel(TexelAddress address, int level, out vec2 part) {
+  vec2 carried = floor(address.part);
+  ivec2 whole = address.whole + ivec2(carried);
+  ivec2 levelWhole = whole >> level;  // sign-extending: the floor of the quotient
+  part = (vec2(whole - (levelWhole << level)) + (address.part - carried)) / float(1 << level);
+  return levelWhole;
+}
+
+// The page of a level holding level texel `whole`, among pages [low, high].
+ivec2 pageAt(ivec2 whole, ivec2 low, ivec2 high) { return clamp(whole >> kPagePayloadBits, low, high); }
 
 // The pages a sample of a level `levelSize` texels across may take: all of them, or with face >= 0 those of
 // one face of a HEALPix pyramid (strata/healpix_pyramid.hpp: faces side by side, each levelSize.y across),
@@ -32,25 +45,26 @@ void pageRange(ivec2 levelSize, int face, out ivec2 low, out ivec2 high) {
   high = ivec2(face * pages + pages - 1, pages - 1);
 }
 
-// The value at level-0 texel position `texel0` on pyramid level `level`, filtered bilinearly by hand
-// within one slot: the border makes the four texels always lie in it. Texel fetches, not the sampler's
-// filtering: llvmpipe gave one vertex different filtered values in different invocations (see
-// surface_point.glsl), and the atlas has no neighbours to filter across anyway. Where the page is not
-// loaded, the coarser page its index entry references is sampled instead; where nothing is, vec4(0).
-// `face`: as pageRange.
-vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int level, vec2 texel0, int face) {
+// The value at level-0 texel `address` on pyramid level `level`, filtered bilinearly by hand within one
+// slot: the border makes the four texels always lie in it. Texel fetches, not the sampler's filtering:
+// llvmpipe gave one vertex different filtered values in different invocations (see surface_point.glsl),
+// and the atlas has no neighbours to filter across anyway. Where the page is not loaded, the coarser page
+// its index entry references is sampled instead; where nothing is, vec4(0). `face`: as pageRange.
+vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int level, TexelAddress address, int face) {
   ivec2 levelSize = pagedLevelSize(size, level), low, high;
   pageRange(levelSize, face, low, high);
-  ivec2 page = pageAt(texel0 / float(1 << level), low, high);
+  vec2 part;
+  ivec2 page = pageAt(levelTexel(address, level, part), low, high);
   uint entry = pageIndexEntry(pageIndexEntry(indexBase + uint(level)) +
                               uint(page.y * ((levelSize.x + kPagePayload - 1) / kPagePayload) + page.x));
   if (entry == 0u) return vec4(0.0);
   int held = int((entry >> 16) & 31u);
-  vec2 texel = texel0 / float(1 << held);
+  ivec2 whole = levelTexel(address, held, part);
   pageRange(pagedLevelSize(size, held), face, low, high);
-  page = pageAt(texel, low, high);
-  // Slot texel positions, centres at integers: level texel j of the page is slot texel j + 1.
-  vec2 position = texel - vec2(page * kPagePayload) + 0.5;
+  page = pageAt(whole, low, high);
+  // Slot texel positions, centres at integers: level texel j of the page is slot texel j + 1. The whole
+  // texels' difference is exact, and small: the position is a float of a page's size.
+  vec2 position = vec2(whole - page * kPagePayload) + part + 0.5;
   ivec2 corner = clamp(ivec2(floor(position)), ivec2(0), ivec2(kPagePayload));
   vec2 f = clamp(position - vec2(corner), 0.0, 1.0);
   int slot = int(entry & 0xffffu);
@@ -60,23 +74,29 @@ vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int leve
 }
 
 // Trilinear sampling across levels (seed 000 section 4.3.2 "a shader implementation of trilinear
-// mipmapping") at level-0 texel position `texel0`, the level chosen from the footprint: level-0 texels to
-// the next sample. `face`: as pageRange.
-vec4 samplePagedTexels(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, vec2 texel0, float footprint,
-                       int face) {
+// mipmapping") at level-0 texel `address`, the level chosen from the footprint: level-0 texels to the next
+// sample. `face`: as pageRange.
+vec4 samplePagedTexels(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address,
+                       float footprint, int face) {
   float lod = clamp(log2(footprint), 0.0, float(levels - 1));
   int level = int(floor(lod));
-  vec4 fine = samplePagedLevel(atlas, indexBase, size, level, texel0, face);
+  vec4 fine = samplePagedLevel(atlas, indexBase, size, level, address, face);
   if (level + 1 >= levels || fract(lod) == 0.0) return fine;
-  return mix(fine, samplePagedLevel(atlas, indexBase, size, level + 1, texel0, face), fract(lod));
+  return mix(fine, samplePagedLevel(atlas, indexBase, size, level + 1, address, face), fract(lod));
 }
 
-// The same at texture coordinates `uv` (0..1 over the raster), the footprint given as their steps to the next
-// sample.
-vec4 samplePaged(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, vec2 uv, vec2 stepX, vec2 stepY,
-                 bool repeatX) {
-  if (repeatX) uv.x = fract(uv.x);
+// The same for a raster's own texels, the footprint given as texture coordinates' steps to the next sample;
+// a raster around the body (`repeatX`) wraps the address into its one period.
+vec4 samplePaged(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address, vec2 stepX,
+                 vec2 stepY, bool repeatX) {
+  if (repeatX) {
+    float carried = floor(address.part.x);
+    int x = address.whole.x + int(carried);
+    if (x < 0) x += size.x * ((size.x - 1 - x) / size.x);  // % is defined for operands >= 0 only
+    address.whole.x = x % size.x;
+    address.part.x -= carried;
+  }
   vec2 texels = vec2(size);
-  return samplePagedTexels(atlas, indexBase, levels, size, uv * texels,
+  return samplePagedTexels(atlas, indexBase, levels, size, address,
                            max(length(stepX * texels), length(stepY * texels)), -1);
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <string>
@@ -30,7 +31,9 @@ Items stored(const BlockRanges& ranges) {
 }
 
 // Values no float holds exactly (a tenth of odd numbers), and no data in the texels of every seventh column.
-double valueAt(int column, int row) { return 0.1 * (2 * ((column * 7919 + row * 104729) % 5001) + 1) - 500.0; }
+double valueAt(int column, int row) {
+  return 0.1 * double(2 * ((std::int64_t{column} * 7919 + std::int64_t{row} * 104729) % 5001) + 1) - 500.0;
+}
 bool holdsData(int column) { return column % 7 != 0 || column > 250; }
 
 TEST(BlockRanges, StoredRangesHoldEveryValueOfTheirBlocks) {

@@ -56,7 +56,7 @@ TEST(LocalTextureFrame, LongitudeLatitudeIsExactlyLinearAndReachesFarthest) {
   const glm::dvec2 reference(radians(137.4), radians(-4.6));
   const double metresPerDegree = radians(1.0) * kRadius;
   const TextureMapping mapping = rasterAt(*projection, reference, glm::dvec2(metresPerDegree, metresPerDegree));
-  const LocalTextureFrame frame = localTextureFrame(mapping, reference, kTolerance, false);
+  const LocalTextureFrame frame = localTextureFrame(mapping, reference, glm::dvec2(kTolerance), false);
   EXPECT_EQ(frame.coordinates, LocalCoordinates::LonLat);
   EXPECT_GE(frame.reach, 0.01) << "rad: the map is linear in longitude and latitude";
   EXPECT_NEAR(frame.uv.x, 0.5, 1e-9);
@@ -70,7 +70,7 @@ TEST(LocalTextureFrame, PolarStereographicNearThePoleTakesTheTangentPlane) {
   const auto projection = projectionOfCrs(plugins, "+proj=stere +lat_0=90 +lat_ts=90 +R=6371000", {"test"});
   const glm::dvec2 reference(radians(33.0), radians(89.95));
   const TextureMapping mapping = rasterAt(*projection, reference, glm::dvec2(1.0, 1.0));
-  const LocalTextureFrame frame = localTextureFrame(mapping, reference, kTolerance, false);
+  const LocalTextureFrame frame = localTextureFrame(mapping, reference, glm::dvec2(kTolerance), false);
   EXPECT_EQ(frame.coordinates, LocalCoordinates::Tangent);
   EXPECT_GE(frame.reach, 2e-4) << "rad on the ground: 1.3 km, far beyond what a view 2 m up resolves";
   expectAgreesWithin(frame, mapping, reference);
@@ -82,7 +82,7 @@ TEST(LocalTextureFrame, AMappingUndefinedAtTheReferenceHasNoReach) {
   const TextureMapping mapping = [&](glm::dvec2 lonlat) -> std::optional<glm::dvec2> {
     return projection->forward(lonlat);
   };
-  EXPECT_EQ(localTextureFrame(mapping, {radians(180.0), 0.0}, kTolerance, false).reach, 0.0) << "the far side";
+  EXPECT_EQ(localTextureFrame(mapping, {radians(180.0), 0.0}, glm::dvec2(kTolerance), false).reach, 0.0) << "the far side";
 }
 
 // The tangent plane's offsets, east then north, land where the unit sphere puts them: a step e east leaves

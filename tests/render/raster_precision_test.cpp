@@ -18,8 +18,8 @@
 #include <strata/plugin_registry.hpp>
 #include <strata/tiling.hpp>
 
+#include "board_judging.hpp"
 #include "rendering.hpp"
-#include "sphere_raycast.hpp"
 #include "temporary_directory.hpp"
 #include "test_rasters.hpp"
 
@@ -31,7 +31,7 @@ constexpr double kRadius = 6371000.0;            // m: the pipeline's body
 constexpr double kTexel = 0.01;                  // m
 constexpr int kTexels = 1024;
 // 16 texels a cell: mip levels 1 to 4 stay inside cells. 32 for a board warped into another projection,
-// whose filtering blurs more of each cell's edge (judgedCell).
+// whose filtering blurs more of each cell's edge (judgeBoard).
 constexpr int kCellTexels = 16, kWarpedCellTexels = 32;
 constexpr unsigned char kLight = 231, kDark = 48;
 
@@ -44,61 +44,21 @@ struct Place {
 
 void PrintTo(const Place& place, std::ostream* out) { *out << place.name; }
 
-struct Board {
-  double west, north;        // deg
-  double lonStep, latStep;   // deg a texel
-
-  explicit Board(const Place& place)
-      : lonStep(glm::degrees(kTexel / (kRadius * std::cos(glm::radians(place.lat))))),
-        latStep(glm::degrees(kTexel / kRadius)) {
-    west = place.lon - lonStep * kTexels / 2;
-    north = place.lat + latStep * kTexels / 2;
-  }
-  // Level-0 texel position (x east, y south) of a longitude and latitude, the longitude wrapped to the board.
-  glm::dvec2 texelOf(double lon, double lat) const {
-    const double east = std::remainder(lon - west, 360.0);
-    return {east / lonStep, (north - lat) / latStep};
-  }
-  std::array<double, 4> extent() const {
-    return {west, north - latStep * kTexels, west + lonStep * kTexels, north};
-  }
-};
-
-
-
-// The cell a pixel shows, if the filtered texels it samples lie in one cell: its 3x3 neighbourhood's hits,
-// widened by what filtering reads beyond a point (half a texel of the coarser of the two mip levels the
-// footprint blends, 2^ceil(log2 footprint) level-0 texels), must fall in a single cell of the board.
-// `resampled`: a board warped into another projection, whose bilinear resampling blurs each edge over a
-// texel and whose mip levels are not aligned with the cells: a whole coarse texel (turned, up to sqrt 2 of
-// it along the board's axes) and one more texel on each side.
-std::optional<glm::ivec2> judgedCell(const View& view, const Board& board, int x, int y, bool resampled,
-                                     double plateau) {
-  glm::dvec2 low(1e300), high(-1e300);
-  for (int dy = -1; dy <= 1; ++dy)
-    for (int dx = -1; dx <= 1; ++dx) {
-      const std::optional<SurfaceHit> hit = raycastSphere(view, kRadius + plateau, x + dx, y + dy);
-      if (!hit) return std::nullopt;
-      const glm::dvec2 texel = board.texelOf(hit->lon, hit->lat);
-      low = glm::min(low, texel);
-      high = glm::max(high, texel);
-    }
-  const double footprint = std::max(high.x - low.x, high.y - low.y) / 2.0;  // texels a pixel
-  const double coarsest = std::exp2(std::ceil(std::log2(std::max(footprint, 1.0))));
-  const double margin = resampled ? std::sqrt(2.0) * coarsest + 1.0 : 0.5 * coarsest;
-  low -= margin;
-  high += margin;
-  if (low.x < 0 || low.y < 0 || high.x > kTexels || high.y > kTexels) return std::nullopt;
-  const int cell = resampled ? kWarpedCellTexels : kCellTexels;
-  const glm::ivec2 first(glm::floor(low / double(cell))), last(glm::floor(high / double(cell)));
-  if (first != last) return std::nullopt;
-  return first;
+// The board of 1 cm texels centred at `place`, of cells `cellTexels` a side.
+BoardGrid boardAt(const Place& place, int cellTexels) {
+  BoardGrid board;
+  board.lonStep = glm::degrees(kTexel / (kRadius * std::cos(glm::radians(place.lat))));
+  board.latStep = glm::degrees(kTexel / kRadius);
+  board.west = place.lon - board.lonStep * kTexels / 2;
+  board.north = place.lat + board.latStep * kTexels / 2;
+  board.columns = board.rows = kTexels;
+  board.cellTexels = cellTexels;
+  return board;
 }
 
-std::string degrees(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12f", value);
-  return text;
+std::array<double, 4> extentOf(const BoardGrid& board) {
+  return {board.west, board.north - board.latStep * board.rows, board.west + board.lonStep * board.columns,
+          board.north};
 }
 
 // Writes the board at `place`, warped into `projection` by strata tile unless it is empty, renders it with
@@ -108,9 +68,9 @@ std::string degrees(double value) {
 void expectCrisp(const Place& place, const std::string& geometry, double tilt, const std::string& projection,
                  double plateau = 0.0) {
   TemporaryDirectory directory;
-  const Board board(place);
   const int side = projection.empty() ? kCellTexels : kWarpedCellTexels;
-  writeColourRaster(directory.path() / "board.tif", kTexels, kTexels, board.extent(), [side](int column, int row) {
+  const BoardGrid board = boardAt(place, side);
+  writeColourRaster(directory.path() / "board.tif", kTexels, kTexels, extentOf(board), [side](int column, int row) {
     const unsigned char grey = (column / side + row / side) % 2 == 0 ? kLight : kDark;
     return Rgb8{grey, grey, grey};
   });
@@ -126,7 +86,7 @@ void expectCrisp(const Place& place, const std::string& geometry, double tilt, c
   }
   const auto pipeline = directory.write(
       "board.yaml", "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
-                    "camera: {lon: " + degrees(place.cameraLon) + ", lat: " + degrees(place.cameraLat) +
+                    "camera: {lon: " + pipelineDegrees(place.cameraLon) + ", lat: " + pipelineDegrees(place.cameraLat) +
                     ", altitude: " + std::to_string(plateau + 2.0) + ", heading: 30, tilt: " + std::to_string(tilt) +
                     ", fov: 40}\nnodes:\n"
                     "  board: {type: source.gdal, path: " + raster + "}\n" + ground +
@@ -135,17 +95,10 @@ void expectCrisp(const Place& place, const std::string& geometry, double tilt, c
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kSize, kSize);
   const View view = engine->view(kSize, kSize);
-  int judged = 0, wrong = 0;
-  for (int y = 1; y < kSize - 1; ++y)
-    for (int x = 1; x < kSize - 1; ++x) {
-      const std::optional<glm::ivec2> cell = judgedCell(view, board, x, y, !projection.empty(), plateau);
-      if (!cell) continue;
-      ++judged;
-      const int expected = (cell->x + cell->y) % 2 == 0 ? kLight : kDark;
-      if (std::abs(image.at(x, y)[1] - expected) > 2) ++wrong;  // 2 levels: 8-bit rounding after float arithmetic
-    }
-  EXPECT_GT(judged, kSize * kSize / 5);
-  EXPECT_EQ(wrong, 0) << "of " << judged << " pixels";
+  const Judgement judgement =
+      judgeBoard(image, view, kRadius + plateau, board, !projection.empty(), kLight, kDark);
+  EXPECT_GT(judgement.judged, kSize * kSize / 5);
+  EXPECT_EQ(judgement.wrong, 0) << "of " << judgement.judged << " pixels";
 }
 
 class RasterPrecision : public ::testing::TestWithParam<std::tuple<Place, std::string, double>> {};

@@ -61,7 +61,7 @@ bool differentiate(Samples& f, LocalTextureFrame& frame, bool periodicU) {
 
 // Whether the polynomial is within `tolerance` of the mapping on circles of `reach` and half of it. Offsets
 // that name no surface point are passed over: no surface point has them.
-bool agrees(const LocalTextureFrame& frame, Samples& f, double reach, double tolerance, bool periodicU) {
+bool agrees(const LocalTextureFrame& frame, Samples& f, double reach, glm::dvec2 tolerance, bool periodicU) {
   constexpr int kPoints = 16;
   for (double radius : {reach, 0.5 * reach})
     for (int i = 0; i < kPoints; ++i) {
@@ -71,7 +71,7 @@ bool agrees(const LocalTextureFrame& frame, Samples& f, double reach, double tol
       const glm::dvec2 exact = f(offset.x, offset.y);
       if (!f.defined) return false;
       const glm::dvec2 error = difference(frame.at(offset), exact, periodicU);
-      if (std::max(std::abs(error.x), std::abs(error.y)) > tolerance) return false;
+      if (std::abs(error.x) > tolerance.x || std::abs(error.y) > tolerance.y) return false;
     }
   return true;
 }
@@ -100,7 +100,7 @@ double groundReach(LocalCoordinates coordinates, double reach, glm::dvec2 refere
   return coordinates == LocalCoordinates::LonLat ? reach * std::cos(reference.y) : reach;
 }
 
-LocalTextureFrame localTextureFrame(const TextureMapping& mapping, glm::dvec2 reference, double tolerance,
+LocalTextureFrame localTextureFrame(const TextureMapping& mapping, glm::dvec2 reference, glm::dvec2 tolerance,
                                     bool periodicU) {
   LocalTextureFrame best;
   double bestGround = 0.0;

@@ -37,11 +37,12 @@ using TextureMapping = std::function<std::optional<glm::dvec2>(glm::dvec2 lonlat
 // unit sphere: the inverse of what shaders/strata/local_offsets.glsl computes from a point's offsets.
 glm::dvec2 lonlatOfTangentOffset(glm::dvec2 reference, glm::dvec2 eastNorth);
 
-// The frame of `mapping` about `reference` in whichever coordinates reach farther. `tolerance` (in uv)
-// bounds the polynomial's error within the reach, checked against `mapping` at 32 points on two circles
+// The frame of `mapping` about `reference` in whichever coordinates reach farther. `tolerance` (in u and in
+// v: a hundredth of a texel is a different share of each where the raster is not square) bounds the
+// polynomial's error within the reach, checked against `mapping` at 32 points on two circles
 // about the reference for each reach tried, from kLargestReach down by halves. `periodicU`: u is periodic
 // with period 1 (a raster around the body), so that the check compares u modulo 1.
-LocalTextureFrame localTextureFrame(const TextureMapping& mapping, glm::dvec2 reference, double tolerance,
+LocalTextureFrame localTextureFrame(const TextureMapping& mapping, glm::dvec2 reference, glm::dvec2 tolerance,
                                     bool periodicU);
 
 // 0.05 rad: 320 km on Earth, beyond what a view near the ground sees of the surface at a pixel's precision.

@@ -21,10 +21,9 @@ std::string PagedRasterLayer::glsl() const {
   return samplingGlsl("#include \"strata/paged_texture.glsl\"\n"
                       "#include \"" + pageAtlasInclude(placement_.format) + "\"\n"
                       "uniform uint " + p + "_indexBase;\n"
-                      "uniform int " + p + "_levels;\n"
-                      "uniform ivec2 " + p + "_size;\n",
-                      "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p +
-                          "_indexBase, " + p + "_levels, " + p + "_size, uv, stepX, stepY, repeatX)") +
+                      "uniform int " + p + "_levels;\n",
+                      "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p +
+                          "_levels, " + p + "_size, " + p + "_texel(p), stepX, stepY, repeatX)") +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 
@@ -39,7 +38,7 @@ std::string PagedRasterLayer::faceSamplingGlsl() const {
          "  float nside = float(" + p + "_size.y);\n"
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
          "  return " + p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + p +
-         "_indexBase, " + p + "_levels, " + p + "_size, texel, footprint * nside, int(point.x)));\n"
+         "_indexBase, " + p + "_levels, " + p + "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
          "}\n";
 }
 
@@ -57,7 +56,6 @@ void PagedRasterLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   bindSampling(program);
   program.set(prefix() + "_indexBase", placement_.indexBase);
   program.set(prefix() + "_levels", placement_.levels);
-  program.set(prefix() + "_size", glm::ivec2(placement_.width, placement_.height));
 }
 
 void PagedRasterLayer::setPageDemand(PageDemand demand) const {

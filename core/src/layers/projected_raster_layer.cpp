@@ -68,7 +68,8 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
   projection_ = {glm::vec4(projection[0]), glm::vec4(projection[1])};
   mapToTexture_ = mapToTextureOf(georeference_, width, height);
-  texels_ = glm::vec2(float(width), float(height));
+  size_ = glm::ivec2(width, height);
+  texels_ = glm::vec2(size_);
   repeatX_ = spansPeriod(georeference_, width);
   if (blockRanges_) blockCaps_ = std::make_shared<const BlockCaps>(blockRanges_, georeference_, repeatX_);
 }
@@ -84,10 +85,14 @@ void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
     if (!xy) return std::nullopt;
     return glm::dvec2((xy->x - t[0]) / uSpan, (xy->y - t[3]) / vSpan);
   };
-  const double tolerance = kRelativeTolerance / std::max(texels_.x, texels_.y);
-  const LocalTextureFrame frame = localTextureFrame(mapping, referenceLonlat, tolerance, repeatX_);
+  const LocalTextureFrame frame =
+      localTextureFrame(mapping, referenceLonlat, kRelativeTolerance / glm::dvec2(size_), repeatX_);
   // A raster around the body: u at the reference taken into [0, 1), where float keeps its digits.
-  referenceUv_ = glm::vec2(repeatX_ ? frame.uv.x - std::floor(frame.uv.x) : frame.uv.x, frame.uv.y);
+  const glm::dvec2 uv(repeatX_ ? frame.uv.x - std::floor(frame.uv.x) : frame.uv.x, frame.uv.y);
+  referenceUv_ = glm::vec2(uv);
+  const glm::dvec2 texel = uv * glm::dvec2(size_);
+  referenceTexel_ = glm::ivec2(glm::floor(texel));
+  referenceFraction_ = glm::vec2(texel - glm::floor(texel));
   localTerms_ = {columns(frame.jacobian), columns(frame.hessianU), columns(frame.hessianV)};
   reach_ = float(frame.reach);
   tangent_ = frame.coordinates == LocalCoordinates::Tangent;
@@ -108,6 +113,7 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "uniform vec4 " + p + "_mapToTexture;\n"
          "uniform vec2 " + p + "_scaleOffset;\n"
          "uniform bool " + p + "_repeatX;\n"
+         "uniform ivec2 " + p + "_size;\n"
          "uniform vec2 " + p + "_texels;\n" +
          declarations +
          "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
@@ -135,7 +141,10 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
 std::string ProjectedRasterLayer::relativeGlsl() const {
   const std::string& p = prefix_;
   return "#include \"strata/local_offsets.glsl\"\n"
+         "#include \"strata/texel_address.glsl\"\n"
          "uniform vec2 " + p + "_referenceUv;\n"
+         "uniform ivec2 " + p + "_referenceTexel;\n"
+         "uniform vec2 " + p + "_referenceFraction;\n"
          "uniform bool " + p + "_tangent;\n"
          "uniform vec2 " + p + "_referenceLatitude;\n"
          "uniform vec4 " + p + "_jacobian;\n"
@@ -152,10 +161,17 @@ std::string ProjectedRasterLayer::relativeGlsl() const {
          "vec2 " + p + "_curvature(vec2 d, vec2 step) {\n"
          "  return vec2(dot(mat2(" + p + "_hessianU) * d, step), dot(mat2(" + p + "_hessianV) * d, step));\n"
          "}\n"
+         "vec2 " + p + "_fromReference(vec2 d) {\n"
+         "  return mat2(" + p + "_jacobian) * d + 0.5 * " + p + "_curvature(d, d);\n"
+         "}\n"
          "vec3 " + p + "_at(SurfacePoint p) {\n"
          "  if (!" + p + "_near(p)) return " + p + "_coordinates(p.lonlat);\n"
-         "  vec2 d = " + p + "_offset(p);\n"
-         "  return vec3(" + p + "_referenceUv + mat2(" + p + "_jacobian) * d + 0.5 * " + p + "_curvature(d, d), 1.0);\n"
+         "  return vec3(" + p + "_referenceUv + " + p + "_fromReference(" + p + "_offset(p)), 1.0);\n"
+         "}\n"
+         "TexelAddress " + p + "_texel(SurfacePoint p) {\n"
+         "  if (!" + p + "_near(p)) return texelAddressOf(" + p + "_coordinates(p.lonlat).xy * " + p + "_texels);\n"
+         "  return TexelAddress(" + p + "_referenceTexel,\n"
+         "                      " + p + "_referenceFraction + " + p + "_fromReference(" + p + "_offset(p)) * " + p + "_texels);\n"
          "}\n"
          "vec2 " + p + "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) {\n"
          "  if (!" + p + "_near(p)) return " + p + "_absoluteStep(at, p.lonlat, lonlatStep);\n"
@@ -175,11 +191,10 @@ std::string ProjectedRasterLayer::texelGlsl() const {
          "_step(at, p, p.lonlatDy) * " + p + "_texels);\n"
          "}\n"
          "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_at(p);\n"
-         "  if (at.z <= 0.0) return -1.0;\n"
-         "  vec2 texel = at.xy * " + p + "_texels;\n"
-         "  float across = " + p + "_repeatX ? 1e30 : min(texel.x, " + p + "_texels.x - texel.x);\n"
-         "  return min(across, min(texel.y, " + p + "_texels.y - texel.y));\n"
+         "  if (" + p + "_at(p).z <= 0.0) return -1.0;\n"
+         "  vec4 edges = edgeDistances(" + p + "_texel(p), " + p + "_size);\n"
+         "  float across = " + p + "_repeatX ? 1e30 : min(edges.x, edges.z);\n"
+         "  return min(across, min(edges.y, edges.w));\n"
          "}\n";
 }
 
@@ -200,8 +215,11 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_mapToTexture", mapToTexture_);
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
   program.set(prefix_ + "_repeatX", repeatX_ ? 1 : 0);
+  program.set(prefix_ + "_size", size_);
   program.set(prefix_ + "_texels", texels_);
   program.set(prefix_ + "_referenceUv", referenceUv_);
+  program.set(prefix_ + "_referenceTexel", referenceTexel_);
+  program.set(prefix_ + "_referenceFraction", referenceFraction_);
   program.set(prefix_ + "_jacobian", localTerms_[0]);
   program.set(prefix_ + "_hessianU", localTerms_[1]);
   program.set(prefix_ + "_hessianV", localTerms_[2]);
