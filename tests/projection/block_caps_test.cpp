@@ -11,7 +11,11 @@
 
 #include <glm/glm.hpp>
 
+#include <strata/healpix_pyramid.hpp>
+#include <strata/page_pyramid.hpp>
+
 #include "layers/block_caps.hpp"
+#include "layers/healpix_page_caps.hpp"
 #include "projection_cases.hpp"
 
 namespace strata {
@@ -128,6 +132,63 @@ TEST(BlockCaps, ASmallMapTellsCapsInsideFromCapsAcrossItsEdge) {
   const BlockValues beyond = blockCaps.within(capsNear({140.0, -4.6}, {1e-3})[0]);
   EXPECT_TRUE(beyond.gaps);
   EXPECT_FALSE(beyond.counted());
+}
+
+// A HEALPix pyramid's strip of faces bounded by its stored page ranges (core/src/layers/healpix_page_caps.cpp),
+// as an icosahedral patch over it asks them: every texel a cap's points sample lies in the cap's range, across
+// the faces' edges (where the strip puts faces side by side that do not meet on the body) and at the poles,
+// and caps over face 4, which holds no data, find gaps. The values rise from south to north, so that a cap's
+// range shows where its pages lie.
+TEST(BlockCaps, AHealpixStripsPageRangesHoldEveryTexelACapSamples) {
+  constexpr int kNside = 1024;
+  const std::shared_ptr<const Projection> strip =
+      healpix::stripProjection(test::makeProjection("+proj=healpix", Ellipsoid{kEarth, 0.0}));
+  const std::array<double, 6> t = healpix::stripGeotransform(kNside);
+  const int pagesAcross = 12 * kNside / kPagePayload;
+  const auto valueAt = [&](glm::ivec2 texel) -> std::optional<double> {
+    if (texel.x / kNside == 4) return std::nullopt;  // face 4 holds no data
+    return 500.0 * strip->inverse({t[0] + (texel.x + 0.5) * t[1], t[3] + (texel.y + 0.5) * t[5]})->y;
+  };
+  std::vector<healpix::PageRanges::Range> finest(std::size_t(pagesAcross) * (kNside / kPagePayload),
+                                                 {INFINITY, -INFINITY, false});
+  for (int row = 0; row < kNside; ++row)
+    for (int column = 0; column < 12 * kNside; ++column) {
+      healpix::PageRanges::Range& page = finest[std::size_t(row / kPagePayload) * pagesAcross + column / kPagePayload];
+      const std::optional<double> value = valueAt({column, row});
+      page = value ? healpix::PageRanges::Range{std::min(page.least, float(*value)), std::max(page.greatest, float(*value)),
+                                                page.uncovered}
+                   : healpix::PageRanges::Range{page.least, page.greatest, true};
+    }
+  const std::shared_ptr<const BlockCaps> caps = pageCapsOf(healpix::PageRanges(kNside, finest), {strip, t}, kNside);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int sampled = 0;
+  for (int i = 0; i < 60; ++i) {
+    const glm::dvec3 centre = glm::normalize(glm::dvec3(unit(random), unit(random), unit(random)));
+    const SphericalCap cap{centre, std::array{1e-4, 3e-3, 0.05}[i % 3]};
+    const BlockValues values = caps->within(cap);
+    for (int j = 0; j < 100; ++j) {
+      const glm::dvec2 map = *strip->forward(lonlatOf(inside(cap, random)));
+      const glm::ivec2 texel(glm::floor(glm::dvec2((map.x - t[0]) / t[1], (map.y - t[3]) / t[5])));
+      const std::optional<double> value = valueAt(glm::clamp(texel, glm::ivec2(0), glm::ivec2(12 * kNside - 1, kNside - 1)));
+      if (!value) {
+        EXPECT_TRUE(values.gaps) << "a point of the cap lies on the face without data";
+        continue;
+      }
+      ++sampled;
+      EXPECT_GE(float(*value), values.least) << "cap at " << centre.x << ", " << centre.y << ", " << centre.z;
+      EXPECT_LE(float(*value), values.greatest) << "cap at " << centre.x << ", " << centre.y << ", " << centre.z;
+    }
+  }
+  EXPECT_GT(sampled, 4000);
+  // At nside 1024 a page is a quarter of a face, its stored range its eight neighbours' too: a small cap in
+  // the far south takes no value of the northern hemisphere, the whole body all of them.
+  const BlockValues south = caps->within({directionOf({radians(137.4), radians(-80.0)}), 1e-4});
+  const BlockValues whole = caps->within({glm::dvec3(0.0, 0.0, 1.0), std::numbers::pi});
+  EXPECT_FALSE(south.gaps);
+  EXPECT_LT(south.greatest, 0.0);
+  EXPECT_TRUE(whole.gaps);
+  EXPECT_GT(whole.greatest, 700.0);
 }
 
 }  // namespace

@@ -72,6 +72,7 @@ TEST_P(HeightRange, ALayerThatDoesNotKnowItsHeightsNeedsBoth) {
   const std::string error = loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100}"));
   EXPECT_NE(error.find("does not know the least and greatest heights"), std::string::npos) << error;
   EXPECT_NE(error.find("gdalinfo -stats"), std::string::npos) << error;
+  EXPECT_NE(error.find("strata tile"), std::string::npos) << error;
   EXPECT_NE(error.find("'globe'"), std::string::npos) << error;
   EXPECT_EQ(loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100, highest: 9000}")), "");
 }

@@ -21,6 +21,17 @@ constexpr double kCapMargin = 1.1;
 // Points on a cap's rim a query tests to lie inside the raster, a twentieth beyond the rim.
 constexpr int kRimSamples = 32;
 constexpr double kRimMargin = 1.05;
+constexpr double kEdgeInset = 1e-6;
+
+std::vector<BlockValues> valuesOf(const BlockRanges& ranges) {
+  std::vector<BlockValues> values;
+  for (int row = 0; row < ranges.rows(); ++row)
+    for (int column = 0; column < ranges.columns(); ++column) {
+      const BlockRanges::Block& block = ranges.at(column, row);
+      values.push_back({block.least, block.greatest, ranges.holdsGaps(column, row)});
+    }
+  return values;
+}
 
 BlockValues spanning(const BlockValues& a, const BlockValues& b) {
   return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps};
@@ -36,30 +47,34 @@ glm::dvec3 rimPoint(const SphericalCap& cap, double angle, double turn) {
 
 }  // namespace
 
-BlockCaps::BlockCaps(std::shared_ptr<const BlockRanges> ranges, RasterGeoreference georeference, bool repeatX)
-    : ranges_(std::move(ranges)), georeference_(std::move(georeference)), repeatX_(repeatX) {
+BlockCaps::BlockCaps(BlockLayout layout, std::vector<BlockValues> values, RasterGeoreference georeference,
+                     bool repeatX, bool coversBody)
+    : layout_(layout), georeference_(std::move(georeference)), repeatX_(repeatX), coversBody_(coversBody) {
   Level blocks;
-  for (int row = 0; row < ranges_->rows(); ++row)
-    for (int column = 0; column < ranges_->columns(); ++column) {
-      const BlockRanges::Block& block = ranges_->at(column, row);
-      blocks.push_back({capOfBlock(column, row), {block.least, block.greatest, ranges_->holdsGaps(column, row)}});
-    }
+  for (int row = 0; row < layout_.rows(); ++row)
+    for (int column = 0; column < layout_.columns(); ++column)
+      blocks.push_back({capOfBlock(column, row), values[std::size_t(row) * layout_.columns() + column]});
   levels_.push_back(std::move(blocks));
   while (columnsAt(levels_.size() - 1) > 1 || rowsAt(levels_.size() - 1) > 1) addCoarserLevel();
 }
 
-int BlockCaps::columnsAt(std::size_t level) const {
-  return ((ranges_->columns() - 1) >> level) + 1;
-}
+BlockCaps::BlockCaps(std::shared_ptr<const BlockRanges> ranges, RasterGeoreference georeference, bool repeatX)
+    : BlockCaps({ranges->width(), ranges->height(), ranges->blockTexels()}, valuesOf(*ranges), std::move(georeference),
+                repeatX, false) {}
 
-int BlockCaps::rowsAt(std::size_t level) const { return ((ranges_->rows() - 1) >> level) + 1; }
+int BlockCaps::columnsAt(std::size_t level) const { return ((layout_.columns() - 1) >> level) + 1; }
+
+int BlockCaps::rowsAt(std::size_t level) const { return ((layout_.rows() - 1) >> level) + 1; }
 
 // The cap around the block's edges as the georeference places them; the whole sphere where some edge point
 // lies outside the projection's domain.
 SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
-  const double side = ranges_->blockTexels();
+  // The far edges a millionth of a block inside: where grids meet in the raster though not on the body (a
+  // HEALPix strip's faces), a point on the edge is taken for the next grid's.
+  const double side = layout_.blockTexels, inset = kEdgeInset * side;
   const double x0 = blockColumn * side, y0 = blockRow * side;
-  const double x1 = std::min(x0 + side, double(ranges_->width())), y1 = std::min(y0 + side, double(ranges_->height()));
+  const double x1 = std::min(x0 + side, double(layout_.width)) - inset;
+  const double y1 = std::min(y0 + side, double(layout_.height)) - inset;
   const std::array<double, 6>& t = georeference_.geotransform;
   std::vector<glm::dvec3> edge;
   for (int i = 0; i < kEdgeSamples; ++i) {
@@ -115,6 +130,7 @@ BlockValues BlockCaps::within(const SphericalCap& cap) const {
 // rim all map into it. The image of a cap that small through a smooth projection is a smooth, nearly
 // elliptic blob, which the rim points bound with that margin.
 bool BlockCaps::holdsWhole(const SphericalCap& cap) const {
+  if (coversBody_) return true;
   if (cap.angle >= 0.5 * std::numbers::pi) return false;  // a hemisphere: its image is no small blob
   const std::array<double, 6>& t = georeference_.geotransform;
   const glm::dmat2 toTexels = glm::inverse(glm::dmat2(t[1], t[4], t[2], t[5]));
@@ -122,8 +138,8 @@ bool BlockCaps::holdsWhole(const SphericalCap& cap) const {
     const std::optional<glm::dvec2> map = georeference_.projection->forward(lonlatOf(unit));
     if (!map) return false;
     const glm::dvec2 texel = toTexels * (*map - glm::dvec2(t[0], t[3]));
-    const bool across = repeatX_ || (texel.x >= 1.0 && texel.x <= ranges_->width() - 1.0);
-    return across && texel.y >= 1.0 && texel.y <= ranges_->height() - 1.0;
+    const bool across = repeatX_ || (texel.x >= 1.0 && texel.x <= layout_.width - 1.0);
+    return across && texel.y >= 1.0 && texel.y <= layout_.height - 1.0;
   };
   if (!inside(cap.centre)) return false;
   for (int i = 0; i < kRimSamples; ++i)

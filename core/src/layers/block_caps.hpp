@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -17,11 +18,25 @@ struct BlockValues {
   bool counted() const { return least <= greatest; }
 };
 
-// A raster's BlockRanges placed on the body: each block bounded by a cap through the raster's georeference,
-// and the blocks grouped 2 x 2 level by level into a quadtree of caps, so that a query visits the blocks near
-// its cap only. Built once, when the layer is placed.
+// Square blocks of `blockTexels` level-0 texels a side over a raster of width x height texels.
+struct BlockLayout {
+  int width = 0;
+  int height = 0;
+  int blockTexels = 0;
+  int columns() const { return int((std::int64_t(width) + blockTexels - 1) / blockTexels); }
+  int rows() const { return int((std::int64_t(height) + blockTexels - 1) / blockTexels); }
+};
+
+// What a raster's blocks hold placed on the body: each block bounded by a cap through the raster's
+// georeference, and the blocks grouped 2 x 2 level by level into a quadtree of caps, so that a query visits
+// the blocks near its cap only. Built once, when the layer is placed.
 class BlockCaps {
  public:
+  // `values`: each block's, row by row. `coversBody`: the raster covers the whole body (a HEALPix pyramid's
+  // strip of faces), so that no cap reaches beyond it, though its texels' rectangle says otherwise.
+  BlockCaps(BlockLayout layout, std::vector<BlockValues> values, RasterGeoreference georeference, bool repeatX,
+            bool coversBody);
+  // The blocks of a raster's BlockRanges.
   BlockCaps(std::shared_ptr<const BlockRanges> ranges, RasterGeoreference georeference, bool repeatX);
 
   // The values of every block whose cap meets `cap`, and gaps where the cap is not wholly inside the raster.
@@ -41,9 +56,10 @@ class BlockCaps {
   void gather(std::size_t level, int column, int row, const SphericalCap& cap, BlockValues& found) const;
   bool holdsWhole(const SphericalCap& cap) const;
 
-  std::shared_ptr<const BlockRanges> ranges_;
+  BlockLayout layout_;
   RasterGeoreference georeference_;
   bool repeatX_;
+  bool coversBody_;
   std::vector<Level> levels_;  // blocks first, then groups of 2 x 2 up to one
 };
 

@@ -66,7 +66,8 @@ HeightRange HeightInput::open() {
   if (!known && (!lowest_ || !highest_))
     throw Error(where_,
                 "the height layer does not know the least and greatest heights it holds, which culling must trust",
-                "set lowest: and highest: (m) on this node, or store the raster's statistics with gdalinfo -stats FILE");
+                "write the raster with `strata tile FILE OUT.tif`, which stores its heights region by region, or set "
+                "lowest: and highest: (m) on this node, or store the raster's statistics with gdalinfo -stats FILE");
   if (known) checkGivenHold(*known);
   // Given values hold the known ones (checkGivenHold), so the range is never turned over.
   range_ = {lowest_.value_or(std::min(known ? known->least : 0.0, 0.0)),

@@ -3,6 +3,8 @@
 #include <strata/gl/shader_program.hpp>
 #include <strata/paged_raster_layer.hpp>
 
+#include "layers/healpix_page_caps.hpp"
+
 namespace strata {
 
 PagedRasterLayer::PagedRasterLayer(std::string nodeId, LayerKind kind)
@@ -13,6 +15,7 @@ void PagedRasterLayer::attach(PageCache& cache, std::shared_ptr<const PageSource
   cache_ = &cache;
   const PagePyramid& pyramid = source->pyramid();
   place(georeference, pyramid.width(), pyramid.height());
+  if (pageRanges_ && onHealpixFaces()) setBlockCaps(pageCapsOf(*pageRanges_, georeference, pyramid.height()));
   placement_ = cache.attach(std::move(source), georeference, repeatX());
 }
 

@@ -120,6 +120,10 @@ class PageRanges {
   Range overNode(int face, int level, std::int64_t ix, std::int64_t iy) const;
   // The range of the whole pyramid: every page's, together.
   Range whole() const;
+  // The finest level stored, and its pages' widened ranges, row-major over the strip (12 nside / 512 / 2^level
+  // pages a row).
+  int finestStoredLevel() const { return finestStored_; }
+  const std::vector<Range>& finestStoredRanges() const { return levels_.front(); }
 
   static constexpr std::size_t kMostStoredPages = 12 * 64 * 64;  // 576 KiB of metadata at most
 

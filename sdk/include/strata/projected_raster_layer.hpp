@@ -63,6 +63,9 @@ class ProjectedRasterLayer : public Layer {
   const std::string& prefix() const { return prefix_; }
   // Raw values, least and greatest, as the layer returns them (after scale and offset).
   ValueRange transformed(double rawLeast, double rawGreatest) const;
+  // Bounds regions by `caps` (which valuesWithin() asks), where the source knows its values otherwise than
+  // by BlockRanges; after place().
+  void setBlockCaps(std::shared_ptr<const BlockCaps> caps) { blockCaps_ = std::move(caps); }
   // Whether the raster is a HEALPix pyramid's whole strip of faces (strata/healpix_pyramid.hpp), not a
   // window of one face.
   bool onHealpixFaces() const;
