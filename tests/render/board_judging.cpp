@@ -10,7 +10,7 @@
 namespace strata::test {
 namespace {
 
-std::optional<glm::ivec2> judgedCell(const View& view, double radius, const BoardGrid& board, int x, int y,
+std::optional<glm::ivec2> judgedCell(const View& view, double radius, const TexelBoard& board, int x, int y,
                                      bool resampled) {
   glm::dvec2 low(1e300), high(-1e300);
   for (int dy = -1; dy <= 1; ++dy)
@@ -41,6 +41,13 @@ glm::dvec2 BoardGrid::texelOf(double lon, double lat) const {
 }
 
 Judgement judgeBoard(const Image& image, const View& view, double radius, const BoardGrid& board, bool resampled,
+                     int light, int dark) {
+  const TexelBoard texels{[&board](double lon, double lat) { return board.texelOf(lon, lat); }, board.columns,
+                          board.rows, board.cellTexels};
+  return judgeBoard(image, view, radius, texels, resampled, light, dark);
+}
+
+Judgement judgeBoard(const Image& image, const View& view, double radius, const TexelBoard& board, bool resampled,
                      int light, int dark) {
   Judgement judgement;
   for (int y = 1; y < image.height - 1; ++y)
