@@ -105,11 +105,11 @@ class GdalSource : public Node {
   }
 
   // The range of a one-channel raster's values, and a height raster's block by block, which patches of
-  // terrain take their own heights from (Layer::valuesWithin); a HEALPix pyramid's stored page ranges need
-  // no reading.
+  // terrain take their own heights from (Layer::valuesWithin); the ranges `strata tile` stored (a HEALPix
+  // pyramid's pages', a large raster's blocks) need no reading.
   void countValues(GDALDataset& dataset, const healpix::PageRanges* pageRanges) {
     const std::shared_ptr<BlockRanges> blocks =
-        kind_ == LayerKind::Height && !pageRanges ? countBlockRanges(dataset) : nullptr;
+        kind_ == LayerKind::Height && !pageRanges ? blockRangesOf(dataset) : nullptr;
     const std::optional<ValueRange> raw = blocks ? exactRawRange(dataset, *blocks) : exactRawRange(dataset, pageRanges);
     if (raw) layer_.setRawRange(*raw);
     layer_.setBlockRanges(blocks);

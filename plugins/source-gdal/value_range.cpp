@@ -101,7 +101,7 @@ std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges&
   return blocks.whole().value_or(ValueRange{0.0, 0.0});
 }
 
-std::shared_ptr<BlockRanges> countBlockRanges(GDALDataset& dataset) {
+std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset) {
   if (!countable(dataset)) return storedBlockRanges(dataset);
   auto blocks = std::make_shared<BlockRanges>(dataset.GetRasterXSize(), dataset.GetRasterYSize());
   const QuietGdalErrors quiet;  // as exactRawRange()

@@ -15,11 +15,11 @@ namespace strata::gdal {
 // count over a raster small enough to read whole quickly. None for a large raster without them (GDAL's
 // approximate statistics come from averaged overviews and miss the extremes).
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset);
-// The same from the blocks countBlockRanges() counted, where the file holds no exact statistics.
+// The same from the blocks blockRangesOf() gives, where the file holds no exact statistics.
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges& blocks);
 // The ranges of band 1's blocks, by the same rules, for a raster small enough to read whole quickly; for a
 // larger one those `strata tile` stored in it (stored_block_ranges.hpp), or null.
-std::shared_ptr<BlockRanges> countBlockRanges(GDALDataset& dataset);
+std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset);
 // The same for a HEALPix pyramid from the true page ranges `strata tile` stored in it (`ranges`, or null where
 // it stored none), which need no reading.
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const healpix::PageRanges* ranges);
