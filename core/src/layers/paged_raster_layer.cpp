@@ -26,7 +26,7 @@ std::string PagedRasterLayer::glsl() const {
                       "uniform uint " + p + "_indexBase;\n"
                       "uniform int " + p + "_levels;\n",
                       "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p +
-                          "_levels, " + p + "_size, " + p + "_texel(p), stepX, stepY, repeatX)") +
+                          "_levels, " + p + "_size, " + p + "_texel(at, p), stepX, stepY, repeatX)") +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 

@@ -69,7 +69,6 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   projection_ = {glm::vec4(projection[0]), glm::vec4(projection[1])};
   mapToTexture_ = mapToTextureOf(georeference_, width, height);
   size_ = glm::ivec2(width, height);
-  texels_ = glm::vec2(size_);
   repeatX_ = spansPeriod(georeference_, width);
   if (blockRanges_) blockCaps_ = std::make_shared<const BlockCaps>(blockRanges_, georeference_, repeatX_);
 }
@@ -78,7 +77,7 @@ void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
   if (reference_ == referenceLonlat) return;
   reference_ = referenceLonlat;
   const std::array<double, 6>& t = georeference_.geotransform;
-  const double uSpan = t[1] * texels_.x, vSpan = t[5] * texels_.y;
+  const double uSpan = t[1] * size_.x, vSpan = t[5] * size_.y;
   const Projection& projection = *georeference_.projection;
   const TextureMapping mapping = [&](glm::dvec2 lonlat) -> std::optional<glm::dvec2> {
     const std::optional<glm::dvec2> xy = projection.forward(lonlat);
@@ -113,8 +112,7 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "uniform vec4 " + p + "_mapToTexture;\n"
          "uniform vec2 " + p + "_scaleOffset;\n"
          "uniform bool " + p + "_repeatX;\n"
-         "uniform ivec2 " + p + "_size;\n"
-         "uniform vec2 " + p + "_texels;\n" +
+         "uniform ivec2 " + p + "_size;\n" +
          declarations +
          "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
          "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
@@ -168,10 +166,10 @@ std::string ProjectedRasterLayer::relativeGlsl() const {
          "  if (!" + p + "_near(p)) return " + p + "_coordinates(p.lonlat);\n"
          "  return vec3(" + p + "_referenceUv + " + p + "_fromReference(" + p + "_offset(p)), 1.0);\n"
          "}\n"
-         "TexelAddress " + p + "_texel(SurfacePoint p) {\n"
-         "  if (!" + p + "_near(p)) return texelAddressOf(" + p + "_coordinates(p.lonlat).xy * " + p + "_texels);\n"
+         "TexelAddress " + p + "_texel(vec3 at, SurfacePoint p) {\n"
+         "  if (!" + p + "_near(p)) return texelAddressOf(at.xy * vec2(" + p + "_size));\n"
          "  return TexelAddress(" + p + "_referenceTexel,\n"
-         "                      " + p + "_referenceFraction + " + p + "_fromReference(" + p + "_offset(p)) * " + p + "_texels);\n"
+         "                      " + p + "_referenceFraction + " + p + "_fromReference(" + p + "_offset(p)) * vec2(" + p + "_size));\n"
          "}\n"
          "vec2 " + p + "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) {\n"
          "  if (!" + p + "_near(p)) return " + p + "_absoluteStep(at, p.lonlat, lonlatStep);\n"
@@ -187,12 +185,13 @@ std::string ProjectedRasterLayer::texelGlsl() const {
   return "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
          "  vec3 at = " + p + "_at(p);\n"
          "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
-         "  return vec4(" + p + "_step(at, p, p.lonlatDx) * " + p + "_texels, " + p +
-         "_step(at, p, p.lonlatDy) * " + p + "_texels);\n"
+         "  return vec4(" + p + "_step(at, p, p.lonlatDx) * vec2(" + p + "_size), " + p +
+         "_step(at, p, p.lonlatDy) * vec2(" + p + "_size));\n"
          "}\n"
          "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-         "  if (" + p + "_at(p).z <= 0.0) return -1.0;\n"
-         "  vec4 edges = edgeDistances(" + p + "_texel(p), " + p + "_size);\n"
+         "  vec3 at = " + p + "_at(p);\n"
+         "  if (at.z <= 0.0) return -1.0;\n"
+         "  vec4 edges = edgeDistances(" + p + "_texel(at, p), " + p + "_size);\n"
          "  float across = " + p + "_repeatX ? 1e30 : min(edges.x, edges.z);\n"
          "  return min(across, min(edges.y, edges.w));\n"
          "}\n";
@@ -206,7 +205,7 @@ ProjectionAspect ProjectedRasterLayer::aspect() const {
 // longitude and latitude relative to the eye, since its nside is beyond what float face points address.
 bool ProjectedRasterLayer::onHealpixFaces() const {
   return georeference_.projection && georeference_.projection->type() == healpix::kStripProjectionType &&
-         texels_.x == 12.0f * texels_.y;
+         size_.x == 12 * size_.y;
 }
 
 void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
@@ -216,7 +215,6 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_scaleOffset", glm::vec2(float(scale_), float(offset_)));
   program.set(prefix_ + "_repeatX", repeatX_ ? 1 : 0);
   program.set(prefix_ + "_size", size_);
-  program.set(prefix_ + "_texels", texels_);
   program.set(prefix_ + "_referenceUv", referenceUv_);
   program.set(prefix_ + "_referenceTexel", referenceTexel_);
   program.set(prefix_ + "_referenceFraction", referenceFraction_);

@@ -52,11 +52,11 @@ class ProjectedRasterLayer : public Layer {
   void place(RasterGeoreference georeference, int width, int height);
   // The layer's GLSL: the projection's, then `declarations` (the layer's textures and uniforms), then
   // the sampling function. It evaluates `filtered`, a GLSL expression of vec2 uv (texture coordinates),
-  // stepX, stepY (their change to the next sample), bool repeatX and SurfacePoint p, giving the filtered
-  // texel: value x coverage and coverage (.rgb and .a for colour kinds, .r and .g for the others), which
-  // <prefix>_value(vec4) turns into what the sampling function returns. <prefix>_texel(p) gives the
-  // point's level-0 texel as a TexelAddress (strata/paged_texture.glsl), exact near the reference however
-  // wide the raster.
+  // stepX, stepY (their change to the next sample), bool repeatX, vec3 at (uv and whether the projection is
+  // defined there) and SurfacePoint p, giving the filtered texel: value x coverage and coverage (.rgb and .a
+  // for colour kinds, .r and .g for the others), which <prefix>_value(vec4) turns into what the sampling
+  // function returns. <prefix>_texel(at, p) gives the point's level-0 texel as a TexelAddress
+  // (strata/texel_address.glsl), exact near the reference however wide the raster.
   std::string samplingGlsl(const std::string& declarations, const std::string& filtered) const;
   // Sets the uniforms samplingGlsl() declares.
   void bindSampling(ShaderProgram& program) const;
@@ -87,7 +87,6 @@ class ProjectedRasterLayer : public Layer {
   std::array<glm::vec4, 2> projection_{};  // Projection::glslParameters()
   glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
   glm::ivec2 size_{0};                     // the raster's width and height
-  glm::vec2 texels_{0.0f};                 // the same as floats
   bool repeatX_ = false;                   // the raster spans one period of a periodic projection
   // Set by setReference(): the reference they were fitted for (a still camera keeps its fit), and the
   // texture coordinates about it, as uniforms.
