@@ -1,9 +1,9 @@
-// The fly-in of seed 000 (section 5.1): from a whole-planet view down to a close-up of a mountain and
-// back, frame by frame as a viewer would draw it (issue 4, docs/benchmarks.md). The planet is
-// source.procedural's on a Mars-sized body, unexaggerated; the mountain is the highest point of a 1-degree
-// survey of its heights, and the flight ends 300 m above that summit, tilted toward it. Then the cost of each
-// extra surface layer (issue 7; seed 000 measured about 2 ms a full-screen overlay pass at 1920x1080): one
-// frame of the flight, halfway down, drawn with 0, 1, 2 and 4 raster layers more.
+// The fly-in of [Kooima 2008, §5.1]: from a whole-planet view down to a close-up of a mountain and back,
+// frame by frame as a viewer would draw it (issue 4, docs/benchmarks.md). The planet is source.procedural's
+// on a Mars-sized body, unexaggerated; the mountain is the highest point of a 1-degree survey of its heights,
+// and the flight ends 300 m above that summit, tilted toward it. Then the cost of each extra surface layer
+// (issue 7; [Kooima 2008, §5.1.4] measured about 2 ms a full-screen overlay pass at 1920x1080): one frame of
+// the flight, halfway down, drawn with 0, 1, 2 and 4 raster layers more.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

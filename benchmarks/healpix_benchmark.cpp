@@ -1,11 +1,11 @@
 // strata-bench-healpix: geometry.healpix's frame time against its detail threshold (vertices wanted per
-// pixel), at the paper's 1024x768, so that it can be read beside the paper's table (digest 004 section 5:
-// thresholds 0.005, 0.01, 0.2 and 1.0 gave 105, 75, 24 and 9 fps, shaded DEM). The planet is
-// source.procedural's on a Mars-sized body, unexaggerated, seen whole from orbit and near the ground at a
-// steep angle (procedural_mars_pipeline.hpp). Then the near view over heights from a longitude/latitude
-// raster and from the HEALPix pyramid `strata tile --to healpix` makes of it: the same terrain, its nodes
-// bounded by one global range or by the pyramid's page ranges. STRATA_BENCH_HEALPIX=reduced times fewer
-// frames, for llvmpipe; unset, the full set (docs/benchmarks.md).
+// pixel), at the paper's 1024x768, so that it can be read beside the paper's figures
+// ([Westerteiger et al. 2011, §4, Fig. 7]: thresholds 0.005, 0.01, 0.2 and 1.0 gave 105, 75, 24 and 9 fps,
+// shaded DEM). The planet is source.procedural's on a Mars-sized body, unexaggerated, seen whole from orbit
+// and near the ground at a steep angle (procedural_mars_pipeline.hpp). Then the near view over heights from a
+// longitude/latitude raster and from the HEALPix pyramid `strata tile --to healpix` makes of it: the same
+// terrain, its nodes bounded by one global range or by the pyramid's page ranges.
+// STRATA_BENCH_HEALPIX=reduced times fewer frames, for llvmpipe; unset, the full set (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
 #include <chrono>

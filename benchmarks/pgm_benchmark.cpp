@@ -1,6 +1,6 @@
-// strata-bench-pgm: geometry.pgm's time against its grid of rays and the screen, laid out as Mahsman's
-// Tables 6.2 (the PGM step), 6.3 (the entire frame) and 6.5 (grid = screen at standard resolutions) so that
-// the two can be compared (digest 003 section 4, docs/benchmarks.md). The planet is source.procedural's on a
+// strata-bench-pgm: geometry.pgm's time against its grid of rays and the screen, laid out as Mahsman's Tables
+// 6.2 (the PGM step), 6.3 (the entire frame) and 6.5 (grid = screen at standard resolutions) so that the two
+// can be compared ([Mahsman 2010, §6.1, §6.2]; docs/benchmarks.md). The planet is source.procedural's on a
 // Mars-sized body, unexaggerated, seen as the thesis's test cases 1 (the whole planet) and 2 (near it at a
 // steep angle). Sizes are width x height, as the thesis writes 640x480; the grid's are columns x rows.
 // STRATA_BENCH_PGM=reduced runs a subset with fewer frames, for llvmpipe; unset, the full set.

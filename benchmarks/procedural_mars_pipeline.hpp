@@ -22,7 +22,7 @@ inline std::filesystem::path writeProceduralMarsPipeline(const std::string& name
   return file;
 }
 
-// The two views it is seen from, after Mahsman's test cases 1 and 2 (digest 003 section 4), so that every
+// The two views it is seen from, after the test cases 1 and 2 of [Mahsman 2010, §6.1], so that every
 // generator is timed on the same frames: the whole planet straight down from 8,000 km (it spans about 35 of
 // the 45 degrees), and near it at a steep angle, 20 km up and tilted 70 degrees toward the horizon.
 inline Camera wholeMarsView() { return {.lon = 30, .lat = 25, .altitude = 8.0e6, .heading = 0, .tilt = 0, .fov = 45}; }

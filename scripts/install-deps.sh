@@ -21,6 +21,7 @@ packages=(
   libxtst-dev                                   # window tests send keys and pointer events (XTest)
   xplanet-images                                # the Earth image the demo drapes
   doxygen                                       # the SDK's API reference (target sdk-reference)
+  clang-format-14                               # the format check (scripts/check-format.sh)
 )
 
 missing=()

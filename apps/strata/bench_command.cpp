@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 
 struct BenchOptions : PipelineOptions {
   std::string path;     // default: paths/<pipeline name>.yaml beside the pipeline
-  int frames = 4800;    // seed 000 section 5.1's benchmark: 4800 frames in and back out
+  int frames = 4800;    // the benchmark of [Kooima 2008, §5.1]: 4800 frames in and back out
   int average = 10;     // ... averaged over 10 frames into 480 points
   int laps = 1;         // the path flown this many times: a soak run
   std::string output;   // default: out/bench/<pipeline name>.csv
@@ -59,11 +59,11 @@ void checkOptions(const BenchOptions& options, const fs::path& pathFile) {
   if (options.frames < 2)
     throw Error(SourceLocation{"--frames"},
                 "a benchmark takes at least 2 frames, got " + std::to_string(options.frames),
-                "give --frames N with N >= 2 (seed 000's benchmark: 4800)");
+                "give --frames N with N >= 2 (Kooima 2008's benchmark: 4800)");
   if (options.average < 1)
     throw Error(SourceLocation{"--average"},
                 "frames are averaged over at least 1, got " + std::to_string(options.average),
-                "give --average K with K >= 1 (seed 000's figures: 10)");
+                "give --average K with K >= 1 (Kooima 2008's figures: 10)");
   if (options.laps < 1 || options.frames < 2 * options.laps)
     throw Error(SourceLocation{"--laps"},
                 "the path is flown at least once, in at least 2 frames a lap; got " + std::to_string(options.laps) +
@@ -140,20 +140,20 @@ void bench(const BenchOptions& options) {
 
 void addBenchCommand(CLI::App& app, int& exitCode) {
   auto options = std::make_shared<BenchOptions>();
-  options->size = {1024, 768};  // seed 000's baseline benchmark (section 5.1.1, figure 5.2)
+  options->size = {1024, 768};  // the baseline benchmark of [Kooima 2008, §5.1.1, Fig. 5.2]
   CLI::App* command =
       app.add_subcommand("bench", "time a pipeline frame by frame along a camera path, to a CSV and a plot");
   addPipelineOptions(*command, *options);
-  command->get_option("--size")->description("frame size WIDTHxHEIGHT (default 1024x768, seed 000's)");
+  command->get_option("--size")->description("frame size WIDTHxHEIGHT (default 1024x768, Kooima 2008's)");
   command
       ->add_option(
           "--path", options->path,
           "the camera path file (docs/camera-paths.md; default paths/<pipeline name>.yaml beside the pipeline)")
       ->type_name("FILE");
   command->add_option("--frames", options->frames,
-                      "frames along the path, evenly spaced in time (default 4800, seed 000's)");
+                      "frames along the path, evenly spaced in time (default 4800, Kooima 2008's)");
   command->add_option("--average", options->average,
-                      "frames averaged into each point of the plot (default 10, seed 000's)");
+                      "frames averaged into each point of the plot (default 10, Kooima 2008's)");
   command->add_option("--laps", options->laps,
                       "fly the path this many times, --frames in all (default 1); with many, a soak run whose plot "
                       "shows memory and open files");

@@ -14,7 +14,7 @@ struct PlotRun {
   int frames = 0;
 };
 
-// An SVG like seed 000's figures 5.2 to 5.6 (section 5.1): frame time per averaged point over the run, on
+// An SVG like Figs. 5.2 to 5.6 of [Kooima 2008, §5.1]: frame time per averaged point over the run, on
 // their scale, 30 Hz (33.3 ms) at the top and 60 Hz at the middle, doubled until the slowest point fits
 // (a CPU renderer's frames take far longer); the first run's phases beside it; below, pages uploaded and
 // vertices per frame; at the bottom, process and page-cache memory and open files (flat in a soak run once

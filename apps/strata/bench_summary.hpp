@@ -16,7 +16,7 @@ struct FrameTimeSummary {
 
 FrameTimeSummary summarise(const std::vector<BenchFrame>& frames);
 
-// One point of the plot: the mean of `count` successive frames, as seed 000 section 5.1 averaged its
+// One point of the plot: the mean of `count` successive frames, as [Kooima 2008, §5.1] averaged its
 // 4800 frames over 10 into 480 points.
 struct AveragedPoint {
   int firstFrame = 0;

@@ -1,6 +1,6 @@
 // composite.chroma_fusion: a high-resolution luminance layer (HiRISE-like panchromatic) and a low-resolution
 // colour layer (Viking-like) fused into one high-resolution colour layer, chroma from the one and luminance
-// from the other in an opponent space (seed 000 section 1.1 and section 3.4.3; digest 000 section 6).
+// from the other in an opponent space [Kooima 2008, §1.1, §3.4.3].
 #include <memory>
 #include <string>
 

@@ -5,8 +5,8 @@
 
 namespace strata::composite {
 
-// Chroma from a low-resolution colour layer, luminance from a high-resolution one (seed 000 section 1.1,
-// HiRISE luminance with Viking chroma; section 3.4.3, colour-space transformations; digest 000 section 6):
+// Chroma from a low-resolution colour layer, luminance from a high-resolution one ([Kooima 2008, §1.1],
+// HiRISE luminance with Viking chroma; [Kooima 2008, §3.4.3], colour-space transformations):
 // per sample, the colour layer's colour goes into an opponent space (CIE L*a*b* or BT.709 Y'CbCr), its
 // lightness channel moves `strength` of the way to the fused luminance's, its chroma stays, and it comes back
 // to scene-linear light. The fused luminance is the luminance layer's own, or, matched, the colour layer's

@@ -13,8 +13,8 @@ class ShaderProgram;
 
 namespace strata::composite {
 
-// Where composite.layer_peel cuts the upper layers of a stack away (seed 000 section 1.1 and chapter 6, layered
-// data peeling; digest 000 section 6, "render with a clip/cut-away"): everywhere, within a radius along the
+// Where composite.layer_peel cuts the upper layers of a stack away ([Kooima 2008, §1.1, ch. 6], layered data
+// peeling, which asks for a way to select layers and peel them away): everywhere, within a radius along the
 // ground of a point, within a box of longitude and latitude, or on one side of a vertical plane through a
 // point. With an edge, the cut's wall slopes from the top surface down to the peeled one over that width
 // outside the region, so that the geometry resolves it and the cut faces show; without one it is a step.

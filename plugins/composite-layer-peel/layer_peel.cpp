@@ -1,5 +1,5 @@
 // composite.layer_peel: a stack of height layers as one, its upper layers peeled away by a peel depth within a
-// cutaway region (seed 000 section 1.1 and chapter 6, layered data peeling; digest 000 section 6).
+// cutaway region ([Kooima 2008, §1.1, ch. 6], layered data peeling).
 #include <memory>
 #include <set>
 

@@ -1,5 +1,5 @@
-// composite-layer-peel: stacked height layers peeled apart and seen in relation to each other (seed 000
-// section 1.1 and chapter 6, layered data peeling; digest 000 section 6).
+// composite-layer-peel: stacked height layers peeled apart and seen in relation to each other
+// ([Kooima 2008, §1.1, ch. 6], layered data peeling).
 #include <strata/plugin.hpp>
 
 #include "declarations.hpp"

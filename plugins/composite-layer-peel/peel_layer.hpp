@@ -10,9 +10,9 @@
 namespace strata::composite {
 
 // A stack of height layers, top first (an ice sheet's surface over its bedrock, the sea's surface over the
-// sea floor), as one height layer with its upper layers peeled away where a cutaway says (seed 000 section
-// 1.1 and chapter 6, layered data peeling; digest 000 section 6). A layer's material lies between its
-// surface and the next one's; the last layer is the floor, beneath which nothing is peeled.
+// sea floor), as one height layer with its upper layers peeled away where a cutaway says
+// ([Kooima 2008, §1.1, ch. 6], layered data peeling). A layer's material lies between its surface and the
+// next one's; the last layer is the floor, beneath which nothing is peeled.
 // - Each surface lies no lower than the one beneath: where a layer's data put it lower (the sea's surface
 //   over land) or it has none, it is absent there, with no thickness.
 // - Inside the cut, the `layers` upper layers are taken away and `depth` metres more below the surface that

@@ -1,6 +1,5 @@
 // composite.peeled_surface: the colours of what a composite.layer_peel shows, each layer's imagery on its
-// surface and its colour on the faces the cut makes (seed 000 section 1.1 and chapter 6, layered data
-// peeling; digest 000 section 6).
+// surface and its colour on the faces the cut makes ([Kooima 2008, §1.1, ch. 6], layered data peeling).
 #include <memory>
 
 #include <strata/node.hpp>

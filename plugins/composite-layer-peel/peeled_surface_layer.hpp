@@ -9,11 +9,10 @@
 
 namespace strata::composite {
 
-// The colours of what a composite.layer_peel shows (seed 000 section 1.1 and chapter 6, layered data peeling;
-// digest 000 section 6): where a layer's surface shows, that layer's surface colours (its imagery); where the
-// cut runs through a layer's material (below its surface and above the next one's: the floor of a peel
-// `depth` and the sloping walls of a cutaway's `edge`), that layer's cut-face colour, so the walls show the
-// stack's strata in section.
+// The colours of what a composite.layer_peel shows ([Kooima 2008, §1.1, ch. 6], layered data peeling): where
+// a layer's surface shows, that layer's surface colours (its imagery); where the cut runs through a layer's
+// material (below its surface and above the next one's: the floor of a peel `depth` and the sloping walls
+// of a cutaway's `edge`), that layer's cut-face colour, so the walls show the stack's strata in section.
 class PeeledSurfaceLayer : public Layer {
  public:
   // `surfaces`: one colour layer per layer of `peel`'s stack, top first (one may serve several); `faces`: its cut faces' colours,

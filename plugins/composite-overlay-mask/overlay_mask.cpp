@@ -1,6 +1,6 @@
 // composite.overlay_mask: a local layer (a strip along a ground track, a crater map, a LIDAR patch) laid over a
 // base layer of any resolution where it has data and an optional mask allows, with a hard or feathered edge
-// (seed 000 section 4.2; digest 000 section 5.2).
+// [Kooima 2008, §4.2].
 #include <memory>
 
 #include <strata/node.hpp>

@@ -5,11 +5,12 @@
 
 namespace strata::composite {
 
-// A local layer laid over a base layer (seed 000 section 4.2; digest 000 section 5.2): where the overlay has
-// data (its extent, nodata and alpha: its coverage, times a mask layer's value where one is given) it hides
-// the base, with a hard edge or one feathered over a width in the overlay's texels or in metres, from that
-// coverage averaged over half the width; elsewhere the base shows. Where the overlay has no data its sampling
-// returns at once, so the work stays within its bounds.
+// A local layer laid over a base layer ([Kooima 2008, §4.2], laid on top rather than averaged with the base as
+// its "accumulated normally" would; docs/references.md, Errata): where the overlay has data (its extent,
+// nodata and alpha: its coverage, times a mask layer's value where one is given) it hides the base, with a
+// hard edge or one feathered over a width in the overlay's texels or in metres, from that coverage averaged
+// over half the width; elsewhere the base shows. Where the overlay has no data its sampling returns at once,
+// so the work stays within its bounds.
 class OverlayMaskLayer : public Layer {
  public:
   // A feather of 0 is a hard edge. `radius`: the body's, to turn metres into angles.

@@ -1,5 +1,5 @@
 // composite.projection_quality: layers of one kind, in any projections, blended sample by sample by how well
-// each is sampled where it lands (seed 000 section 4.1; digest 000 section 5.1), so that a global map and
+// each is sampled where it lands [Kooima 2008, §4.1], so that a global map and
 // polar caps compose into one layer sharp at the equator and at the poles, with no seam where they cross.
 #include <memory>
 #include <numbers>
@@ -80,8 +80,9 @@ NodeTypeDeclaration declaration() {
   type.inputs = {{.name = "layers", .type = PortType::Layer, .list = true,
                   .doc = "layers of one kind in any projections: a global map and polar caps, strips, insets"}};
   type.output = PortType::Layer;
-  // Isotropy by default: it weighs layers of any projection, procedural ones included (seed 000 section 4.1.2
-  // calls it the general method); latitude needs every layer to be a cylindrical map or a polar cap.
+  // Isotropy by default: it weighs layers of any projection, procedural ones included
+  // ([Kooima 2008, §4.1.2] calls it the general method); latitude needs every layer to be a cylindrical map
+  // or a polar cap.
   type.parameters = {
       {.name = "method", .type = ParameterType::Choice, .defaultValue = std::string("isotropy"),
        .doc = "isotropy: by the shape of each layer's texels where they land (thesis method 2); latitude: a "
@@ -95,7 +96,8 @@ NodeTypeDeclaration declaration() {
               "well-shaped layers wins; the latitude method's weights depend on the place alone, not the view"},
       // 50 to 70: a longitude/latitude map's texels are 1.6 times wider than tall at 50 degrees and 2.9 times at
       // 70 (1 / cos), while a polar stereographic cap's are square everywhere and, true to scale at its pole,
-      // at most 13% larger at 50 degrees; the digest's note (000 section 5.1) gives the same band.
+      // at most 13% larger at 50 degrees. [Kooima 2008, §4.1.2] gives its method 1 no formula and no band
+      // (docs/references.md, Errata).
       {.name = "band", .type = ParameterType::RealList, .defaultValue = std::vector<double>{50.0, 70.0},
        .minimum = 0.0, .maximum = 90.0, .units = "deg",
        .doc = "latitude method: the |latitude| where the map starts to fade (inner) and is gone (outer), the polar "

@@ -8,7 +8,7 @@
 
 namespace strata::composite {
 
-// The layers blended by how well each is sampled where it lands (seed 000 section 4.1; digest 000 section 5.1):
+// The layers blended by how well each is sampled where it lands [Kooima 2008, §4.1]:
 // per sample, each input's value counts with its weight times its coverage, and the sums normalise at the end
 // (value x weight in rgb, weight in alpha: weights need not sum to one). The weight is, by method,
 //   isotropy (method 2): the isotropy of its texels there, times their resolution if asked; inputs without

@@ -1,5 +1,5 @@
 // composite.relief: shaded relief of any height layer, grey or multiplied over a surface layer, lit by a light
-// at an azimuth and altitude (seed 000 section 1.1, relief shading; digest 000 section 6).
+// at an azimuth and altitude ([Kooima 2008, §1.1], relief shading).
 #include <cstddef>
 #include <memory>
 #include <string>

@@ -10,7 +10,7 @@
 
 namespace strata::composite {
 
-// Shaded relief of a height layer (seed 000 section 1.1; digest 000 section 6): the composed height's
+// Shaded relief of a height layer [Kooima 2008, §1.1]: the composed height's
 // gradient over a pixel's footprint along the ground gives the surface normal in the local east/north/up
 // frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude (or to four, in the
 // multidirectional mode) is the shade, grey alone or multiplied over a surface layer; or it shows the slope

@@ -1,6 +1,6 @@
 // composite.temporal_blend: a time series (Blue Marble Next Generation's twelve monthly mosaics; any rasters
 // with dates) as one layer at the scene's date, the two bracketing steps blended linearly in time, in geometry
-// and imagery alike (seed 000 sections 1.1 and 6, time-varying data; digest 000 section 6).
+// and imagery alike ([Kooima 2008, §1.1, ch. 6], time-varying data).
 #include <memory>
 
 #include <strata/node.hpp>

@@ -9,9 +9,9 @@
 
 namespace strata::composite {
 
-// A time series as one layer at the scene's date (seed 000 sections 1.1 and 6, time-varying data; digest 000
-// section 6): the two steps that bracket the date, mixed linearly in time, each by its coverage, so that the layer
-// changes continuously with the date and never pops from one step to the next. Every step's sampling is in the
+// A time series as one layer at the scene's date ([Kooima 2008, §1.1, ch. 6], time-varying data): the two
+// steps that bracket the date, mixed linearly in time, each by its coverage, so that the layer changes
+// continuously with the date and never pops from one step to the next. Every step's sampling is in the
 // program once; two uniforms choose the bracketing pair, so stepping through time recompiles nothing. Steps may be
 // any layers of one kind, compositors included.
 class TemporalBlendLayer : public Layer {

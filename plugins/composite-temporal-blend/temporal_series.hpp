@@ -15,7 +15,7 @@ struct Bracket {
   double fraction = 0.0;
 };
 
-// The dates of a series' steps (seed 000 sections 1.1 and 6, time-varying data; digest 000 section 6), and which
+// The dates of a series' steps ([Kooima 2008, §1.1, ch. 6], time-varying data), and which
 // two a date falls between. Outside the series it holds the first or the last step: there is nothing to blend
 // towards. A yearly series (a monthly climatology such as Blue Marble Next Generation's) repeats every calendar
 // year: its steps are placed by their date's fraction of the year, and December's blends into January's across the

@@ -1,4 +1,4 @@
-// geometry.healpix: the body tessellated as twelve HEALPix quadtrees (seed 004, digest 004). Each frame the
+// geometry.healpix: the body tessellated as twelve HEALPix quadtrees [Westerteiger et al. 2011]. Each frame the
 // nodes the view needs are chosen on the CPU in double (node_selection.hpp), then drawn from one stitched
 // proxy grid that the vertex shader places with the HEALPix inverse and displaces by the height layer, into
 // the same deferred texturing buffer as the other generators. docs/healpix.md explains the parts.

@@ -1,5 +1,5 @@
 #pragma once
-// A node of geometry.healpix's twelve quadtrees (digest 004 section 1.4): a dyadic square of a base face's
+// A node of geometry.healpix's twelve quadtrees [Westerteiger et al. 2011, §3.2]: a dyadic square of a base face's
 // coordinates, with what the traversal and the balancing pass ask of it.
 #include <array>
 #include <cstddef>

@@ -14,7 +14,8 @@ namespace strata::healpix {
 
 // A node as the vertex shader reads it (shaders/geometry/healpix_surface.vert, std430): its centre's terms
 // for the relative HEALPix inverse, and the centre itself from the eye and from the frame's reference, in
-// double on the CPU before they become float, so that the GPU only adds small offsets (DESIGN.md, Precision).
+// double on the CPU before they become float, so that the GPU only adds small offsets
+// (docs/architecture.md, "Precision").
 struct GpuNode {
   HealpixFrame frame;             // the centre's terms (healpix_offset.glsl)
   glm::vec4 centreFromEye;        // xyz: m, planet-fixed, the centre on the body's sphere minus the eye; w: cell size

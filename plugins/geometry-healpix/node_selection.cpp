@@ -181,7 +181,7 @@ class VisitedTree {
 
   VisitedTree(const ShellView& shells, const SelectionSettings& settings) : shells_(shells), settings_(settings) {}
 
-  // Digest 004 section 1.4, without the paper's loading: cull, draw when adequate, else refine.
+  // [Westerteiger et al. 2011, §3.2], without the paper's loading: cull, draw when adequate, else refine.
   void traverse(const NodeKey& key) {
     const NodeShell shell = shells_.shellOf(key);
     if (shells_.culled(shell)) {
@@ -209,9 +209,10 @@ class VisitedTree {
     return std::nullopt;
   }
 
-  // Splits drawn nodes two or more levels coarser than a drawn neighbour until none is (digest 004 section
-  // 2 leaves these cracks open; docs/healpix.md, "Selection"). Each drawn node looks across its edges for coarser
-  // ones; a split's drawn children look in turn, so the splits ripple outward as far as they must.
+  // Splits drawn nodes two or more levels coarser than a drawn neighbour until none is
+  // ([Westerteiger et al. 2011] leaves these cracks open; docs/healpix.md, "Selection"). Each drawn node
+  // looks across its edges for coarser ones; a split's drawn children look in turn, so the splits ripple
+  // outward as far as they must.
   void balance() {
     std::vector<NodeKey> pending = drawn_;
     while (!pending.empty()) {

@@ -1,7 +1,7 @@
 #pragma once
 #include <functional>
 #include <optional>
-// The CPU half of geometry.healpix's traversal (digest 004 sections 1.4 and 2; docs/healpix.md,
+// The CPU half of geometry.healpix's traversal ([Westerteiger et al. 2011, §3.2, §3.2.2]; docs/healpix.md,
 // "Selection"): which nodes of the twelve quadtrees a view draws, in double.
 #include <array>
 #include <vector>
@@ -25,7 +25,7 @@ struct SelectedNode {
 };
 
 struct SelectionSettings {
-  // The paper's user factor, desired vertices per pixel (digest 004 section 2): a node is drawn when its
+  // The paper's user factor, desired vertices per pixel [Westerteiger et al. 2011, §3.2.2]: a node is drawn when its
   // projected area in pixels times this needs no more vertices than its grid has. 0.2 recommended, 0.005
   // to 1.0 in the paper's figure 7.
   double threshold = 0.2;
@@ -44,11 +44,12 @@ struct NodeShell {
 
 // The heights over one node, of the cone given, where they are known more closely than the body's range (a
 // HEALPix pyramid's pages' true ranges, Layer::faceNodeValues, or another raster's over the cone,
-// Layer::valuesWithin; the paper's per-node boxes, digest 004 section 2); empty: the body's range.
+// Layer::valuesWithin; the paper's per-node boxes, [Westerteiger et al. 2011, §3.2.1]; docs/references.md,
+// Errata); empty: the body's range.
 using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&, const NodeCone&)>;
 
 // One view's tests of node shells. Culling is exact for the cone's shell, so never removes what the cone
-// holds; the area is the paper's, the projection of a bounding box (digest 004 section 2).
+// holds; the area is the paper's, the projection of a bounding box [Westerteiger et al. 2011, §3.2.2].
 class ShellView {
  public:
   ShellView(const View& view, double radius, HeightRange heights, NodeHeights nodeHeights = {});
@@ -58,12 +59,12 @@ class ShellView {
   // the body, taken as the sphere of the body's lowest height: a point at radius r is hidden when its angle from
   // the eye's direction exceeds acos(r_low / |eye|) + acos(r_low / r) (the tangent rays).
   bool culled(const NodeShell& shell) const;
-  // A bound on the pixels the node's terrain covers (digest 004 section 2), the lesser of two:
+  // A bound on the pixels the node's terrain covers [Westerteiger et al. 2011, §3.2.2], the lesser of two:
   // - boxArea: the box's projection, the convex hull of its projected corners (what the paper's sum over
   //   front faces gives) clipped to the screen, since only pixels on it ask for vertices; infinite when a
-  //   corner lies at or behind the near plane, which forces refinement (section 2, [impl]). Tight from afar
-  //   and edge on, but a global height range makes boxes tens of km tall that near the ground cover the
-  //   screen however narrow they are.
+  //   corner lies at or behind the near plane, which forces refinement (the paper does not say what such a
+  //   box projects to). Tight from afar and edge on, but a global height range makes boxes tens of km tall
+  //   that near the ground cover the screen however narrow they are.
   // - faceOnArea: the node's surface seen face on from its shell's nearest point, at the densest pixels of
   //   the screen (its corners, f^2 / cos^3 per steradian): its area (HEALPix is equal area, 4 pi r^2 / (12
   //   4^level) at the outer radius) times kSlopeAllowance over the nearest distance squared. Infinite when
@@ -91,7 +92,7 @@ class ShellView {
 };
 
 // The nodes a view draws of a body of `radius` (m) whose heights lie in `heights`: stateless, top down from
-// the twelve faces (digest 004 section 1.4); a node is culled by ShellView::culled, drawn when its projected
+// the twelve faces [Westerteiger et al. 2011, §3.2]; a node is culled by ShellView::culled, drawn when its projected
 // area times the threshold is at most its grid's vertices or at maxLevel, else refined. Then coarser
 // neighbours are split until drawn neighbours differ by at most one level, across face edges too, keeping
 // only the visible children of a split node; last the coarser edges are marked. Depth first from face 0.

@@ -18,7 +18,7 @@ struct IndexRange {
   std::uint32_t count = 0;  // indices, three per triangle
 };
 
-// The eight edge windings of seed 000 section 3.4.1 (digest 000 section 4.1) for one subdivision depth,
+// The eight edge windings of [Kooima 2008, §3.4.1] for one subdivision depth,
 // in one element array whose indices number the vertices as the subdivision table does. A coarse edge is
 // wound at half resolution: it never references the odd vertices on it, so its triangle edges along the
 // patch edge are those of the coarser neighbour and no crack opens. The three fine triangles touching an

@@ -7,7 +7,7 @@
 
 namespace strata::icosahedral {
 
-// Seed 000's fly-in (section 5.1) over a Mars-sized body, as strata-bench-flyin flies it and the patch
+// The fly-in of [Kooima 2008, §5.1] over a Mars-sized body, as strata-bench-flyin flies it and the patch
 // tree's tests follow it: from 10,000 km down to 300 m above a summit and back, at 30 Hz. The altitude
 // falls geometrically, starting 2 km south of the summit and looking north, tilting from straight down to
 // 75 degrees below 100 km.

@@ -21,7 +21,8 @@ struct ReferenceLatitude {
   Real cos;
 };
 
-// The normal and the angle between the parents (seed 000 section 3.3.3, digest 000 section 3.3). The sum
+// The normal and the angle between the parents ([Kooima 2008, §3.3.3], the angle from the chord rather than
+// acos; docs/references.md, Errata). The sum
 // is symmetric in the parents, and so is the chord |n_j - n_k|, from which w = 2 asin(chord / 2) keeps its
 // resolution as w tends to 0, where acos of the dot product loses it.
 template <typename Real>
@@ -30,19 +31,19 @@ void subdivideNormal(const GeodesicVertex<Real>& j, const GeodesicVertex<Real>& 
   i.angle = Real(2) * std::asin(Real(0.5) * glm::length(j.normal - k.normal));
 }
 
-// The geodesic midpoint of seed 000 section 3.3.4 (digest 000 section 3.4, "used method"), both
-// coordinates measured from the reference, written as the plain midpoint plus two corrections; the
-// compute pass (subdivide_patches.comp) does the same, operation for operation. With A, B the cosines of
-// the parents' latitudes, phi_m and delta the mean and half the difference of those latitudes, and D the
-// difference of the longitudes, the digest's lambda_i = lambda_j + atan2(B sin D, A + B cos D), rotated
-// by -D/2, is
+// The geodesic midpoint of [Kooima 2008, §3.3.4] (the method it uses, not the one it rejects), both
+// coordinates measured from the reference rather than absolute (docs/references.md, Errata), written as
+// the plain midpoint plus two corrections; the compute pass (subdivide_patches.comp) does the same,
+// operation for operation. With A, B the cosines of the parents' latitudes, phi_m and delta the mean and
+// half the difference of those latitudes, and D the difference of the longitudes, the thesis's
+// lambda_i = lambda_j + atan2(B sin D, A + B cos D), rotated by -D/2, is
 //   lambda_i = lambda_m + atan(-sin phi_m sin delta tan(D/2), cos phi_m cos delta)
 // (B - A = -2 sin phi_m sin delta, A + B = 2 cos phi_m cos delta), and its
 // tan phi_i = (sin phi_j + sin phi_k) / h, with h^2 = (A + B)^2 - 4 A B sin^2(D/2), is
 //   phi_i = phi_m + atan(sin phi_m cos phi_m u, 1 + u sin^2 phi_m),
 //   u = 1/sqrt(1 - s) - 1 = s / (sqrt(1 - s) (1 + sqrt(1 - s))),  s = A B sin^2(D/2) / (cos phi_m cos delta)^2.
 // The corrections are second order in the parents' separation, so the error of a GPU's sin, cos and atan
-// (about 1e-6 on llvmpipe, tens of metres on Earth in the digest's form) only scales them. Longitude only
+// (about 1e-6 on llvmpipe, tens of metres on Earth in the thesis's form) only scales them. Longitude only
 // ever enters as differences, so it is never wrapped.
 template <typename Real>
 glm::vec<2, Real> geodesicMidpoint(glm::vec<2, Real> j, glm::vec<2, Real> k, ReferenceLatitude<Real> reference) {
@@ -62,10 +63,10 @@ glm::vec<2, Real> geodesicMidpoint(glm::vec<2, Real> j, glm::vec<2, Real> k, Ref
   return middle + glm::vec<2, Real>(lonCorrection, latCorrection);
 }
 
-// The position without the radius (seed 000 section 3.3.5, digest 000 section 3.5): the chord's midpoint
-// raised along the new normal by the sagitta x tan(w / 4), x being half the chord. That is exact on the
-// sphere (x = r sin(w/2), sagitta r (1 - cos(w/2))) and tends to the plain midpoint as w tends to 0, so
-// float keeps its precision at every scale.
+// The position without the radius ([Kooima 2008, §3.3.5], whose Fig. 3.9 is missing; docs/references.md,
+// Errata): the chord's midpoint raised along the new normal by the sagitta x tan(w / 4), x being half the
+// chord. That is exact on the sphere (x = r sin(w/2), sagitta r (1 - cos(w/2))) and tends to the plain
+// midpoint as w tends to 0, so float keeps its precision at every scale.
 template <typename Real>
 void subdividePosition(const GeodesicVertex<Real>& j, const GeodesicVertex<Real>& k, GeodesicVertex<Real>& i) {
   const Real halfChord = Real(0.5) * glm::length(j.position - k.position);

@@ -8,8 +8,7 @@
 
 namespace strata::icosahedral {
 
-// A patch's three corners as the CPU seeds them for the GPU subdivision, in double (seed 000 section
-// 3.2.5, digest 000 section 2.5).
+// A patch's three corners as the CPU seeds them for the GPU subdivision, in double [Kooima 2008, §3.2.5].
 struct PatchSeed {
   std::array<glm::dvec3, 3> normals;    // planet-fixed unit normals of v0, v1, v2 (+z north, +x toward lon 0)
   std::array<glm::dvec2, 3> lonlat;     // rad; longitudes unwrapped, within pi of one another
@@ -25,8 +24,9 @@ PatchSeed patchSeed(const std::array<glm::dvec3, 3>& normals, double radius, con
 
 // Where longitude and latitude are measured from: a point near the eye, chosen per frame, so that the
 // float coordinates of nearby vertices are small numbers with fine resolution. One float ulp of an
-// absolute longitude near pi is 1.5 m on Earth (digest 000 section 3.4), and of an absolute latitude
-// 0.2 to 0.8 m beyond 15 degrees from the equator, so the subdivision measures both from the reference.
+// absolute longitude near pi is 1.5 m on Earth ([Kooima 2008, §3.3.4]; docs/references.md, Errata), and of
+// an absolute latitude 0.2 to 0.8 m beyond 15 degrees from the equator, so the subdivision measures both
+// from the reference.
 struct LonLatReference {
   double lon = 0.0;  // rad
   double lat = 0.0;  // rad
@@ -42,7 +42,7 @@ struct GeodesicVertex {
 };
 
 // The vertices of a patch subdivided as the compute pass does it: level by level through the table, each
-// vertex from its two parents alone (seed 000 sections 3.3.3 to 3.3.5, digest 000 sections 3.3 to 3.5).
+// vertex from its two parents alone [Kooima 2008, §3.3.3-3.3.5].
 // The seed is taken relative to the reference in double, then rounded to Real. Instantiated for float,
 // which mirrors the shader operation for operation, and for double, the reference it is measured by.
 template <typename Real>

@@ -1,4 +1,4 @@
-// geometry.icosahedral: the view-dependent tessellation of seed 000 chapter 3. Visibility on the CPU in
+// geometry.icosahedral: the view-dependent tessellation of [Kooima 2008, ch. 3]. Visibility on the CPU in
 // double (the patch tree), subdivision on the GPU (a compute pass), displacement by the height layer and
 // rasterisation into the deferred texturing buffer, with edge windings that leave no cracks between
 // patches of different levels. docs/geometry.md explains the parts.
@@ -146,10 +146,10 @@ NodeTypeDeclaration declaration() {
   type.output = PortType::Geometry;
   type.parameters = {
       {.name = "patches", .type = ParameterType::Integer, .defaultValue = std::int64_t(300), .minimum = 20.0,
-       .maximum = 20000.0, .doc = "visible patches to keep, of about equal size on screen (300 is seed 000's np)"},
+       .maximum = 20000.0, .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"},
       {.name = "depth", .type = ParameterType::Integer, .defaultValue = std::int64_t(5), .minimum = 1.0,
        .maximum = 8.0,
-       .doc = "subdivisions of each patch: 4^depth triangles (5 is seed 000's default; 1 is the least without "
+       .doc = "subdivisions of each patch: 4^depth triangles (5 is Kooima 2008's default; 1 is the least without "
               "T-junctions between levels)"},
       {.name = "operations", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 0.0,
        .maximum = 100000.0,

@@ -20,7 +20,7 @@ std::vector<SphericalTriangle> icosahedronFaces();
 constexpr double kFaceEdgeAngle = 1.1071487177940904;
 
 // The great-circle midpoint of two unit normals: their normalised sum, symmetric in its arguments so
-// that the two patches sharing an edge split it identically (seed 000 section 3.3.3).
+// that the two patches sharing an edge split it identically [Kooima 2008, §3.3.3].
 glm::dvec3 greatCircleMidpoint(const glm::dvec3& a, const glm::dvec3& b);
 
 }  // namespace strata::icosahedral

@@ -20,9 +20,10 @@ struct SeedCorner {
   glm::vec4 lonlat;    // xy: rad from the frame's reference, longitude unwrapped
 };
 
-// What one frame uploads for the visible patches (seed 000 section 3.2.4, its "seed textures"): three
-// corners per patch, computed in double and made eye-relative before they become float (section 3.2.5),
-// and the draw of each patch with the edge winding its coarser neighbours call for (section 3.4.1).
+// What one frame uploads for the visible patches ([Kooima 2008, §3.2.4], its "seed textures"): three
+// corners per patch, computed in double and made eye-relative before they become float
+// [Kooima 2008, §3.2.5], and the draw of each patch with the edge winding its coarser neighbours call for
+// [Kooima 2008, §3.4.1].
 struct PatchBatch {
   LonLatReference reference;  // View::reference, the point below the eye: longitude and latitude are measured from it
   double splitDistanceAtLevelZero = 0.0;  // m: PatchTree::splitDistanceAtLevelZero(), for the morphs

@@ -10,7 +10,8 @@ namespace strata::icosahedral {
 
 // The GPU side of the patches: the dependence table and the edge windings (uploaded once), the frame's
 // seeds and draws, and the subdivided vertices, which the compute pass writes and the draw reads as
-// vertex attributes with nothing copied (digest 000 sections 3.8 and 4.1, GL 4.5 forms).
+// vertex attributes with nothing copied (GL 4.5 forms of [Kooima 2008, §3.3.7, §3.4.1], which copies the
+// vertices through a pixel buffer object and keeps the windings as eight element buffers).
 class PatchBuffers {
  public:
   PatchBuffers(const SubdivisionTable& table, const EdgeWindings& windings);

@@ -7,7 +7,7 @@
 namespace strata::icosahedral {
 
 // The terrain a patch can hold: the wedge of its three great-circle planes between two radii, the
-// "surface shell" of seed 000 section 3.2.3. Everything here is exact for the shell, so culling by it
+// "surface shell" of [Kooima 2008, §3.2.3]. Everything here is exact for the shell, so culling by it
 // never removes terrain that lies inside it.
 struct PatchShell {
   SphericalTriangle corners;  // planet-fixed unit normals, counter-clockwise from outside
@@ -32,14 +32,15 @@ bool outsidePlane(const PatchShell& shell, const glm::dvec3& normal, double offs
 
 // Whether the body hides the whole shell from the eye. The body is taken as the sphere of
 // `occluderRadius`, below which no terrain lies anywhere; a point at radius R is hidden when its angle
-// from the eye's direction exceeds acos(r/d) + acos(r/R) (digest 000 section 2.2, the conservative form
-// of seed 000's horizon plane r^2/d, which alone would cull mountains that rise above the horizon).
+// from the eye's direction exceeds acos(r/d) + acos(r/R): a conservative form of the horizon plane r^2/d of
+// [Kooima 2008, §3.2.2], which alone would cull mountains that rise above the horizon (docs/references.md,
+// Errata).
 bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occluderRadius);
 
 // The face-on distance of a point of the sphere: its distance from the eye over the square root of the
 // cosine between its normal and the direction to the eye (at least kGrazingCosine). A small patch there
 // subtends the solid angle it would face on at that distance, so splitting by it splits by solid angle as
-// seed 000 section 3.2.1 does, while staying a function of each point alone, as geomorphing needs. The
+// [Kooima 2008, §3.2.1] does, while staying a function of each point alone, as geomorphing needs. The
 // compute pass computes it per vertex (subdivide_patches.comp).
 constexpr double kGrazingCosine = 1.0 / 16.0;  // at the horizon a patch counts as 4 times as far: seen edge on
                                                // it still needs some detail for its silhouette

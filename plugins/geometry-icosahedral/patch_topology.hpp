@@ -26,7 +26,7 @@ struct PatchNode {
 
 // The shape of the patch tree: patches, their shared vertices and who lies across each edge. A split
 // makes four children from the edge midpoints; vertices are shared by every patch that touches them,
-// so neighbours hold the same corners bit for bit (digest 000 section 2.5). Edge e of a patch runs
+// so neighbours hold the same corners bit for bit [Kooima 2008, §3.2.5]. Edge e of a patch runs
 // from corner e to corner e + 1.
 class PatchTopology {
  public:

@@ -13,31 +13,31 @@
 namespace strata::icosahedral {
 
 struct PatchTreeSettings {
-  int patches = 300;            // visible patches to keep: seed 000 section 2.4.1 sets np to about 300
+  int patches = 300;            // visible patches to keep: [Kooima 2008, §2.4.1] sets np to about 300
   int operationsPerFrame = 64;  // splits and merges one frame may make: bounds the CPU's share of it
 };
 
 // The heights of the terrain within a patch (HeightInput::within), asked once per patch.
 using PatchHeights = std::function<HeightRange(const SphericalTriangle& corners)>;
 
-// A visible leaf, as the geometry generation takes it (seed 000 section 3.2.4).
+// A visible leaf, as the geometry generation takes it [Kooima 2008, §3.2.4].
 struct Patch {
   SphericalTriangle corners;
   int level = 0;             // splits from the icosahedron's face
   unsigned coarseEdges = 0;  // bit e: the neighbour across the edge from corner e to corner e + 1 is coarser
 };
 
-// The frame-coherent patch tree of seed 000 section 3.2.1, computed once for all views: the faces of
+// The frame-coherent patch tree of [Kooima 2008, §3.2.1], computed once for all views: the faces of
 // the icosahedron split 1-to-4. A visible patch is split while its face-on distance from an eye
 // (patch_shell.hpp: the least over the patch's shell, between its own lowest and highest heights, where
 // they are known; else on the sphere) is below its level's split distance, the detail scale times the level's nominal
 // size, and four siblings are merged when their parent would not be split: the largest patches in solid
-// angle split first, as in seed 000, but by a threshold on a measure each vertex also has, which is what
+// angle split first, as in [Kooima 2008], but by a threshold on a measure each vertex also has, which is what
 // geomorphing needs (docs/geometry.md; the split distances are CDLOD's, Strugar 2009, on the sphere).
 // The detail scale follows the count of visible patches slowly toward `patches`. A patch is visible when its shell
-// (section 3.2.3) rises above the horizon and reaches into a view's frustum. Neighbouring leaves differ
-// by at most one level (section 3.4.1): a split first splits coarser neighbours, and a merge that would
-// break the rule is not made (digest 000 section 2.1).
+// [Kooima 2008, §3.2.3] rises above the horizon and reaches into a view's frustum. Neighbouring leaves differ
+// by at most one level [Kooima 2008, §3.4.1]: a split first splits coarser neighbours, and a merge that would
+// break the rule is not made (how the tree of [Kooima 2008, §3.2.1] keeps the rule is left unsaid there).
 class PatchTree {
  public:
   // `heights`: the whole terrain's, below which the body hides what lies behind; `patchHeights`: each patch's

@@ -10,8 +10,8 @@ namespace {
 constexpr std::uint32_t kNotAVertex = std::numeric_limits<std::uint32_t>::max();
 
 // The direction, from its lower-numbered corner, of the patch edge that a new vertex's parents lie
-// parallel to (digest 000 section 3.1): along a when only a/s is odd, along b when only b/s is, and
-// along the edge from v1 to v2 when both are.
+// parallel to (our breadth-first numbering for [Kooima 2008, §3.3.1]): along a when only a/s is odd,
+// along b when only b/s is, and along the edge from v1 to v2 when both are.
 GridPoint parentDirection(GridPoint point, int step) {
   const bool oddA = (point.a / step) % 2 != 0, oddB = (point.b / step) % 2 != 0;
   if (oddA && oddB) return {-1, 1};

@@ -8,7 +8,7 @@ namespace strata::icosahedral {
 // Deeper patches would hold more than 33153 vertices each; the patch tree refines instead.
 constexpr int kDeepestSubdivision = 8;
 
-// nv(d) = (2^d + 1)(2^d + 2) / 2: the vertices of a patch subdivided d times (seed 000 section 3.3.1).
+// nv(d) = (2^d + 1)(2^d + 2) / 2: the vertices of a patch subdivided d times [Kooima 2008, §3.3.1].
 int verticesPerPatch(int depth);
 
 // A vertex's place in the patch's triangular grid of N = 2^depth segments per edge, a + b <= N. In the
@@ -20,7 +20,7 @@ struct GridPoint {
   bool operator==(const GridPoint&) const = default;
 };
 
-// The dependence table of seed 000 section 3.3.1 (digest 000 section 3.1): every vertex but the three
+// The dependence table of [Kooima 2008, §3.3.1]: every vertex but the three
 // corners is made from two parents, and the vertices are numbered breadth first, so that a compute pass
 // can fill level L = 1..depth as the index range [nv(L - 1), nv(L)) while reading only indices below
 // nv(L - 1). Vertices 0, 1 and 2 are the corners v0, v1, v2. Level L adds the grid points that are

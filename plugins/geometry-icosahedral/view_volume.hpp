@@ -9,7 +9,7 @@
 namespace strata::icosahedral {
 
 // One view's frustum as five planes in planet-fixed coordinates (the far plane is at infinity), with
-// the eye: what patch visibility tests against (seed 000 section 3.2). In double, so that the planes
+// the eye: what patch visibility tests against [Kooima 2008, §3.2]. In double, so that the planes
 // stay exact at planet scale.
 class ViewVolume {
  public:

@@ -75,7 +75,7 @@ glm::dvec3 anyPerpendicular(const glm::dvec3& unit) {
 
 SpherePoint castRay(const CrossSection& view, const glm::dvec3& ray, const glm::dvec3& nadir) {
   const glm::dvec3 antinadir = -nadir;
-  // The cross-section basis of section 1.5 step 2: i = n, j = i x ray, k = j x i; |j| = sin(omega).
+  // The cross-section basis of [Mahsman 2010, §3.6.2]: i = n, j = i x ray, k = j x i; |j| = sin(omega).
   const glm::dvec3 across = glm::cross(nadir, ray);
   double sinRay = glm::length(across), cosRay = glm::dot(ray, nadir);
   const bool hit = !misses(view.altitude / view.primaryRadius, sinRay, cosRay);

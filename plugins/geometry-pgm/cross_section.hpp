@@ -4,12 +4,12 @@
 namespace strata::pgm {
 
 // The PGM pass reduces each grid ray to 2D: the plane through the ray and the nadir n (the unit vector
-// from the eye to the planet's centre) cuts the spheres in circles (digest 003 section 1.2). In it the
+// from the eye to the planet's centre) cuts the spheres in circles [Mahsman 2010, §3.2]. In it the
 // ray angle omega lies between the ray and n, and the normal angle gamma between the sphere's normal at
 // the hit and the antinadir -n. Angles are in radians, lengths in any one unit, all in double: this is
 // the reference the GPU pass will be measured against.
 
-// The constants of one view, the pass's uniforms (section 1.5).
+// The constants of one view, the pass's uniforms [Mahsman 2010, §3.6].
 struct CrossSection {
   double eyeDistance;       // d: from the eye to the centre
   double primaryRadius;     // r_p, below d (referenceSpheres clamps it)
@@ -28,14 +28,15 @@ CrossSection crossSection(double eyeDistance, double primaryRadius, double secon
 double tangentAngle(double eyeDistance, double radius);
 
 // Whether a ray at angle omega from the nadir, given by sin and cos, misses the sphere that the eye is
-// the relative altitude a/r above: when (d/r) sin(omega) > 1 (section 1.2), or when it points more than
-// 90 degrees from the nadir, where omega would otherwise alias onto its mirror image (section 1.5).
+// the relative altitude a/r above: when (d/r) sin(omega) > 1 [Mahsman 2010, §3.2], or when it points more
+// than 90 degrees from the nadir, where omega = asin(r.k) would otherwise alias onto its mirror image
+// ([Mahsman 2010, §3.6.3, Eq. 3.9] does not tell them apart).
 bool misses(double relativeAltitude, double sinRay, double cosRay);
 
 // The normal angle of the ray's first hit, asin(c u) - asin(u) with c = d/r and u = sin(omega)
-// (Eqs. 3.3, 3.10), in the form of digest 003 section 1.8 that loses nothing when c is close to 1:
-// with eps = a/r, w = cos(omega) and delta = (2 eps + eps^2) u^2 it is
-// asin(u [eps w + delta / (w + sqrt(w^2 - delta))]). For a ray that hits.
+// ([Mahsman 2010, §3.6.4, Eqs. 3.3, 3.10]), rewritten so that it loses nothing when c is close to 1, as
+// near the ground, where c in float is only a few ulps above 1: with eps = a/r, w = cos(omega) and
+// delta = (2 eps + eps^2) u^2 it is asin(u [eps w + delta / (w + sqrt(w^2 - delta))]). For a ray that hits.
 double frontNormalAngle(double relativeAltitude, double sinRay, double cosRay);
 
 // The normal angle of the ray's exit from the sphere of radius r: pi - asin((d/r) sin(omega)) - omega
@@ -44,22 +45,23 @@ double backNormalAngle(double eyeDistance, double radius, double rayAngle);
 
 // How far the ray has turned from the primary towards the secondary sphere: f = (omega - b)/(tau0 - b)
 // clamped to [0, 1], 0 up to b and 1 at the tangent. The thesis prints Eq. 3.11 the other way round,
-// (omega - tau0)/(b - tau0), against its own text (digest 003 section 1.10, erratum 1).
+// (omega - tau0)/(b - tau0), against its own text ([Mahsman 2010, §3.6.4, Eq. 3.11];
+// docs/references.md, Errata).
 double blendFactor(const CrossSection& view, double rayAngle);
 
 // The normal angle on the secondary sphere for blend f: the ray angle omega_s = mix(b, tau_s, f), then
-// asin((d/r_s) sin(omega_s)) - omega_s, which is gamma0 at f = 1 (section 1.5, step 6). Above about
-// 387 km on Mars b exceeds tau_s and the asin's argument exceeds 1 near f = 0: it is clamped, the NaN
-// hazard of section 1.5. Needs a secondary sphere.
+// asin((d/r_s) sin(omega_s)) - omega_s, which is gamma0 at f = 1 [Mahsman 2010, §3.6.4]. Above about
+// 387 km on Mars b exceeds tau_s and the asin's argument exceeds 1 near f = 0: it is clamped, where the
+// thesis would take the asin of it, a NaN. Needs a secondary sphere.
 double secondaryNormalAngle(const CrossSection& view, double blend);
 
-// The normal angle of a ray that hits: mix(gamma_p, gamma_s, f) (section 1.5, step 7).
+// The normal angle of a ray that hits: mix(gamma_p, gamma_s, f) [Mahsman 2010, §3.6.4].
 double normalAngle(const CrossSection& view, double sinRay, double cosRay);
 
 // What the pass writes for one grid ray. A ray that misses the primary sphere, or points away from the
 // planet, is replaced by the ray of its cross-section plane that grazes the sphere (omega = tau0): its point
 // is the horizon, or beyond it at gamma0 with a secondary sphere, so that the grid's mesh reaches as far as
-// the view does (the thesis leaves misses unsaid, section 1.10 item 9).
+// the view does (what a miss becomes, [Mahsman 2010, §3.6] leaves unsaid; docs/references.md, Errata).
 struct SpherePoint {
   bool hit;             // false: the ray misses; the point is its plane's horizon
   glm::dvec3 normal;    // s, the unit sphere normal
@@ -74,7 +76,7 @@ constexpr double kNadirSine = 1e-15;
 // result is in that frame. The normal is s = -n cos(gamma) + k sin(gamma) (Eq. 3.12), with k the unit
 // vector of the plane perpendicular to n on the ray's side. The position is r_p s - d n, written as
 // -(a + 2 r_p sin^2(gamma/2)) (-n) + r_p sin(gamma) k so that no large lengths cancel: the thesis's
-// t = a sin(rho) / sin(chi) is always a (section 1.10, erratum 2).
+// t = a sin(rho) / sin(chi) is always a ([Mahsman 2010, §3.6.5]; docs/references.md, Errata).
 SpherePoint castRay(const CrossSection& view, const glm::dvec3& ray, const glm::dvec3& nadir);
 
 }  // namespace strata::pgm

@@ -11,7 +11,7 @@
 
 namespace strata::pgm {
 
-// The displaced grid of projective grid mapping (digest 003 section 1.6) on the GPU: one vertex per grid
+// The displaced grid of projective grid mapping [Mahsman 2010, §3.7.2] on the GPU: one vertex per grid
 // point, made by shaders/geometry/pgm_displace.comp from the cast pass's buffers, and two triangles per
 // grid cell, drawn by pgm_grid.vert. Every ray has a point (one that misses lies on the horizon,
 // pgm_cast.comp), so the triangles are the same every frame: the diagonal from each cell's lower left to

@@ -12,7 +12,7 @@ glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, in
 }
 
 // The secondary sphere's constants go up as tau_s - b and gamma0 = pi/2 - tau_s, formed in double: in
-// float each difference would lose its leading digits (digest 003 section 1.5, step 6).
+// float each difference would lose its leading digits [Mahsman 2010, §3.6.4].
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
              const glm::dmat3& samplingToLocal, glm::ivec2 size) {
   const double outermost = 0.5 * std::numbers::pi - view.secondaryTangent;

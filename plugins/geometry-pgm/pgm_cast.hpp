@@ -20,11 +20,11 @@ glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, in
 // Makes the cast pass (`program`, shaders/geometry/pgm_cast.comp) current with its uniforms: the grid's
 // size, the sampling frustum, the rotation from sampling space to the east-north-up frame at the point below
 // the eye (strata/camera.hpp's planetToLocal), and the cross section's constants. Every double becomes a
-// float here, and nothing planet-sized but the primary radius goes up (digest 003 section 1.8).
+// float here, and nothing planet-sized but the primary radius goes up [Mahsman 2010, §3.6.5].
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
              const glm::dmat3& samplingToLocal, glm::ivec2 size);
 
-// The pass's two grid-sized buffers, row by row (digest 003 section 1.5, output).
+// The pass's two grid-sized buffers, row by row [Mahsman 2010, §3.6.1].
 class CastBuffers {
  public:
   explicit CastBuffers(glm::ivec2 size);

@@ -1,4 +1,4 @@
-// geometry.pgm: spherical projective grid mapping after Mahsman's thesis (seed 003, digest 003). Each frame
+// geometry.pgm: spherical projective grid mapping after Mahsman's thesis [Mahsman 2010]. Each frame
 // a fixed grid of rays from a sampling camera is cast onto the reference spheres, displaced by the height
 // layer and rasterised into the same deferred texturing buffer as geometry.icosahedral, so a pipeline
 // switches generators by changing its `type`. docs/pgm.md explains the parts.
@@ -117,8 +117,8 @@ std::optional<double> PgmGeometry::leastVisibleHeight(const View& view) {
   return sameSight(measured->second, view, radius_ + heights_.range().lowest) ? least : std::nullopt;
 }
 
-// The reference spheres and the sampling camera on the CPU, in double (digest 003 sections 1.3, 1.4), then
-// the cast and displacement passes on the GPU (sections 1.5, 1.6).
+// The reference spheres and the sampling camera on the CPU, in double [Mahsman 2010, §3.4, §3.5], then
+// the cast and displacement passes on the GPU [Mahsman 2010, §3.6, §3.7.2].
 void PgmGeometry::makeGrid(const View& view) {
   const auto start = std::chrono::steady_clock::now();
   const double distance = glm::length(view.eye);

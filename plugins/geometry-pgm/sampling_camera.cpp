@@ -13,7 +13,7 @@ namespace strata::pgm {
 namespace {
 
 // The inward normal of the plane through the eye and the corners i and i + 1 of a polygon of rays,
-// n_i = c_{i+1} x c_i (section 1.4, step 3.1): positive dot products lie inside.
+// n_i = c_{i+1} x c_i ([Mahsman 2010, §3.5.3], its first step): positive dot products lie inside.
 glm::dvec3 inwardNormal(const std::vector<glm::dvec3>& rays, std::size_t i) {
   return glm::cross(rays[(i + 1) % rays.size()], rays[i]);
 }
@@ -33,7 +33,7 @@ std::vector<glm::dvec3> clip(const std::vector<glm::dvec3>& rays, const glm::dve
 }
 
 // Eye space rotated about the forward -z so that the nadir lies in the yz-plane below it: rows
-// r = |b x n|, u = b x r, b = +z (section 1.4, step 2). Looking along the nadir, eye space is kept.
+// r = |b x n|, u = b x r, b = +z [Mahsman 2010, §3.5.2]. Looking along the nadir, eye space is kept.
 glm::dmat3 eyeToRotatedEye(const glm::dvec3& nadir) {
   const double across = std::hypot(nadir.x, nadir.y);
   if (across < kParallelSine) return glm::dmat3(1.0);
@@ -41,7 +41,7 @@ glm::dmat3 eyeToRotatedEye(const glm::dvec3& nadir) {
   return glm::transpose(glm::dmat3(right, glm::cross(back, right), back));
 }
 
-// The view frustum's corner rays (l,b), (r,b), (r,t), (l,t) on the near plane, unit (step 1).
+// The view frustum's corner rays (l,b), (r,b), (r,t), (l,t) on the near plane, unit [Mahsman 2010, §3.5.1].
 std::vector<glm::dvec3> viewCorners(const ViewCamera& view) {
   return {glm::normalize(glm::dvec3(view.left, view.bottom, -view.near)),
           glm::normalize(glm::dvec3(view.right, view.bottom, -view.near)),
@@ -49,11 +49,11 @@ std::vector<glm::dvec3> viewCorners(const ViewCamera& view) {
           glm::normalize(glm::dvec3(view.left, view.top, -view.near))};
 }
 
-// The nadir extension, read as the second of the digest's two readings: the view frustum's bottom is
-// tilted down to the nadir, as the convex hull of the frustum and the nadir. The edges the nadir lies
-// beyond give way to two edges through it, so the hull holds every ray between the nadir and any point of
-// the bottom edge. Unchanged when the nadir is inside; when the nadir is beyond every edge (the zenith in
-// view) no hull fits a camera, and the view frustum stays.
+// The nadir extension, which [Mahsman 2010, §3.5] gives only in words (docs/references.md, Errata), read as
+// the view frustum's bottom tilted down to the nadir: the convex hull of the frustum and the nadir. The
+// edges the nadir lies beyond give way to two edges through it, so the hull holds every ray between the
+// nadir and any point of the bottom edge. Unchanged when the nadir is inside; when the nadir is beyond every
+// edge (the zenith in view) no hull fits a camera, and the view frustum stays.
 std::vector<glm::dvec3> extendToNadir(const std::vector<glm::dvec3>& rays, const glm::dvec3& nadir) {
   std::vector<bool> beyond(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) beyond[i] = glm::dot(inwardNormal(rays, i), nadir) < 0.0;
@@ -67,10 +67,10 @@ std::vector<glm::dvec3> extendToNadir(const std::vector<glm::dvec3>& rays, const
   return hull;
 }
 
-// The sampling forward in the yz-plane: the digest averages the rays (step 4), an operator it calls
-// under-specified (section 1.10, item 9). This takes the mean of the two extreme rays' angles about the
-// nadir in that plane. All rays lie within the visible-sphere frustum, under 90 degrees from the nadir, so
-// those angles span under 180 degrees and every ray ends under 90 degrees from the forward: z < 0.
+// The sampling forward in the yz-plane: [Mahsman 2010, §3.5.4] averages the rays' y and z components; this
+// takes the mean of the two extreme rays' angles about the nadir in that plane instead. All rays lie within
+// the visible-sphere frustum, under 90 degrees from the nadir, so those angles span under 180 degrees and
+// every ray ends under 90 degrees from the forward: z < 0.
 glm::dvec3 samplingForward(const std::vector<glm::dvec3>& rays, const glm::dvec3& nadir) {
   const glm::dvec3 down = glm::normalize(glm::dvec3(0.0, nadir.y, nadir.z)), ahead(0.0, -down.z, down.y);
   double least = std::numeric_limits<double>::max(), most = -least;
@@ -83,7 +83,7 @@ glm::dvec3 samplingForward(const std::vector<glm::dvec3>& rays, const glm::dvec3
   return std::cos(middle) * down + std::sin(middle) * ahead;
 }
 
-// O: rotated eye space to sampling space, rows r, u = b x r, b = -f_s (step 4). The forward and the nadir
+// O: rotated eye space to sampling space, rows r, u = b x r, b = -f_s [Mahsman 2010, §3.5.4]. The forward and the nadir
 // both lie in the yz-plane, so |b x n| is +x or -x; +x is the thesis's whenever the nadir lies below the
 // forward and needs no fallback when the two are parallel.
 glm::dmat3 rotatedEyeToSampling(const glm::dvec3& forward) {
@@ -91,7 +91,8 @@ glm::dmat3 rotatedEyeToSampling(const glm::dvec3& forward) {
   return glm::transpose(glm::dmat3(right, glm::cross(back, right), back));
 }
 
-// The fitted rays in sampling space and their bounding box on the near plane, t = -near / c_z (step 4).
+// The fitted rays in sampling space and their bounding box on the near plane, t = -near / c_z
+// [Mahsman 2010, §3.5.4].
 void fitFrustum(SamplingCamera& camera, const std::vector<glm::dvec3>& rays, const glm::dmat3& toSampling) {
   camera.left = camera.bottom = std::numeric_limits<double>::max();
   camera.right = camera.top = -camera.left;
@@ -109,10 +110,10 @@ void fitFrustum(SamplingCamera& camera, const std::vector<glm::dvec3>& rays, con
 
 }  // namespace
 
-// In rotated eye space the VSF's basis b = -n, r = |n x f|, u = |r x n| (step 1) is r = +x, because the
+// In rotated eye space the VSF's basis b = -n, r = |n x f|, u = |r x n| [Mahsman 2010, §3.5.1] is r = +x, as the
 // nadir lies in the yz-plane below f = -z; the VSF about the exact nadir is built there directly, without
-// the detour through planet-fixed and eye space. Near the nadir this is the camera's right, the digest's
-// fallback when f is parallel to n.
+// the detour through planet-fixed and eye space. Near the nadir this is the camera's right, a fallback for f
+// parallel to n, where that basis is undefined.
 std::vector<glm::dvec3> visibleSphereFrustum(const glm::dvec3& nadir, double tangent) {
   const double half = std::tan(tangent);  // h = n tan(tau) at n = 1
   const glm::dvec3 up = glm::normalize(glm::cross(glm::dvec3(1.0, 0.0, 0.0), nadir));
@@ -128,7 +129,7 @@ std::vector<glm::dvec3> intersectCones(std::vector<glm::dvec3> rays, const std::
 
 // Both frusta in rotated eye space, intersected; the VSF alone where they do not meet, else the
 // intersection extended to the nadir when it lacks it, which is when the view frustum lacks it, since the
-// nadir is the VSF's axis (section 1.4, steps 1 to 4).
+// nadir is the VSF's axis [Mahsman 2010, §3.5.1-3.5.4].
 SamplingCamera samplingCamera(const ViewCamera& view, double radius) {
   const double distance = glm::length(view.eye);
   const glm::dvec3 nadirInEye = view.planetToEye * (-view.eye / distance);

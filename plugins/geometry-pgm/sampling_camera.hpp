@@ -5,21 +5,21 @@
 
 namespace strata::pgm {
 
-// The sampling camera of digest 003 section 1.4: it shares the eye with the viewing camera, so it is a
+// The sampling camera of [Mahsman 2010, §3.5]: it shares the eye with the viewing camera, so it is a
 // rotation and a frustum. Its rays must hold every pertinent ray, those that hit the primary sphere and
 // lie in the view frustum extended down to the nadir, and as few others as it can. Cameras are
 // right-handed and look down -z; directions are in double and lengths in any one unit.
 
 // The viewing camera: the eye in planet-fixed coordinates (the planet's centre at the origin), the
 // rotation from planet-fixed to eye space, and the frustum as glFrustum takes it, its edges on the near
-// plane z = -near (section 1.4, step 1).
+// plane z = -near [Mahsman 2010, §3.5.1].
 struct ViewCamera {
   glm::dvec3 eye;
   glm::dmat3 planetToEye;
   double left, right, bottom, top, near;
 };
 
-// Which rays the sampling camera was fitted to (section 1.4, step 3).
+// Which rays the sampling camera was fitted to [Mahsman 2010, §3.5.3].
 enum class SamplingFit {
   kIntersection,        // the view frustum and the visible-sphere frustum, which holds the nadir
   kExtendedToNadir,     // the same, after the view frustum was extended down to the nadir
@@ -27,7 +27,7 @@ enum class SamplingFit {
 };
 
 // The sampling camera: planet-fixed to sampling space, S = O R V without the translation to the eye
-// (section 1.4, step 4), and its glFrustum edges on the viewing camera's near plane.
+// [Mahsman 2010, §3.5.4], and its glFrustum edges on the viewing camera's near plane.
 struct SamplingCamera {
   glm::dmat3 planetToSampling;
   double left, right, bottom, top, near;
@@ -36,7 +36,7 @@ struct SamplingCamera {
 };
 
 // Below this sine of the angle between the view's forward and the nadir the two are parallel: the
-// rotated eye frame keeps eye space, as the digest advises (section 1.4, step 2, DIGEST NOTE).
+// rotated eye frame keeps eye space, where the rotation of [Mahsman 2010, §3.5.2] is undefined.
 constexpr double kParallelSine = 1e-12;
 
 // The sampling camera of a view around the sphere of `radius` centred on the planet. That sphere is the
@@ -47,11 +47,12 @@ SamplingCamera samplingCamera(const ViewCamera& view, double radius);
 
 // The corner rays of the visible-sphere frustum in rotated eye space, where the nadir lies in the
 // yz-plane below the forward: a square frustum about the nadir whose sides are tangent to the sphere, with
-// all four corners at z = -1 in its own frame (erratum 3) and its top edge towards the view (step 1).
+// all four corners at z = -1 in its own frame ([Mahsman 2010, §3.5.1] prints +n for three of them;
+// docs/references.md, Errata) and its top edge towards the view [Mahsman 2010, §3.5.1].
 std::vector<glm::dvec3> visibleSphereFrustum(const glm::dvec3& nadir, double tangent);
 
 // The rays of a convex polygon of rays, in order, within the planes through the eye spanned by the
-// consecutive corners of a second such polygon: the two cones' intersection (step 3). Empty if they do
+// consecutive corners of a second such polygon: the two cones' intersection [Mahsman 2010, §3.5.3]. Empty if they do
 // not meet.
 std::vector<glm::dvec3> intersectCones(std::vector<glm::dvec3> rays, const std::vector<glm::dvec3>& bounds);
 

@@ -11,10 +11,11 @@
 namespace strata::pgm {
 
 // The least height seen in a frame, read back a frame or more later for the primary reference sphere
-// (digest 003 section 1.3, method 2). The frame's rasterisation writes each pixel's height above the body's
+// ([Mahsman 2010, §3.4.1], its second method). The frame's rasterisation writes each pixel's height above the body's
 // radius, in displaced (scaled) metres, into an R32F texture cleared to +infinity where no terrain is
 // drawn. Heights rather than radii: a float holding Mars's radius resolves 0.25 m, one holding 21 km
-// resolves 2 mm, and the two are the same up to the body's radius (the digest's note 10).
+// resolves 2 mm, and the two are the same up to the body's radius (the thesis writes the radius
+// [Mahsman 2010, §3.4.1] and the height [Mahsman 2010, §3.7.2]).
 //
 // reduce() folds the texture to its minimum on the GPU (shaders/geometry/pgm_least_radius.comp), copies
 // it into a persistently mapped slot and sets a fence; latest() only asks the fences with a zero timeout,
@@ -53,18 +54,20 @@ class VisibleRadius {
 };
 
 // Whether a least visible height measured in view `measured` may stand for view `current`: the thesis
-// uses the last frame's (digest 003 section 1.3), which holds while the view moves little from frame to
+// uses the last frame's [Mahsman 2010, §3.4.1], which holds while the view moves little from frame to
 // frame; after a jump (a new viewpoint, a turn) lower terrain may have come into view, and a primary
-// sphere above it would pull the mesh in from the screen's edges (the shrinking of section 6, Fig. 3.11).
-// Little is: the eye moved by under kSightMove of its height above the minimum sphere, the view turned by
-// under kSightTurn of its vertical field of view, and the frame's size and field of view are the same.
+// sphere above it would pull the mesh in from the screen's edges (the shrinking of
+// [Mahsman 2010, §3.3, Fig. 3.11]). Little is: the eye moved by under kSightMove of its height above the
+// minimum sphere, the view turned by under kSightTurn of its vertical field of view, and the frame's size
+// and field of view are the same.
 constexpr double kSightMove = 0.05;
 constexpr double kSightTurn = 0.05;
 bool sameSight(const View& measured, const View& current, double minimumRadius);
 
-// The primary radius for this frame (digest 003 section 1.3, DIGEST NOTE): the body's radius plus the last
-// frame's least visible height, or plus the lowest height the body has (the minimum sphere) while there is
-// none, on the first frame or when nothing was drawn; then kept below the eye by clampPrimaryRadius.
+// The primary radius for this frame ([Mahsman 2010, §3.4.1], which leaves the first frame and r_p < d
+// unsaid): the body's radius plus the last frame's least visible height, or plus the lowest height the body
+// has (the minimum sphere) while there is none, on the first frame or when nothing was drawn; then kept
+// below the eye by clampPrimaryRadius.
 double primaryRadius(std::optional<double> latestHeight, double bodyRadius, double lowest, double eyeDistance);
 
 }  // namespace strata::pgm

@@ -31,7 +31,7 @@ class ImageOutput : public Node, public FrameOutput {
     for (const Layer* layer : surface_) {
       layersGlsl += layer->glslOnce();
       const bool colour = layer->kind() == LayerKind::Color;
-      // Seed 000 section 4.1.2: value x weight into rgb, the weight into alpha.
+      // [Kooima 2008, §4.1.2]: value x weight into rgb, the weight into alpha.
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
                     (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
     }

@@ -13,8 +13,8 @@ class TextureUnits;
 namespace strata::image {
 
 // Surfaces output.image lays translucent over its geometry (issue 8, "show upper layers translucent over
-// lower ones with correct ordering"; seed 000 chapter 6, layered data peeling; digest 000 section 6: "a
-// separate height accumulation per layer, separate vertex sets"): each a geometry of its own, drawn into its
+// lower ones with correct ordering"; [Kooima 2008, ch. 6], layered data peeling, which asks how to show
+// several layers at once where upper ones would occlude lower ones): each a geometry of its own, drawn into its
 // own deferred buffer with the same view, and coloured by one layer. Per pixel, those nearer than the
 // opaque surface are laid over it farthest first, each hiding `opacity` of what lies behind it, so the
 // order is right however the surfaces cross and wherever the camera is.

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 
+#include <strata/log.hpp>
 #include <strata/paged_raster_layer.hpp>
 #include <strata/plugin.hpp>
 #include <strata/plugin_registry.hpp>
@@ -154,10 +155,11 @@ class GdalSource : public Node {
   static void warnWithoutOverviews(GDALDataset& dataset) {
     const int longest = std::max(dataset.GetRasterXSize(), dataset.GetRasterYSize());
     if (longest <= kSlowWithoutOverviews || dataset.GetRasterBand(1)->GetOverviewCount() > 0) return;
-    std::fprintf(stderr,
-                 "strata: warning: '%s' (%dx%d) has no overviews, so its coarse pages are averaged from full "
-                 "resolution, slowly; `strata tile %s OUTPUT.tif` writes it as a tiled pyramid\n",
-                 dataset.GetDescription(), dataset.GetRasterXSize(), dataset.GetRasterYSize(), dataset.GetDescription());
+    const std::string file = dataset.GetDescription();
+    logWarning("'" + file + "' (" + std::to_string(dataset.GetRasterXSize()) + "x" +
+                   std::to_string(dataset.GetRasterYSize()) +
+                   ") has no overviews, so its coarse pages are averaged from full resolution, slowly",
+               "`strata tile " + file + " OUTPUT.tif` writes it as a tiled pyramid");
   }
 
   // 4096 texels a side: a coarse page of such a raster averages 64 full-resolution pages, under a

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <strata/log.hpp>
 
 namespace strata::gdal {
 namespace {
@@ -60,11 +60,10 @@ bool agreesWithOverview(GDALRasterBand& band, const BlockRanges& ranges) {
 }
 
 void warnOfIgnored(GDALDataset& dataset, const char* why) {
-  std::fprintf(stderr,
-               "strata: warning: '%s' carries block ranges that %s: it was changed after `strata tile` wrote it, so "
-               "its heights are not known region by region and its patches are measured on the sphere; run `strata "
-               "tile` on it again\n",
-               dataset.GetDescription(), why);
+  logWarning(std::string("'") + dataset.GetDescription() + "' carries block ranges that " + why +
+                 ": it was changed after `strata tile` wrote it, so its heights are not known region by region and "
+                 "its patches are measured on the sphere",
+             "run `strata tile` on it again");
 }
 
 }  // namespace

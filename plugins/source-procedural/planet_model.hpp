@@ -7,7 +7,8 @@ namespace strata::procedural {
 
 // What makes one procedural planet, with defaults for a Mars-sized body.
 struct PlanetParameters {
-  // Which planet: every seed gives an unrelated height field. 2008, the year of seed 000, for no other reason.
+  // Which planet: every seed gives an unrelated height field. 2008, the year of [Kooima 2008], for no other
+  // reason.
   std::uint32_t seed = 2008;
   // m. |height| never exceeds it (the noise stays within +-0.99); a typical height is a fifth of it, so
   // 12 km gives Mars-like relief: heights of 2.5 km root mean square, basins and peaks to about 8.5 km.
@@ -32,7 +33,7 @@ inline constexpr double kOctaveGain = 0.5;
 // this (planet_lattice.hpp takes those points apart about the frame's reference).
 inline constexpr glm::dvec3 kOctaveShift(0.6180339887, 0.3819660113, 0.2360679775);
 
-// The demonstration planet of seed 000 chapter 4 (digest 000, section 5): false data, a fractal sum of 3D
+// The demonstration planet of [Kooima 2008, ch. 4]: false data, a fractal sum of 3D
 // simplex noise over the unit sphere, "observed" through several projections and resolutions. Heights and
 // colours are computed in double here; shaders/procedural/planet.glsl does the same in float.
 class PlanetModel {

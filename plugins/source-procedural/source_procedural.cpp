@@ -1,6 +1,6 @@
-// source.procedural: the demonstration planet of seed 000 chapter 4 (digest 000, section 5), a fractal sum
-// of 3D simplex noise, as a height or colour layer computed on the GPU. It needs no data files. The plugin
-// also registers source.checker (source_checker.hpp).
+// source.procedural: the demonstration planet of [Kooima 2008, ch. 4], a fractal sum of 3D simplex noise,
+// as a height or colour layer computed on the GPU. It needs no data files. The plugin also registers
+// source.checker (source_checker.hpp).
 #include <cstdint>
 #include <memory>
 
@@ -42,7 +42,7 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "source.procedural";
   type.category = NodeCategory::Source;
-  type.summary = "A procedural planet of 3D simplex noise (seed 000's demonstration planet), as heights or colours";
+  type.summary = "A procedural planet of 3D simplex noise (Kooima 2008's demonstration planet), as heights or colours";
   type.output = PortType::Layer;
   type.parameters = {
       {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),

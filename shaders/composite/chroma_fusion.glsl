@@ -1,5 +1,5 @@
-// composite.chroma_fusion's pieces: high-resolution luminance, low-resolution chroma (seed 000 section 1.1,
-// HiRISE luminance with Viking chroma, and section 3.4.3, colour-space transformations; digest 000 section 6).
+// composite.chroma_fusion's pieces: high-resolution luminance, low-resolution chroma ([Kooima 2008, §1.1],
+// HiRISE luminance with Viking chroma, and [Kooima 2008, §3.4.3], colour-space transformations).
 #include "composite/opponent_spaces.glsl"
 #include "composite/overlay_mask.glsl"
 

@@ -1,6 +1,6 @@
-// composite.layer_peel's cutaway (seed 000 section 1.1 and chapter 6, layered data peeling; digest 000
-// section 6: "render with a clip/cut-away"). Distances are angles along the ground (rad), so the body's
-// radius is not needed here.
+// composite.layer_peel's cutaway ([Kooima 2008, §1.1, ch. 6], layered data peeling, which asks for a way to
+// select and peel away the upper layers: here, cutting them away). Distances are angles along the ground
+// (rad), so the body's radius is not needed here.
 
 // Where the upper layers are cut away (plugins/composite-layer-peel/cutaway.hpp).
 struct Cutaway {

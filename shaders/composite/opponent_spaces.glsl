@@ -1,7 +1,7 @@
-// Opponent colour spaces, for composite.chroma_fusion (seed 000 section 1.1 and 3.4.3, colour-space
-// transformations; digest 000 section 6): one channel of lightness or luma (.x), two of chroma (.yz), to and
-// from the composition's scene-linear light in Rec. 709 / sRGB primaries with a D65 white (docs/colour.md).
-// `space` numbers them as ChromaFusionLayer::Space: 0 CIE L*a*b*, 1 BT.709 Y'CbCr.
+// Opponent colour spaces, for composite.chroma_fusion ([Kooima 2008, §1.1, §3.4.3], colour-space
+// transformations): one channel of lightness or luma (.x), two of chroma (.yz), to and from the composition's
+// scene-linear light in Rec. 709 / sRGB primaries with a D65 white (docs/colour.md). `space` numbers them as
+// ChromaFusionLayer::Space: 0 CIE L*a*b*, 1 BT.709 Y'CbCr.
 
 // Scene-linear Rec. 709 to CIE XYZ and back (IEC 61966-2-1's matrix, to seven digits, and its inverse),
 // columns as GLSL writes them. Its middle row is relative luminance.

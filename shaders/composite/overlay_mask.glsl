@@ -1,4 +1,4 @@
-// composite.overlay_mask's pieces (seed 000 section 4.2; digest 000 section 5.2).
+// composite.overlay_mask's pieces ([Kooima 2008, §4.2]).
 
 // A layer's footprint in metres along the body: the longer of the sample's two steps (SurfacePoint).
 float footprintMetres(SurfacePoint p, float radius) {
@@ -22,8 +22,9 @@ float maskWeight(vec4 mask) { return clamp(mask.r, 0.0, 1.0) * mask.a; }
 // edge, 0 outside, so that 2 c - 1 runs from 0 at the edge to 1 about half the width inside it.
 float featheredWeight(float averagedCoverage) { return clamp(2.0 * averagedCoverage - 1.0, 0.0, 1.0); }
 
-// "Over" with coverages (the digest's a-attenuated update): the overlay's value where it has weight a, the
-// base's, with its own coverage, beneath the rest.
+// "Over" with coverages, where [Kooima 2008, §4.2] accumulates normally, which would average the overlay
+// with its base (docs/references.md, Errata): the overlay's value where it has weight a, the base's, with
+// its own coverage, beneath the rest.
 vec4 overlayOver(vec4 base, vec4 overlay, float a) {
   float baseShare = base.a * (1.0 - a), coverage = a + baseShare;
   return coverage > 0.0 ? vec4((overlay.rgb * a + base.rgb * baseShare) / coverage, coverage) : vec4(0.0);

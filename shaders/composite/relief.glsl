@@ -1,4 +1,4 @@
-// composite.relief's pieces: shaded relief (seed 000 section 1.1; digest 000 section 6), of the slopes
+// composite.relief's pieces: shaded relief ([Kooima 2008, §1.1]), of the slopes
 // strata/height_slopes.glsl finds.
 
 // Lambert's cosine law: the cosine of the angle between the surface normal, from the slopes east and north

@@ -1,4 +1,4 @@
-// composite.temporal_blend's mix (seed 000 sections 1.1 and 6, time-varying data; digest 000 section 6).
+// composite.temporal_blend's mix ([Kooima 2008, §1.1, ch. 6], time-varying data).
 
 // The two steps that bracket the date, mixed linearly in time: `fraction` 0 at the earlier step's date, 1 at
 // the later's. Each counts by its coverage as well, so that where one step has no data the other shows,

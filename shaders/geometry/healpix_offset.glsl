@@ -1,9 +1,9 @@
-// The HEALPix inverse (digest 004 section 1.2, after Gorski et al. 2005) taken relative to a reference
-// point of the same base face, in float without losing the offset's digits: the unit vector of the face
-// point reference + (dx, dy) minus the reference's own, good to a few float roundings of the difference
-// itself (plugins/geometry-healpix/healpix_frame.hpp computes the reference's terms in double; the tests
-// hold this to the double inverse of strata/healpix.hpp). Evaluated directly in float, a vertex would be
-// placed only to 6e-8 of the radius, 0.4 m on Earth, and not the same way twice.
+// The HEALPix inverse ([Gorski et al. 2005]) taken relative to a reference point of the same base face, in
+// float without losing the offset's digits: the unit vector of the face point reference + (dx, dy) minus the
+// reference's own, good to a few float roundings of the difference itself
+// (plugins/geometry-healpix/healpix_frame.hpp computes the reference's terms in double; the tests hold this
+// to the double inverse of strata/healpix.hpp). Evaluated directly in float, a vertex would be placed only to
+// 6e-8 of the radius, 0.4 m on Earth, and not the same way twice.
 //
 // A face point (x, y) has s = x + y and c = x - y. With a = s - 1, the face's zones meet at a = 0: the
 // north faces (0-3) are equatorial below it and polar cap above, z = 2/3 + (2/3) a or 2/3 + a (2 - a) / 3;

@@ -1,11 +1,11 @@
 #version 450 core
 #define STRATA_GEOMETRY_STAGE
 STRATA_PROGRAM_DEFINES
-// geometry.healpix's nodes drawn from one proxy grid (seed 004 section 3.2.4; digest 004 section 1.5): each
-// inner vertex is its node's centre plus a dyadic offset in the base face, placed by the HEALPix inverse
-// taken relative to the centre (healpix_offset.glsl); the centre arrives from the eye and from the frame's
-// reference, made in double on the CPU (node_batch.hpp), so the GPU only adds small, precise differences
-// (DESIGN.md, Precision). A vertex on the node's outline, which neighbours share, is made whole on the CPU
+// geometry.healpix's nodes drawn from one proxy grid ([Westerteiger et al. 2011, §3.2.4]): each inner vertex
+// is its node's centre plus a dyadic offset in the base face, placed by the HEALPix inverse taken relative to
+// the centre (healpix_offset.glsl); the centre arrives from the eye and from the frame's reference, made in
+// double on the CPU (node_batch.hpp), so the GPU only adds small, precise differences (docs/architecture.md,
+// "Precision"). A vertex on the node's outline, which neighbours share, is made whole on the CPU
 // (node_batch.hpp's BoundaryVertex), so that both get the same bits. Heights are sampled over a footprint
 // that follows the vertex's distance, not its node's level, so that nodes sharing a vertex displace it alike.
 #include "strata/constants.glsl"

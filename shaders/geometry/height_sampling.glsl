@@ -8,7 +8,7 @@
 
 // The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
 // vertex spacing along the ground each way: east, that is spacing / cos(latitude) of longitude. The footprint
-// is the geometry's explicit stand-in for screen derivatives (digest 000 section 5.1), so a longitude/latitude
+// is the geometry's explicit stand-in for screen derivatives ([Kooima 2008, §4.1.2]), so a longitude/latitude
 // map's texels near a pole show as the slivers they are to composite.projection_quality's isotropy weight,
 // and each layer filters over the ground a vertex spans.
 float heightAt(vec2 fromReference, vec3 normal, float spacing) {

@@ -1,7 +1,7 @@
 #version 450 core
 // The subdivided, displaced and geomorphed patches (subdivide_patches.comp) turned into eye space.
-// Positions arrive relative to the eye, so floats only span what the view sees (DESIGN.md, Precision;
-// seed 000 section 3.2.5); longitude and latitude arrive relative to the point below the eye.
+// Positions arrive relative to the eye, so floats only span what the view sees (docs/architecture.md,
+// "Precision"; [Kooima 2008, §3.2.5]); longitude and latitude arrive relative to the point below the eye.
 layout(location = 0) in vec4 drawnPoint;         // xyz: m from the eye, planet-fixed axes; w: morph
 layout(location = 1) in vec4 sphereNormalIn;     // xyz: planet-fixed unit normal of the sphere
 layout(location = 2) in vec2 lonlatFromReference;  // rad, as drawn

@@ -1,16 +1,16 @@
 #version 450 core
-// The cast pass of projective grid mapping (digest 003 section 1.5): each point of a W x H grid becomes a
+// The cast pass of projective grid mapping ([Mahsman 2010, §3.6]): each point of a W x H grid becomes a
 // ray of the sampling camera, cast onto the reference spheres through the 2D cross section of
 // plugins/geometry-pgm/cross_section.cpp, in float; tests/pgm/pgm_cast_test.cpp holds it to that double
 // reference. A ray that misses the primary sphere is drawn where the ray of its cross-section plane that
 // grazes the sphere meets it, on the horizon, so that the mesh reaches the horizon rather than stopping up to
-// a grid row short of it (the thesis leaves misses unsaid, digest 003 section 1.10 item 9); with a secondary
+// a grid row short of it (the thesis leaves misses unsaid; docs/references.md, Errata); with a secondary
 // sphere that point lies beyond the horizon at gamma0, where the blend ends. The pass writes the sphere
 // normal and the position from the eye, both in the east-north-up frame
 // at the point below the eye (strata/camera.hpp's planetToLocal), where the nadir is exactly (0, 0, -1):
 // a nadir rounded to float would shift the planet's centre sideways by d times its rounding.
 //
-// Precision (digest 003 section 1.8): nothing planet-sized is subtracted here. 1 m above Mars a float
+// Precision ([Mahsman 2010, §3.6.5]): nothing planet-sized is subtracted here. 1 m above Mars a float
 // holding the eye's distance from the centre resolves 0.25 m; the altitude is uploaded as such and as
 // eps = a/r_p, the normal angle gamma is formed from eps in the cancellation-free form, and the position's
 // components, a + 2 r_p sin^2(gamma/2) and r_p sin(gamma), are sums of positive terms that keep float's
@@ -46,26 +46,27 @@ const float kNadirSine = 1e-8;
 
 // The grid's outer rows and columns lie on the frustum's edges, x/(W - 1) rather than (x + 0.5)/W: the
 // sampling camera was fitted to rays on those edges (the nadir, the tangent planes of the visible-sphere
-// frustum), and a mesh of the grid's points must reach them (section 1.4, step 4). In the local frame.
+// frustum), and a mesh of the grid's points must reach them ([Mahsman 2010, §3.5.4]). In the local frame.
 vec3 gridRay(ivec2 point) {
   vec2 along = vec2(point) / vec2(gridSize - 1);
   return normalize(samplingToLocal * vec3(mix(frustum.xz, frustum.yw, along), -near));
 }
 
-// delta = (c^2 - 1) u^2 with c = 1 + eps (section 1.8).
+// delta = (c^2 - 1) u^2 with c = d/r_p = 1 + eps, so that Eq. 3.10 loses nothing where c is next to 1.
 float shortfall(float sinRay) { return relativeAltitude * (2.0 + relativeAltitude) * sinRay * sinRay; }
 
-// Beyond the primary tangent, or more than 90 degrees from the nadir (section 1.5, step 3).
+// Beyond the primary tangent ([Mahsman 2010, §3.6.3]), or more than 90 degrees from the nadir.
 bool misses(float sinRay, float cosRay) { return cosRay < 0.0 || cosRay * cosRay < shortfall(sinRay); }
 
-// asin(c u) - asin(u) as asin(u [eps w + delta / (w + sqrt(w^2 - delta))]) (sections 1.5 step 4, 1.8).
+// asin(c u) - asin(u) ([Mahsman 2010, §3.6.4, Eq. 3.10]) as asin(u [eps w + delta / (w + sqrt(w^2 - delta))]),
+// which cancels nothing.
 float frontNormalAngle(float sinRay, float cosRay) {
   float delta = shortfall(sinRay);
   float exitCosine = sqrt(max(cosRay * cosRay - delta, 0.0));
   return preciseAsin(sinRay * (relativeAltitude * cosRay + delta / (cosRay + exitCosine)));
 }
 
-// asin((d/r_s) sin(omega_s)) - omega_s (section 1.5, step 6) with omega_s = tau_s - g, g = (1 - f)(tau_s - b).
+// asin((d/r_s) sin(omega_s)) - omega_s ([Mahsman 2010, §3.6.4]) with omega_s = tau_s - g, g = (1 - f)(tau_s - b).
 // As d/r_s = 1/sin(tau_s), the asin's argument is 1 - h with h = 2 sin^2(g/2) + sin(g)/tan(tau_s), and
 // asin(1 - h) = pi/2 - 2 asin(sqrt(h/2)): no argument rounded next to 1, where asin's slope is infinite.
 // h below 0 is the reference's argument clamped at 1.
@@ -76,8 +77,9 @@ float secondaryNormalAngle(float blend) {
   return outermostAngle + g - 2.0 * preciseAsin(sqrt(0.5 * h));
 }
 
-// mix(gamma_p, gamma_s, f) with the blend f = clamp((omega - b)/(tau0 - b), 0, 1) (section 1.5, steps 5-7,
-// erratum 1). With zeta = 1, b = tau0 and the blend is a step at the tangent: the span is kept above 0.
+// mix(gamma_p, gamma_s, f) with the blend f = clamp((omega - b)/(tau0 - b), 0, 1), which Eq. 3.11 prints the
+// other way round against its own text ([Mahsman 2010, §3.6.4, Eq. 3.11]; docs/references.md, Errata). With
+// zeta = 1, b = tau0 and the blend is a step at the tangent: the span is kept above 0.
 float normalAngle(float sinRay, float cosRay) {
   float primary = frontNormalAngle(sinRay, cosRay);
   float blend = clamp((preciseAtan(sinRay, cosRay) - blendStart) / max(primaryTangent - blendStart, 1e-30), 0.0, 1.0);
@@ -90,7 +92,7 @@ void main() {
   if (any(greaterThanEqual(point, gridSize))) return;
   int i = point.y * gridSize.x + point.x;
   vec3 ray = gridRay(point);
-  // The cross-section basis (section 1.5, step 2) with the nadir n = (0, 0, -1): sin(omega) = |n x ray| is
+  // The cross-section basis ([Mahsman 2010, §3.6.2]) with the nadir n = (0, 0, -1): sin(omega) = |n x ray| is
   // the ray's horizontal length, and k = (n x ray) x n / sin(omega) its horizontal direction.
   float sinRay = length(ray.xy), cosRay = -ray.z;
   bool hit = !misses(sinRay, cosRay);
@@ -100,7 +102,8 @@ void main() {
     cosRay = horizonCosine;
   }
   float gamma = hit && sinRay < kNadirSine ? 0.0 : normalAngle(sinRay, cosRay);
-  // s = -n cos(gamma) + k sin(gamma) (Eq. 3.12); the position r_p s - d n without d (erratum 2).
+  // s = -n cos(gamma) + k sin(gamma) ([Mahsman 2010, §3.6.4, Eq. 3.12]); the position r_p s - d n without d,
+  // as the printed t = a sin(rho) / sin(chi) is just a ([Mahsman 2010, §3.6.5]; docs/references.md, Errata).
   float sinGamma, cosGamma, sinHalf, cosHalf;
   preciseSinCos(gamma, sinGamma, cosGamma);
   preciseSinCos(0.5 * gamma, sinHalf, cosHalf);

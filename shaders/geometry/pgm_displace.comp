@@ -1,12 +1,13 @@
 #version 450 core
 #define STRATA_GEOMETRY_STAGE
 STRATA_PROGRAM_DEFINES
-// The displacement pass of projective grid mapping (digest 003 sections 1.6, 1.7): each grid point of the
+// The displacement pass of projective grid mapping ([Mahsman 2010, §3.7.2, §3.7.1]): each grid point of the
 // cast pass (pgm_cast.comp) becomes a vertex of the surface, its point of the primary sphere moved along the
 // sphere normal s to the body's radius plus the height there, V = P + (h + R - r_p) s. The height is sampled
 // at the point's longitude and latitude from the reference, formed from s in the local east-north-up frame
-// (lonlat_from_reference.glsl), over a footprint of the angle to its neighbours in the grid (the digest's advice:
-// a level of detail from the grid's spacing). Everything stays in the local frame, relative to the eye.
+// (lonlat_from_reference.glsl), over a footprint of the angle to its neighbours in the grid: a level of
+// detail from the grid's spacing, where §3.7.1 names none. Everything stays in the local frame, relative to
+// the eye.
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
 #include "geometry/lonlat_from_reference.glsl"

@@ -1,11 +1,11 @@
 #version 450 core
-// The least visible height of a frame, for the next frame's primary reference sphere (digest 003 section
-// 1.3, method 2; plugins/geometry-pgm/visible_radius.cpp). The input holds each pixel's height above the
-// body's radius in metres, +infinity where no terrain was drawn. Each 16 x 16 workgroup folds its texels
-// in shared memory, then one atomicMin per workgroup folds them all into one uint: one dispatch, where the
+// The least visible height of a frame, for the next frame's primary reference sphere ([Mahsman 2010, §3.4.1],
+// its second method; plugins/geometry-pgm/visible_radius.cpp). The input holds each pixel's height above the
+// body's radius in metres, +infinity where no terrain was drawn. Each 16 x 16 workgroup folds its texels in
+// shared memory, then one atomicMin per workgroup folds them all into one uint: one dispatch, where the
 // thesis's min mipmap takes a pass per level. GL 4.5 has no float atomicMin, so the heights go through
-// orderedBits, which orders their uints as the floats are ordered; min is exact, so the result is the
-// least texel to the bit, whatever order the workgroups finish in.
+// orderedBits, which orders their uints as the floats are ordered; min is exact, so the result is the least
+// texel to the bit, whatever order the workgroups finish in.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 layout(binding = 0) uniform sampler2D heights;  // m above the body's radius; +infinity uncovered

@@ -1,9 +1,9 @@
 #version 450 core
 // Writes the deferred texturing buffer (strata/geometry.hpp) for projective grid mapping, and each pixel's
 // height for the next frame's primary sphere (plugins/geometry-pgm/visible_radius.hpp). Longitude and
-// latitude come from the interpolated sphere normal, as the thesis does (digest 003 section 1.6, its
-// Fig. 3.52): interpolated longitudes would sweep through 180 degrees across a triangle that straddles the
-// meridian opposite the reference. Its local-frame form keeps float's precision near the eye.
+// latitude come from the interpolated sphere normal, as [Mahsman 2010, §3.7.2] does (its Fig. 3.52):
+// interpolated longitudes would sweep through 180 degrees across a triangle that straddles the meridian
+// opposite the reference. Its local-frame form keeps float's precision near the eye.
 #include "strata/precise_trig.glsl"
 #include "geometry/lonlat_from_reference.glsl"
 

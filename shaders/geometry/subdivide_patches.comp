@@ -1,12 +1,12 @@
 #version 450 core
 #define STRATA_GEOMETRY_STAGE
 STRATA_PROGRAM_DEFINES
-// The GPU subdivision of the visible patches (seed 000 section 3.3, done as digest 000 section 3.2 advises
-// for GL 4.5): one workgroup per patch fills the breadth-first levels in order, each vertex from its two
-// parents in the dependence table, so no ping-pong is needed. The operations mirror
-// plugins/geometry-icosahedral/geodesic_subdivision.cpp, whose float form the tests hold to its double one.
-// Each vertex is then displaced by the height layer and geomorphed: drawn between its parents' drawn
-// midpoint and its own surface point by how far its level's split distance lies beyond it
+// The GPU subdivision of the visible patches ([Kooima 2008, §3.3], into one buffer in dependence order rather
+// than by §3.3.2's ping-pong; docs/references.md, Errata): one workgroup per patch fills the breadth-first
+// levels in order, each vertex from its two parents in the dependence table, so no ping-pong is needed. The
+// operations mirror plugins/geometry-icosahedral/geodesic_subdivision.cpp, whose float form the tests hold to
+// its double one. Each vertex is then displaced by the height layer and geomorphed: drawn between its
+// parents' drawn midpoint and its own surface point by how far its level's split distance lies beyond it
 // (docs/geometry.md, "Geomorphing"), so that patches split and merge without pops.
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
@@ -43,12 +43,12 @@ const float kMorphBand = 1.0 / 3.0;
 
 int verticesUpTo(int level) { return ((1 << level) + 1) * ((1 << level) + 2) / 2; }
 
-// The geodesic midpoint of seed 000 section 3.3.4 (digest 000 section 3.4), both coordinates measured
-// from the reference: the plain midpoint plus two corrections, second order in the parents' separation,
-// so that sin, cos and atan only scale small numbers. geodesic_subdivision.cpp derives the form. The
-// trigonometry is strata/precise_trig.glsl's: NVIDIA's builtin sin and tan are good only to about 4e-7
-// absolute, wholly wrong for the micro-radian angles here (a 720 m error at a pole on an H100), and
-// llvmpipe's asin and atan lose digits for tiny arguments.
+// The geodesic midpoint of [Kooima 2008, §3.3.4], both coordinates measured from the reference rather than
+// absolute (docs/references.md, Errata): the plain midpoint plus two corrections, second order in the
+// parents' separation, so that sin, cos and atan only scale small numbers. geodesic_subdivision.cpp derives
+// the form. The trigonometry is strata/precise_trig.glsl's: NVIDIA's builtin sin and tan are good only to
+// about 4e-7 absolute, wholly wrong for the micro-radian angles here (a 720 m error at a pole on an H100),
+// and llvmpipe's asin and atan lose digits for tiny arguments.
 vec2 geodesicMidpoint(vec2 j, vec2 k) {
   vec2 middle = 0.5 * (j + k);
   float halfDLon = 0.5 * (k.x - j.x), halfDLat = 0.5 * (k.y - j.y);
@@ -128,7 +128,8 @@ void subdivide(uint base, uint i) {
   uvec2 p = parents[i];
   uint j = base + p.x, k = base + p.y;
   vec3 nj = normals[j].xyz, nk = normals[k].xyz;
-  // Seed 000 section 3.3.3; the chord keeps w's resolution near 0 where acos would not (digest 000 section 3.3).
+  // [Kooima 2008, §3.3.3], w from the chord, which keeps its resolution near 0 where acos would not
+  // (docs/references.md, Errata).
   vec3 n = normalize(nj + nk);
   float w = 2.0 * preciseAsin(0.5 * length(nj - nk));
   normals[base + i] = vec4(n, w);
@@ -136,7 +137,8 @@ void subdivide(uint base, uint i) {
   vec2 lj = lonlats[j].xy, lk = lonlats[k].xy;
   bool ordered = lj.x < lk.x || (lj.x == lk.x && lj.y <= lk.y);
   lonlats[base + i].xy = ordered ? geodesicMidpoint(lj, lk) : geodesicMidpoint(lk, lj);
-  // Seed 000 section 3.3.5 with the digest's sagitta x tan(w / 4): no radius, so precision follows scale.
+  // [Kooima 2008, §3.3.5], its missing Fig. 3.9 read as the sagitta x tan(w / 4) (docs/references.md, Errata):
+  // no radius, so precision follows scale.
   vec4 pj = positions[j], pk = positions[k];
   float halfChord = 0.5 * length(pj.xyz - pk.xyz);
   positions[base + i] = vec4(0.5 * (pj.xyz + pk.xyz) + halfChord * preciseTan(0.25 * w) * n, pj.w);

@@ -1,7 +1,7 @@
 #version 450 core
-// Per-pixel composition of the surface layers over the deferred texturing buffer (seed 000, section
-// 3.4.3): each layer adds value x weight to rgb and its weight to alpha; the sum is normalised at the end
-// (section 4.1.2), so overlapping layers blend by coverage and weights need not sum to one. Translucent
+// Per-pixel composition of the surface layers over the deferred texturing buffer ([Kooima 2008, §3.4.3]): each
+// layer adds value x weight to rgb and its weight to alpha; the sum is normalised at the end
+// ([Kooima 2008, §4.1.2]), so overlapping layers blend by coverage and weights need not sum to one. Translucent
 // surfaces (each a geometry of its own) are then laid over it, farthest first, where they lie nearer.
 #include "strata/surface_point.glsl"
 #include "strata/constants.glsl"
@@ -23,7 +23,7 @@ uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred b
 out vec4 colour;
 
 // The change of longitude and latitude to the next pixel along `step`, computed from the deferred
-// coordinates rather than by dFdx (seed 000, digest section 4.3): the 2 pi jump where patches unwrap
+// coordinates ([Kooima 2008, §3.4.3]) rather than by the dFdx of §4.1.2: the 2 pi jump where patches unwrap
 // longitude differently is removed, and at the body's edge the pixel on the other side is used.
 vec2 footprint(sampler2D surfaces, sampler2D shading, ivec2 pixel, ivec2 step, vec2 here) {
   vec4 ahead = texelFetch(shading, pixel + step, 0);

@@ -1,4 +1,4 @@
-// Virtual texturing through the page cache (seed 000 section 4.3.2; core/src/paging). A layer's pages
+// Virtual texturing through the page cache ([Kooima 2008, §4.3.2]; core/src/paging). A layer's pages
 // sit in an atlas (a 2D array texture of 514x514 slots: 512 texels and a 1-texel border) and the index
 // of page references, shared by every layer, says which slot holds each page of each level, or which
 // coarser page stands in for it (core/src/paging/page_index.hpp gives the layout).
@@ -73,7 +73,7 @@ vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int leve
              f.y);
 }
 
-// Trilinear sampling across levels (seed 000 section 4.3.2 "a shader implementation of trilinear
+// Trilinear sampling across levels ([Kooima 2008, §4.3.2]: "a shader implementation of trilinear
 // mipmapping") at level-0 texel `address`, the level chosen from the footprint: level-0 texels to the next
 // sample. `face`: as pageRange.
 vec4 samplePagedTexels(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address,

@@ -1,6 +1,6 @@
-// A level-0 texel position (continuous, texel centres at .5) as a whole texel and a part: float alone
-// resolves 2^-24 of a raster's width, a quarter texel of the 4.3 million texels of a global 5 m map of Mars,
-// so the whole texel is an integer, from the CPU's double where the point is near the eye (DESIGN.md
+// A level-0 texel position (continuous, texel centres at .5) as a whole texel and a part: float alone resolves
+// 2^-24 of a raster's width, a quarter texel of the 4.3 million texels of a global 5 m map of Mars, so the
+// whole texel is an integer, from the CPU's double where the point is near the eye (docs/architecture.md,
 // "Precision"; ProjectedRasterLayer::setReference), and the part a small float beside it.
 struct TexelAddress {
   ivec2 whole;

@@ -1,6 +1,6 @@
-// strata-make-test-data: writes the procedural planet (seed 000 chapter 4's demonstration data, digest 000
-// section 5) "observed" through several projections and resolutions, as GeoTIFFs for the tests and
-// benchmarks. Positions come from PROJ, heights and colours from the planet model, nothing from Strata.
+// strata-make-test-data: writes the procedural planet (the demonstration data of [Kooima 2008, ch. 4]) "observed"
+// through several projections and resolutions, as GeoTIFFs for the tests and benchmarks. Positions come from PROJ,
+// heights and colours from the planet model, nothing from Strata.
 #include <gdal_priv.h>
 #include <unistd.h>
 

@@ -56,8 +56,8 @@ Observation healpix() {
 
 // A strip at 4x the global resolution along the ground track of an orbit inclined 60 degrees with its
 // ascending node at longitude 10: the track enters the box at its south-west corner and leaves at the
-// north-east one. Only a band 3 degrees wide about the track's great circle has data (seed 000 section
-// 4.2's overlay).
+// north-east one. Only a band 3 degrees wide about the track's great circle has data (the overlay of
+// [Kooima 2008, §4.2]).
 Observation strip() {
   const double inclination = 60.0 * kDegree, node = 10.0 * kDegree;
   // The normal of the orbit's plane: the node's direction crossed with the direction of motion there.

@@ -25,7 +25,7 @@ struct Observation {
   std::function<bool(double lonRad, double latRad)> covers;  // false: nodata (PROJ's failures are nodata too)
 };
 
-// The observations the tests use, each covering what seed 000 chapter 4 composes: global, both polar caps,
+// The observations the tests use, each covering what [Kooima 2008, ch. 4] composes: global, both polar caps,
 // HEALPix, and a narrow strip along an inclined ground track.
 std::vector<Observation> standardObservations();
 

@@ -1,5 +1,5 @@
 // The detail a selection draws: more nodes as the threshold, vertices per pixel, rises (the paper's figure 7
-// values; digest 004 section 2: drawn when area times threshold <= (gridCells + 1)^2), every
+// values; [Westerteiger et al. 2011, §3.2.2]: drawn when area times threshold <= (gridCells + 1)^2), every
 // drawn node adequate by the area estimate unless at maxLevel, and the node under an eye 2 m up as fine as
 // the estimate's bound demands.
 #include <gtest/gtest.h>

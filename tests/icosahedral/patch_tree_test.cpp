@@ -92,9 +92,9 @@ TEST(PatchTree, ATreeAllowedNoOperationsHoldsItsPatches) {
   EXPECT_EQ(tree.splitDistanceAtLevelZero(), splitDistance);
 }
 
-// Seed 000's fly-in as strata-bench-flyin flies it at 30 Hz, 10,000 km down to 300 m above an 8.7 km
-// summit of a Mars-sized body: the default operations per frame keep up, frame after frame (the busiest
-// frame made 38 of its 64).
+// The fly-in of [Kooima 2008, §5.1] as strata-bench-flyin flies it at 30 Hz, 10,000 km down to 300 m above an 8.7 km
+// summit of a Mars-sized body: the default operations per frame keep up, frame after frame (the busiest frame made 38
+// of its 64).
 TEST(PatchTree, TheDefaultOperationsFollowAThirtyHertzFlyIn) {
   const FlyInPath flight{-74.0, 4.0, 8672.0};  // the summit strata-bench-flyin's survey finds
   PatchTree tree(FlyInPath::kMarsRadius, {-12000.0, 12000.0});

@@ -1,6 +1,6 @@
-// The breadth-first dependence table (plugins/geometry-icosahedral/subdivision_table.hpp): the digest's
-// vertex counts, parents before children and at the ends of their child's grid segment, levels that fill
-// consecutive index ranges, and the parent order along shared edges.
+// The breadth-first dependence table (plugins/geometry-icosahedral/subdivision_table.hpp): the vertex counts of
+// [Kooima 2008, §3.3.1]'s table, parents before children and at the ends of their child's grid segment, levels that
+// fill consecutive index ranges, and the parent order along shared edges.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -19,7 +19,7 @@ GridPoint midpointOf(GridPoint p, GridPoint q) {
 }
 
 TEST(SubdivisionTable, VertexCountsMatchTheDigestsTable) {
-  const int expected[] = {3, 6, 15, 45, 153, 561, 2145, 8385};  // digest 000 section 3.1
+  const int expected[] = {3, 6, 15, 45, 153, 561, 2145, 8385};  // [Kooima 2008, §3.3.1]
   for (int depth = 0; depth <= 7; ++depth) {
     EXPECT_EQ(verticesPerPatch(depth), expected[depth]) << "depth " << depth;
     EXPECT_EQ(SubdivisionTable(depth).vertexCount(), expected[depth]) << "depth " << depth;

@@ -1,5 +1,6 @@
 // The 2D cross section of the PGM pass (plugins/geometry-pgm/cross_section.hpp) against exact 3D
-// ray-sphere intersections in double, with the digest's corrections (digest 003 sections 1.5, 1.10).
+// ray-sphere intersections in double, with the corrections to [Mahsman 2010, §3.6] that the code makes: the
+// blend of Eq. 3.11 turned the way its text reads, and the position of §3.6.5 (docs/references.md, Errata).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -71,9 +72,9 @@ TEST(PgmCrossSection, PositionsAreTheExactHitsFromAMetreToTwentyThousandKilometr
   }
 }
 
-// Digest 003 section 1.10, erratum 2: d = 3397 km, r = 3396 km, omega = 67.61 degrees. The hit is 2.6276 km
-// away; the printed t = a sin(rho)/sin(chi) would put it at a = 1 km. The corrected law of sines,
-// t = a cos(gamma/2)/cos(gamma/2 + omega), agrees.
+// [Mahsman 2010, §3.6.5] (docs/references.md, Errata): d = 3397 km, r = 3396 km, omega = 67.61 degrees. The
+// hit is 2.6276 km away; the printed t = a sin(rho)/sin(chi) would put it at a = 1 km. The corrected law of
+// sines, t = a cos(gamma/2)/cos(gamma/2 + omega), agrees.
 TEST(PgmCrossSection, TheDigestsExampleHitIsNotAtTheAltitude) {
   const CrossSection view = crossSection(3397.0, 3396.0, 0.0, 0.9);
   const glm::dvec3 nadir(0, 0, -1);
@@ -117,8 +118,8 @@ NormalAngleErrors normalAngleErrors(double altitude) {
 // 1 m up 1.7e-15 / 1.1e-9 (1.3e-8 over another draw of 100,000, whose worst rays graze the tangent),
 // 1 km up 1.7e-15 / 3.3e-12. So in double the naive form misses 1e-9 at 1 mm by three orders and sits at it
 // at 1 m. The stable form is kept for the GPU pass above all: in float c = 1 + 2.9e-7 is 2.5 ulps above 1
-// at 1 m and the naive angle is mostly rounding (digest 003 section 1.8), while eps = a/r and the stable
-// form's terms keep float's full relative precision.
+// at 1 m and the naive angle of [Mahsman 2010, §3.6.4, Eq. 3.10] is mostly rounding, while eps = a/r and the
+// stable form's terms keep float's full relative precision.
 TEST(PgmCrossSection, TheNormalAngleStaysExactAMillimetreAboveTheGround) {
   for (double altitude : {1e-3, 1.0, 1e3}) {
     SCOPED_TRACE(altitude);
@@ -141,8 +142,9 @@ TEST(PgmCrossSection, TheBackFacingAngleIsTheExit) {
   }
 }
 
-// Erratum 1: with zeta = 0.9 blending starts at b = 0.9 tau0 (f = 0), the tangent is all secondary
-// (f = 1) and 0.95 tau0 averages the two (f = 0.5), as the text says; the printed Eq. 3.11 gives 1 at b.
+// [Mahsman 2010, §3.6.4, Eq. 3.11] (docs/references.md, Errata): with zeta = 0.9 blending starts at b = 0.9 tau0
+// (f = 0), the tangent is all secondary (f = 1) and 0.95 tau0 averages the two (f = 0.5), as the text says; the
+// printed Eq. 3.11 gives 1 at b.
 // At f = 1 the ray samples gamma0, the farthest terrain that can rise into view.
 TEST(PgmCrossSection, TheBlendRunsFromTheStartToTheTangent) {
   const double distance = kMars + 100e3;
@@ -161,8 +163,8 @@ TEST(PgmCrossSection, TheBlendRunsFromTheStartToTheTangent) {
 
 // From 1 m to 27,000 km up (the secondary sphere vanishes at 27,139 km), every ray from the nadir to the
 // tangent hits, with finite values, a unit normal, a point on the primary sphere, and normal angles that
-// grow with the ray angle up to gamma0. Above 387 km b exceeds tau_s (the digest says about 389 km), so
-// there the unclamped asin of the secondary angle would be NaN near f = 0.
+// grow with the ray angle up to gamma0. Above 387 km b exceeds tau_s, so there the unclamped asin of the
+// secondary angle ([Mahsman 2010, §3.6.4]) would be NaN near f = 0.
 TEST(PgmCrossSection, NoNaNFromTheNadirToTheTangent) {
   const double maximum = kMars + 21.2e3;
   for (double altitude : {1.0, 1e3, 100e3, 387e3, 390e3, 1e6, 5e6, 2e7, 2.7e7}) {

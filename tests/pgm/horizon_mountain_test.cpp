@@ -1,4 +1,4 @@
-// A mountain behind the horizon rises above it (digest 003 section 6, Figs. 3.14, 3.15 and 3.22; issue 5):
+// A mountain behind the horizon rises above it ([Mahsman 2010, §3.3.2, §3.4.2, Figs. 3.14, 3.15, 3.22]; issue 5):
 // 1 km above an Earth-sized sphere, whose horizon lies 113 km away, the view looks east along the equator
 // at an 8 km peak 150 km away, 37 km beyond the horizon, which hides only its lowest 107 m. The grid's
 // rays near the primary sphere's horizon turn onto the secondary sphere and sample the ground out to where

@@ -1,7 +1,7 @@
 // The PGM cast pass (shaders/geometry/pgm_cast.comp) run in float on the headless context and read back,
 // against castRay (plugins/geometry-pgm/cross_section.hpp) in double for the same grid rays, in the local
 // east-north-up frame, from 1 m to 20,000 km above Mars, looking straight down and tilted 60 and 85 degrees
-// (digest 003 sections 1.5, 1.8).
+// ([Mahsman 2010, §3.6]).
 //
 // The pass's ray is the double ray rounded to float: it points some 1.5e-7 rad away (measured: turning the
 // reference's ray by 1e-7 rad does not cover the differences, by 2e-7 it does). Where the result moves much

@@ -1,5 +1,6 @@
-// The reference spheres (plugins/geometry-pgm/reference_spheres.hpp) against the derived values of
-// digest 003 section 1.3, for Mars: r_p = 3396 km, r_max = 3417.2 km, lengths in km.
+// The reference spheres (plugins/geometry-pgm/reference_spheres.hpp) against values derived independently from
+// [Mahsman 2010, §3.4] (Eqs. 3.5, 3.6; b from §3.6.4), for Mars: r_p = 3396 km, r_max = 3417.2 km, lengths in
+// km. The thesis prints no such values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,7 +18,7 @@ struct TableRow {
   double altitude, primaryTangent, outermost, secondary, secondaryTangent, blendStart;  // km, deg, deg, km, deg, deg
 };
 
-// The digest's table as printed: angles to 1e-4 degree, the radius to 1e-3 km.
+// The derived table as it was written down: angles to 1e-4 degree, the radius to 1e-3 km.
 constexpr TableRow kTable[] = {
     {0.001, 89.9560, 6.4295, 3374.642, 83.5705, 80.9604}, {1, 88.6097, 7.7758, 3365.765, 82.2242, 79.7488},
     {10, 85.6084, 10.7771, 3345.925, 79.2229, 77.0476},   {100, 76.2630, 20.1225, 3282.601, 69.8775, 68.6367},
@@ -53,7 +54,8 @@ TEST(PgmReferenceSpheres, TheSecondaryTangentEndsAtTheOutermostNormalAngle) {
   }
 }
 
-// r_s = 0 at d = r_p / sqrt(1 - (r_p/r_max)^2) = 30534.76 km (digest: about 30,535 km); beyond, none.
+// r_s = d cos(gamma0) ([Mahsman 2010, §3.4.2, Eq. 3.6]) is 0 at d = r_p / sqrt(1 - (r_p/r_max)^2) = 30534.76 km;
+// beyond, none.
 TEST(PgmReferenceSpheres, TheSecondarySphereVanishesFarAway) {
   const double vanishing = kPrimary / std::sqrt(1.0 - (kPrimary / kMaximum) * (kPrimary / kMaximum));
   EXPECT_NEAR(vanishing, 30534.76, 0.01);

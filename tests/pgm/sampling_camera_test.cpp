@@ -1,5 +1,5 @@
 // The sampling camera (plugins/geometry-pgm/sampling_camera.hpp) against exact 3D ray-sphere tests in
-// double, for views of Mars from 2 m to 20,000 km up (digest 003 section 1.4).
+// double, for views of Mars from 2 m to 20,000 km up ([Mahsman 2010, §3.5]).
 #include <gtest/gtest.h>
 
 #include <algorithm>

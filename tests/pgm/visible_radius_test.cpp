@@ -1,6 +1,6 @@
 // The least visible height of a frame, reduced on the GPU by shaders/geometry/pgm_least_radius.comp and read
 // back without waiting (plugins/geometry-pgm/visible_radius.hpp), and the primary radius made from it
-// (digest 003 section 1.3, method 2). Heights are random in [-8000, 21000) m, Mars's range, with one lower
+// ([Mahsman 2010, §3.4.1], method 2). Heights are random in [-8000, 21000) m, Mars's range, with one lower
 // height planted at a random covered texel and large uncovered regions (+infinity). The minimum must come
 // back to the bit, at screen size and at sizes that do not fill a workgroup.
 #include <gtest/gtest.h>

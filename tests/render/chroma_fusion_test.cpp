@@ -1,6 +1,6 @@
-// composite.chroma_fusion (issue 8; seed 000 section 1.1, HiRISE luminance with Viking chroma, and section
-// 3.4.3, colour-space transformations; digest 000 section 6): one known colour image made into a
-// high-resolution luminance layer and a low-resolution colour layer, fused, against the image itself.
+// composite.chroma_fusion (issue 8; [Kooima 2008, §1.1], HiRISE luminance with Viking chroma, and §3.4.3,
+// colour-space transformations): one known colour image made into a high-resolution luminance layer and a
+// low-resolution colour layer, fused, against the image itself.
 //
 // The image: 2048 x 2048 texels over 2.4 x 2.4 degrees of Mars (69.5 m a texel), scene-linear colour C x d,
 // a hue C that turns slowly (periods of 160 and 230 texels: 40 and 58 texels of the colour layer) times a

@@ -3,7 +3,7 @@
 // tilted, with the horizon and the sky in view, and looking up. A crack between patches or nodes of
 // different levels, or a mesh that stops short of the horizon or of the screen's edges, shows as a hole.
 //
-// geometry.pgm (digest 003 section 6, test 5, the shrinking test; issue 5's "no holes at the horizon or the
+// geometry.pgm (shrinking, [Mahsman 2010, §3.3.1, Figs. 3.11, 3.12]; issue 5's "no holes at the horizon or the
 // edges of the screen") is judged on the first frame after the camera jumps there (primary sphere: the
 // minimum one, as sameSight refuses the least visible height of the view before) and the third (primary
 // sphere: the least visible height of the frame before, which sits higher and is where shrinking would

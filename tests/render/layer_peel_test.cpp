@@ -1,6 +1,6 @@
-// composite.layer_peel and composite.peeled_surface (issue 8; seed 000 section 1.1 and chapter 6, layered data
-// peeling; digest 000 section 6): two synthetic surfaces, the upper one cut away, seen obliquely through
-// every geometry generator, against the analytic view of the same stack.
+// composite.layer_peel and composite.peeled_surface (issue 8; [Kooima 2008, §1.1, ch. 6], layered data
+// peeling): two synthetic surfaces, the upper one cut away, seen obliquely through every geometry generator,
+// against the analytic view of the same stack.
 //
 // The stack: a flat upper surface 40 km above Mars's sphere over a flat floor on it (Float32 rasters of
 // constant heights), coloured red and blue by composite.peeled_surface, with green and yellow cut faces.

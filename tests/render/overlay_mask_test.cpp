@@ -1,4 +1,4 @@
-// composite.overlay_mask (issue 7; seed 000 section 4.2): a red overlay over a blue global base, seen straight
+// composite.overlay_mask (issue 7; [Kooima 2008, §4.2]): a red overlay over a blue global base, seen straight
 // down over an edge of the overlay in the middle of the frame. Along the image's middle row the overlay's
 // weight w (its share of the red, from the pixels far either side) rises from 0 to 1 across the edge: at once
 // for a hard edge, and from 0 at the edge to 1 some distance inside for a feathered one.

@@ -1,5 +1,5 @@
 // The same planet seen through different projections gives the same picture where each projection
-// samples it well (seed 000 chapter 4: the procedural planet "observed" as global, polar, HEALPix and
+// samples it well ([Kooima 2008, ch. 4]: the procedural planet "observed" as global, polar, HEALPix and
 // strip data). The observations are written by strata-make-test-data through PROJ, independently of
 // Strata's own projection code, and rendered one at a time here; pairs of renderings are compared pixel by
 // pixel over the latitudes both sample well.

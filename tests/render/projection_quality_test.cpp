@@ -1,4 +1,4 @@
-// composite.projection_quality (issue 7; seed 000 section 4.1): the procedural planet observed as a global
+// composite.projection_quality (issue 7; [Kooima 2008, §4.1]): the procedural planet observed as a global
 // longitude/latitude map and two polar stereographic caps (strata-make-test-data), composed by how well each
 // is sampled, is as close to the planet itself (source.procedural, rendered directly) as the best of the
 // three, wherever one looks: at the equator, where the caps stretch; over a pole, where the global map does;
@@ -152,7 +152,7 @@ TEST(ProjectionQualityLatitude, ShowsNoSeamAcrossTheBand) {
 }
 
 // Heights composed the same way displace the geometry (each input sampled over the vertex spacing, given
-// explicitly: digest 000 section 5.1): lit and coloured by the planet's own colour layer, the relief drawn
+// explicitly: [Kooima 2008, §4.1.2]): lit and coloured by the planet's own colour layer, the relief drawn
 // from the composed observations over the north pole is as close to the planet's own as the best single
 // observation's, by either method. The heights are smooth, so at the geometry's vertex spacing the
 // observations differ little there (measured 2.95 levels the global map, 2.94 the north cap, 2.92 composed by

@@ -1,5 +1,5 @@
-// composite.relief (issue 8; seed 000 section 1.1, relief shading; digest 000 section 6): the shade of a
-// synthetic cone against the analytic Lambert shading of its exact normal.
+// composite.relief (issue 8; [Kooima 2008, §1.1], relief shading): the shade of a synthetic cone against the
+// analytic Lambert shading of its exact normal.
 //
 // The cone: height H (1 - r / R) up to r = R about (0, 0) on Mars, H = 20 km, R = 1 degree (59.3 km), so its
 // flank rises at H / R = 0.337 (18.6 degrees); a Float32 raster of 1024 x 1024 texels over 2.4 x 2.4 degrees

@@ -63,7 +63,7 @@ TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
       }
       // Grazing views (0.3 is about 73 degrees off-normal) are left out, and so are latitudes beyond 80
       // degrees: equirectangular texels stretch as 1/cos(latitude), past the 8x anisotropic filter there,
-      // and blur across cell edges (the polar blur of seed 000 section 4.1 that polar data will fix).
+      // and blur across cell edges (the polar blur of [Kooima 2008, §4.1.1] that polar data will fix).
       if (hit->incidence < 0.3 || std::abs(hit->lat) > 80.0) continue;
       if (distanceToCellEdge(hit->lon) < 2.0 || distanceToCellEdge(hit->lat) < 2.0) continue;
       const int column = int(std::floor((hit->lon + 180.0) / 45.0)) % 8, row = int(std::floor((90.0 - hit->lat) / 45.0));

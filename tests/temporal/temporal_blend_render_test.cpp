@@ -1,4 +1,4 @@
-// composite.temporal_blend (issue 7; seed 000 sections 1.1 and 6, time-varying data): a series of synthetic
+// composite.temporal_blend (issue 7; [Kooima 2008, §1.1, ch. 6], time-varying data): a series of synthetic
 // months, each one colour over the whole planet, rendered day by day through the scene's date with no reload.
 // The mean colour of a frame follows the blend of the bracketing months linearly in time in scene-linear
 // light, then sRGB-encoded as output.image writes it, to within 1 level (8-bit output rounding, 0.5, plus

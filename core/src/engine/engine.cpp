@@ -1,5 +1,4 @@
 #include <chrono>
-#include <cstdio>
 #include <optional>
 #include <set>
 #include <string>
@@ -10,6 +9,7 @@
 #include <strata/gl.hpp>
 #include <strata/output.hpp>
 #include <strata/gl/shader_library.hpp>
+#include <strata/log.hpp>
 #include <strata/page_cache.hpp>
 #include <strata/pipeline_builder.hpp>
 
@@ -48,11 +48,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 // A page that cannot be read costs detail, not the frame: say so once per page, and how to check the
 // file once per file.
 void reportPageFailure(const PageFailure& failure, std::set<std::string>& sourcesAdvised) {
-  std::fprintf(stderr, "strata: warning: cannot read '%s' (level %d, page %d, %d): %s; the coarser level stands in there\n",
-               failure.source.c_str(), failure.key.level, failure.key.column, failure.key.row, failure.reason.c_str());
-  if (sourcesAdvised.insert(failure.source).second)
-    std::fprintf(stderr, "  fix: check that the file is complete and readable: gdalinfo -checksum '%s'\n",
-                 failure.source.c_str());
+  const std::string page = "level " + std::to_string(failure.key.level) + ", page " +
+                           std::to_string(failure.key.column) + ", " + std::to_string(failure.key.row);
+  logWarning("cannot read '" + failure.source + "' (" + page + "): " + failure.reason +
+                 "; the coarser level stands in there",
+             sourcesAdvised.insert(failure.source).second
+                 ? "check that the file is complete and readable: gdalinfo -checksum '" + failure.source + "'"
+                 : "");
 }
 
 NodeDescription* findNode(Pipeline& pipeline, const std::string& id) {
@@ -197,8 +199,8 @@ const FrameOutput& Engine::renderSettled(int width, int height) {
     if (after == before) return *frame;
     before = std::move(after);
   }
-  std::fprintf(stderr, "strata: warning: frame %llu still changed after %d renders; it may differ between runs\n",
-               static_cast<unsigned long long>(impl_->statistics.frame), kMostRenders);
+  logWarning("frame " + std::to_string(impl_->statistics.frame) + " still changed after " +
+             std::to_string(kMostRenders) + " renders; it may differ between runs");
   return *frame;
 }
 

@@ -10,8 +10,8 @@
 
 namespace strata {
 
-// The live nodes of one pipeline, in dependency order, and the frame phases over them (DESIGN.md, "The
-// picture"): prepare on the workers, render on the GL thread.
+// The live nodes of one pipeline, in dependency order, and the frame phases over them (docs/architecture.md,
+// "How a frame is made"): prepare on the workers, render on the GL thread.
 class NodeGraph {
  public:
   // Makes every node, checks the layer kinds on its inputs, reads their data on the workers (a node after

@@ -1,8 +1,8 @@
-#include <cstdio>
 #include <string>
 
 #include <strata/gl.hpp>
 #include <strata/gl/context.hpp>
+#include <strata/log.hpp>
 
 namespace strata {
 namespace {
@@ -18,7 +18,8 @@ void GLAPIENTRY logGlMessage(GLenum, GLenum type, GLuint id, GLenum severity, GL
                              const void*) {
   bool important = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
   if (!important && !verboseDebug) return;
-  std::fprintf(stderr, "strata: GL %s %u: %s\n", type == GL_DEBUG_TYPE_ERROR ? "error" : "message", id, message);
+  logMessage({type == GL_DEBUG_TYPE_ERROR ? LogLevel::Error : LogLevel::Info,
+              "GL " + std::string(type == GL_DEBUG_TYPE_ERROR ? "error " : "message ") + std::to_string(id) + ": " + message});
 }
 
 }  // namespace

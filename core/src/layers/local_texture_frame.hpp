@@ -1,8 +1,8 @@
 #pragma once
 // A raster's texture coordinates about the frame's reference point (View::reference, the point below the
 // eye), for sampling relative to it: a float longitude resolves 1.7 m at 137 degrees on Earth, an offset
-// from the reference micrometres (DESIGN.md "Precision"). Computed in double on the CPU each frame from the
-// projection's own forward mapping, so every projection, built in or a plugin's, gets it unchanged.
+// from the reference micrometres (docs/architecture.md, "Precision"). Computed in double on the CPU each frame
+// from the projection's own forward mapping, so every projection, built in or a plugin's, gets it unchanged.
 #include <functional>
 #include <optional>
 

@@ -11,10 +11,10 @@
 
 namespace strata::paging {
 
-// One format's cache texture (seed 000 section 4.3.2): a 2D array texture whose layers are page slots
-// (the digest's GL 4.5 reading of the n x m atlas), and which page each slot holds. Slots are reused
-// least recently used first; slots used this frame and pinned slots (the coarsest levels, which stand
-// in for everything else) are never taken.
+// One format's cache texture ([Kooima 2008, §4.3.2]): a 2D array texture whose layers are page slots (in
+// place of the source's n x m atlas, the layer index standing for row and column), and which page each slot
+// holds. Slots are reused least recently used first; slots used this frame and pinned slots (the coarsest
+// levels, which stand in for everything else) are never taken.
 class PageAtlas {
  public:
   // The atlas of `capacity` slots, or of fewer, halving down to `fewest`, where the GL answers

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <map>
 #include <mutex>
@@ -8,6 +7,7 @@
 #include <utility>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/log.hpp>
 #include <strata/page_cache.hpp>
 
 #include "paging/page_assembly.hpp"
@@ -158,11 +158,9 @@ std::unique_ptr<paging::PageAtlas> PageCache::Impl::fittingAtlas(PageFormat form
                     ") of the coarsest levels of the " + kind + " layers",
                 "close what else uses the GPU, or give the layers coarser overviews (strata tile)");
   if (atlas->capacity() < capacity)
-    std::fprintf(stderr,
-                 "strata: warning: the GPU has no memory for the page cache's %d %s pages (%s); it holds %d (%s), "
-                 "so pages are read again more often as the view moves\n",
-                 capacity, kind.c_str(), mebibytes(capacity).c_str(), atlas->capacity(),
-                 mebibytes(atlas->capacity()).c_str());
+    logWarning("the GPU has no memory for the page cache's " + std::to_string(capacity) + " " + kind + " pages (" +
+               mebibytes(capacity) + "); it holds " + std::to_string(atlas->capacity()) + " (" +
+               mebibytes(atlas->capacity()) + "), so pages are read again more often as the view moves");
   return atlas;
 }
 

@@ -8,7 +8,7 @@
 
 namespace strata::paging {
 
-// The index of page references every paged layer shares (seed 000 section 4.3.2: the "mipmap index
+// The index of page references every paged layer shares ([Kooima 2008, §4.3.2]: the "mipmap index
 // texture"), one R32UI texel per page of every level of every layer, in a texture kIndexWidth wide:
 //   the layer's first `levels` entries: where each level's entries start
 //   then per level, row-major, per page: 0 where nothing is loaded, else

@@ -27,9 +27,9 @@ struct LoadedPage {
   std::string error;
 };
 
-// Reads pages on worker threads, so that disk and decompression never hold up a frame (seed 000 section
-// 4.3.2 loads asynchronously). The frame replaces the queue with what it wants now, most wanted first;
-// pages read but not yet taken are capped, which bounds the CPU memory they hold.
+// Reads pages on worker threads, so that disk and decompression never hold up a frame ([Kooima 2008, §4.3.2]
+// loads asynchronously). The frame replaces the queue with what it wants now, most wanted first; pages read
+// but not yet taken are capped, which bounds the CPU memory they hold.
 class PageLoader {
  public:
   using Reader = std::function<void(const LayerPage&, std::vector<std::byte>&)>;

@@ -25,7 +25,7 @@ struct WantedPage {
   double distance = 0.0;  // m from the eye to the nearest sampled point of the page
 };
 
-// The pages each layer needs for `view`, chosen from their bounds as in seed 000 section 4.3.2: a page
+// The pages each layer needs for `view`, chosen from their bounds as in [Kooima 2008, §4.3.2]: a page
 // is wanted when some of it lies above the horizon and inside the view frustum, and its children are
 // wanted too while its texels, at its nearest point, look larger than a pixel. Every level from the
 // coarsest down is listed, so proxies exist for everything wanted. Sorted most wanted first. Distances are

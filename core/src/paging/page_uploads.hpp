@@ -8,10 +8,10 @@
 
 namespace strata::paging {
 
-// Copies pages into atlas slots through a ring of pixel-buffer-object slots, persistently mapped (the
-// digest's GL 4.5 reading of seed 000 section 4.3.2's PBO uploads): the CPU copy goes into driver
-// memory and the transfer runs without blocking the frame. A fence per ring slot keeps a slot from being
-// overwritten before the GPU has read it.
+// Copies pages into atlas slots through a ring of pixel-buffer-object slots, persistently mapped (a GL 4.5
+// form of the asynchronous pixel-buffer-object uploads of [Kooima 2008, §4.3.2]): the CPU copy goes into
+// driver memory and the transfer runs without blocking the frame. A fence per ring slot keeps a slot from
+// being overwritten before the GPU has read it.
 class PageUploads {
  public:
   explicit PageUploads(int ringSlots);

@@ -8,7 +8,7 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// The projections built into Strata (DESIGN.md "Projections"): equirectangular, polar-stereographic,
+// The projections built into Strata (docs/architecture.md, "Projections"): equirectangular, polar-stereographic,
 // healpix, orthographic and perspective.
 std::vector<ProjectionDeclaration> builtinProjections();
 

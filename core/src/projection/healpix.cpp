@@ -1,8 +1,7 @@
-// The HEALPix projection (H = 4, K = 3) of Calabretta & Roukema (2007, MNRAS 381, 865): the closed forms
-// that the terrain generator of seed 004 evaluates (Westerteiger et al. 2012, sections 3.1 and 3.2.4),
-// written out in digest 004 section 1.2 ("Planar HEALPix projection"). As in PROJ's healpix, an ellipsoid
-// is mapped through its authalic latitude onto the sphere of equal area (Snyder 1987, ch. 3), and the
-// map is scaled by that sphere's radius.
+// The HEALPix projection (H = 4, K = 3) of [Calabretta & Roukema 2007]: the closed forms that the HEALPix
+// terrain generator evaluates ([Westerteiger et al. 2011, §3.1, §3.2.4], which uses them without printing
+// them). As in PROJ's healpix, an ellipsoid is mapped through its authalic latitude onto the sphere of equal
+// area (Snyder 1987, ch. 3), and the map is scaled by that sphere's radius.
 #include "healpix.hpp"
 
 #include <algorithm>

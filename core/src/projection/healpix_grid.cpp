@@ -1,8 +1,9 @@
-// The HEALPix grid (strata/healpix.hpp). Sources: the face-local forward and inverse of digest 004 section
-// 1.2 (the HEALPix library's closed forms, checked there to 5e-15); the pixel numbering of Gorski et al.
-// (2005, ApJ 622, 759, sections 4 and 5); the planar projection of Calabretta & Roukema (2007, MNRAS 381,
-// 865, H = 4, K = 3). The pixel indices floor the same products, in the same order, as the HEALPix library
-// does, so that a place on a pixel edge falls into the pixel the library puts it in.
+// The HEALPix grid (strata/healpix.hpp). Sources: the face-local forward and inverse in the HEALPix library's
+// closed forms ([Gorski et al. 2005]; [Westerteiger et al. 2011] uses them but prints none, docs/references.md,
+// Errata), whose round trip agrees to 5e-15; the pixel numbering of [Gorski et al. 2005, §4, §5]; the planar
+// projection of [Calabretta & Roukema 2007] (H = 4, K = 3). The pixel indices floor the same products, in the
+// same order, as the HEALPix library does, so that a place on a pixel edge falls into the pixel the library
+// puts it in.
 #include <strata/healpix.hpp>
 
 #include <algorithm>
@@ -24,13 +25,13 @@ constexpr double kTwoThirds = 2.0 / 3.0;  // |z| of the boundary between the pol
 constexpr double kEdgeSlack = 1e-12;
 
 // Per face, its southern corner's ring in face widths (2 at the equator) and its centre's longitude in
-// units of pi/4 (digest 004 section 1.2, "jrll" and "jpll").
+// units of pi/4 (the HEALPix library's "jrll" and "jpll", [Gorski et al. 2005]).
 constexpr std::array<int, 12> kSouthCornerRing{2, 2, 2, 2, 3, 3, 3, 3, 4, 4, 4, 4};
 constexpr std::array<int, 12> kCentreLongitude{1, 3, 5, 7, 0, 2, 4, 6, 1, 3, 5, 7};
 
 enum class Zone { northCap, equatorial, southCap };
 
-// A place as HEALPix's forward formulas see it (digest 004 section 1.2, forward; Gorski 2005 section 4):
+// A place as HEALPix's forward formulas see it ([Gorski et al. 2005, §4], forward):
 // in the equatorial zone `ascending` and `descending` are the global indices, in face widths, of the edge
 // lines rising to the east and to the west, 0.5 + tt -/+ 0.75 z; in a cap they are the distances from the
 // pole along the two edges of the quadrant `face` covers, in [0, 1]. `turns` is the longitude in quarter
@@ -51,8 +52,8 @@ double longitudeFromZero(double lon) {
 int positiveModulo4(int value) { return ((value % 4) + 4) % 4; }
 
 // The face of a point on the ascending and descending edge lines of indices `ascending`, `descending`
-// (digest 004 section 1.2: the same two lines cross in one face, neighbouring ones bound a polar face above
-// or below); -1 where the lines are two apart (between the polar triangles of the HEALPix plane).
+// ([Gorski et al. 2005], forward: the same two lines cross in one face, neighbouring ones bound a polar face
+// above or below); -1 where the lines are two apart (between the polar triangles of the HEALPix plane).
 int faceOfEdgeLines(int ascending, int descending) {
   if (ascending == descending) return 4 + positiveModulo4(ascending);
   if (descending == ascending + 1) return positiveModulo4(ascending);
@@ -69,7 +70,7 @@ EdgeLines edgeLines(glm::dvec2 lonlat) {
     return {Zone::equatorial, face, ascending, descending, turns};
   }
   // sigma = sqrt(3 (1 - |z|)), the distance from the pole in face widths; near the pole from sin(colatitude),
-  // which 1 - |z| has lost to cancellation (digest 004 section 1.2; the library switches at |z| = 0.99).
+  // which 1 - |z| has lost to cancellation ([Gorski et al. 2005]; the library switches at |z| = 0.99).
   const double sinColatitude = std::cos(lonlat.y);
   const double sigma = za > 0.99 ? sinColatitude / std::sqrt((1.0 + za) / 3.0) : std::sqrt(3.0 * (1.0 - za));
   const int quadrant = std::min(3, static_cast<int>(turns));
@@ -79,7 +80,7 @@ EdgeLines edgeLines(glm::dvec2 lonlat) {
                  : EdgeLines{Zone::southCap, quadrant + 8, ascending, descending, turns};
 }
 
-// Face-local x and y of edge-line coordinates (digest 004 section 1.2, forward).
+// Face-local x and y of edge-line coordinates ([Gorski et al. 2005], forward).
 FacePoint toFacePoint(const EdgeLines& lines) {
   switch (lines.zone) {
     case Zone::northCap: return {lines.face, 1.0 - lines.descending, 1.0 - lines.ascending};
@@ -96,8 +97,8 @@ struct FacePixel {
 };
 
 // The pixel of edge-line coordinates: the distances along the edge lines floored in pixel units, counted
-// from the corner the library counts them from (Gorski 2005 section 4), so that x = 1 or y = 1 stays in the
-// face. Scaling by nside, a power of two, is exact: these are the library's products.
+// from the corner the library counts them from ([Gorski et al. 2005, §4]), so that x = 1 or y = 1 stays in
+// the face. Scaling by nside, a power of two, is exact: these are the library's products.
 FacePixel toFacePixel(std::int64_t nside, const EdgeLines& lines) {
   const auto index = [nside](double distance) {
     return std::min(static_cast<std::int64_t>(std::floor(static_cast<double>(nside) * distance)), nside - 1);
@@ -124,8 +125,8 @@ void checkPixel(std::int64_t nside, std::int64_t pixel) {
     throw std::invalid_argument("HEALPix pixel " + std::to_string(pixel) + " is outside 0 to 12 nside^2 - 1");
 }
 
-// The bits of `value` moved to the even positions, and back: the NESTED scheme's interleaving (Gorski 2005
-// section 5), ix's bits even, iy's odd.
+// The bits of `value` moved to the even positions, and back: the NESTED scheme's interleaving
+// ([Gorski et al. 2005, §5]), ix's bits even, iy's odd.
 std::uint64_t spreadBits(std::uint64_t value) {
   value &= 0xffffffffu;
   value = (value | (value << 16)) & 0x0000ffff0000ffffu;
@@ -157,7 +158,7 @@ FacePixel fromNested(std::int64_t nside, std::int64_t pixel) {
           static_cast<std::int64_t>(gatherBits(bits >> 1))};
 }
 
-// A ring of pixels, numbered 1 to 4 nside - 1 from the north (Gorski 2005 section 4): its pixels per
+// A ring of pixels, numbered 1 to 4 nside - 1 from the north ([Gorski et al. 2005, §4]): its pixels per
 // quarter turn (the ring's number within a cap, nside in the equatorial zone), whether its centres are half a
 // pixel east of the quarter meridians (all cap rings, every other equatorial ring), and its first pixel.
 struct Ring {
@@ -183,7 +184,7 @@ std::int64_t capRing(std::int64_t count) {
   return i;
 }
 
-// A face pixel's ring and its place there (inverting the ring's centre longitude, digest 004 section 1.2:
+// A face pixel's ring and its place there (inverting the ring's centre longitude of [Gorski et al. 2005]:
 // phi = pi/4 (jpll + (x - y) / nr)).
 std::int64_t toRing(std::int64_t nside, const FacePixel& pixel) {
   const auto face = static_cast<std::size_t>(pixel.face);
@@ -195,7 +196,7 @@ std::int64_t toRing(std::int64_t nside, const FacePixel& pixel) {
 }
 
 // The face pixel of a ring pixel: in a cap the quarter turn gives the face, elsewhere the edge-line indices
-// through the pixel's centre (the equatorial forward formulas in integers, digest 004 section 1.2); then
+// through the pixel's centre (the equatorial forward formulas of [Gorski et al. 2005] in integers); then
 // x - y from the centre's longitude and x + y from the ring, both in pixel steps.
 FacePixel fromRing(std::int64_t nside, std::int64_t pixel) {
   const std::int64_t total = 12 * nside * nside, capPixels = 2 * nside * (nside - 1);
@@ -218,8 +219,9 @@ FacePixel fromRing(std::int64_t nside, std::int64_t pixel) {
 
 }  // namespace
 
-// The inverse of digest 004 section 1.2: the ring coordinate jr (face widths from the north pole) gives z,
-// in the caps through t = nr^2 / 3 = 1 - |z| so that sin(colatitude) = sqrt(t (2 - t)) keeps its precision.
+// The face-local inverse ([Gorski et al. 2005]): the ring coordinate jr (face widths from the north pole)
+// gives z, in the caps through t = nr^2 / 3 = 1 - |z| so that sin(colatitude) = sqrt(t (2 - t)) keeps its
+// precision.
 SphericalPoint spherical(const FacePoint& point) {
   const double jr = kSouthCornerRing[static_cast<std::size_t>(point.face)] - point.x - point.y;
   const double centre = kCentreLongitude[static_cast<std::size_t>(point.face)];
@@ -253,7 +255,7 @@ std::int64_t nestedPixel(std::int64_t nside, glm::dvec2 lonlat) {
   return toNested(nside, toFacePixel(nside, edgeLines(lonlat)));
 }
 
-// Gorski 2005 section 4 in the library's arithmetic: in the equatorial zone the edge-line indices give the
+// [Gorski et al. 2005, §4] in the library's arithmetic: in the equatorial zone the edge-line indices give the
 // ring (their difference) and the place in it (their sum); in a cap the ring is the sum of the two distances
 // from the pole and the place the longitude times the ring's pixels per quarter turn.
 std::int64_t ringPixel(std::int64_t nside, glm::dvec2 lonlat) {
@@ -302,9 +304,9 @@ std::int64_t ringToNested(std::int64_t nside, std::int64_t pixel) {
   return toNested(nside, fromRing(nside, pixel));
 }
 
-// Calabretta & Roukema 2007 with H = 4, K = 3 is affine on each face: the equatorial x = phi, y = 3 pi z / 8
-// and the polar x = phi_c + (phi - phi_c) sigma, y = pi (2 - sigma) / 4 (digest 004 section 1.2) both become
-// pi/4 (jpll + x - y, 2 - jrll + x + y) once phi, z and sigma are written in face coordinates.
+// [Calabretta & Roukema 2007] with H = 4, K = 3 is affine on each face: its equatorial x = phi, y = 3 pi z / 8
+// and its polar x = phi_c + (phi - phi_c) sigma, y = pi (2 - sigma) / 4 both become pi/4 (jpll + x - y,
+// 2 - jrll + x + y) once phi, z and sigma are written in face coordinates.
 glm::dvec2 planeOf(const FacePoint& point) {
   const auto face = static_cast<std::size_t>(point.face);
   double x = kQuarterPi * (kCentreLongitude[face] + point.x - point.y);
@@ -313,8 +315,8 @@ glm::dvec2 planeOf(const FacePoint& point) {
 }
 
 // The inverse of planeOf: on the plane the edge lines are straight, jp, jm = (1 + u -/+ v) / 2 for
-// (u, v) = 4 (x, y) / pi, and the face is where they cross (the equatorial forward formulas of digest 004
-// section 1.2 with phi = x, 0.75 z = 2 y / pi).
+// (u, v) = 4 (x, y) / pi, and the face is where they cross (the equatorial forward formulas of
+// [Gorski et al. 2005] with phi = x, 0.75 z = 2 y / pi).
 std::optional<FacePoint> faceOfPlane(glm::dvec2 xy) {
   const double u = std::fmod(xy.x, kTwoPi) / kQuarterPi, v = xy.y / kQuarterPi;
   if (!(std::abs(v) <= 2.0) || !std::isfinite(u)) return std::nullopt;

@@ -1,4 +1,4 @@
-// The layout of a HEALPix pyramid (strata/healpix_pyramid.hpp): the twelve faces of digest 004 section 1.1
+// The layout of a HEALPix pyramid (strata/healpix_pyramid.hpp): the twelve faces of [Westerteiger et al. 2011, §3]
 // side by side, numbered as strata/healpix.hpp numbers them.
 #include <strata/healpix.hpp>
 #include <strata/healpix_pyramid.hpp>

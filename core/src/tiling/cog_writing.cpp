@@ -9,7 +9,7 @@ namespace {
 // GDAL's command-line style options for the COG driver.
 std::vector<std::string> translateArguments(const std::string& targetCrs, const MetadataItems& metadata) {
   std::vector<std::string> arguments{"-of", "COG",
-      "-co", "BLOCKSIZE=512",          // the page size of seed 000 section 4.3.1
+      "-co", "BLOCKSIZE=512",          // the page size of [Kooima 2008, §4.3.1]
       "-co", "COMPRESS=DEFLATE",       // lossless: heights must come back bit for bit
       "-co", "OVERVIEWS=IGNORE_EXISTING",
       "-co", "RESAMPLING=AVERAGE",     // overviews are the mean of what they cover, as the GPU's mips are

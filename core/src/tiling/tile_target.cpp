@@ -1,5 +1,5 @@
-// Choosing the projection a raster is tiled into (DESIGN.md "Projections": any CRS PROJ knows is re-tiled
-// into one of the built-in projections).
+// Choosing the projection a raster is tiled into (docs/architecture.md, "Projections": any CRS PROJ knows is
+// re-tiled into one of the built-in projections).
 #include "tiling/tile_target.hpp"
 
 #include <algorithm>
@@ -88,7 +88,7 @@ std::string tileTarget(const PluginRegistry& plugins, const OGRSpatialReference&
     return target;
   }
   if (isRegistered(plugins, crs)) return {};
-  // Beyond 60 degrees equirectangular texels are stretched more than 2:1 (seed 000 section 4.1).
+  // Beyond 60 degrees equirectangular texels are stretched more than 2:1 ([Kooima 2008, §4.1]).
   constexpr double kPolarLatitude = 60.0;
   const Coverage coverage = coverageOf(crs, geotransform, width, height);
   if (coverage.northPole || coverage.south >= kPolarLatitude) return *namedTarget("polar-north", crs);

@@ -1,10 +1,10 @@
 #include <strata/viewer/viewer.hpp>
 
 #include <array>
-#include <cstdio>
 
 #include <strata/error.hpp>
 #include <strata/gl.hpp>
+#include <strata/log.hpp>
 #include <strata/pipeline.hpp>
 #include <strata/viewer/orbit_controls.hpp>
 #include <strata/viewer/scene_panel.hpp>
@@ -32,14 +32,14 @@ void Viewer::navigate() {
 }
 
 // The pipeline's file was edited: load it again, keeping the camera; a file that no longer loads leaves the
-// pipeline as it was, and says why in the panel and on stderr.
+// pipeline as it was, and says why in the panel and in the log (strata/log.hpp).
 void Viewer::reload() {
   try {
     engine_.reload();
     failed_ = false;
     panel_.report({});
   } catch (const Error& error) {
-    std::fprintf(stderr, "%s\n", error.what());
+    logMessage({LogLevel::Error, error.what()});
     panel_.report(error.what());
   }
 }
@@ -51,7 +51,7 @@ const FrameOutput* Viewer::renderedFrame() {
   try {
     return &engine_.render(width_, height_);
   } catch (const Error& error) {
-    std::fprintf(stderr, "%s\n", error.what());
+    logMessage({LogLevel::Error, error.what()});
     panel_.report(error.what());
     failed_ = true;
     return nullptr;

@@ -20,7 +20,7 @@ struct Camera {
 };
 
 // A camera resolved for one frame. Planet-scale quantities stay in double; what the GPU gets is
-// relative to the eye (DESIGN.md, Precision).
+// relative to the eye (docs/architecture.md, "Precision").
 struct View {
   int width = 0;
   int height = 0;
@@ -30,7 +30,7 @@ struct View {
   double near = 1.0;               // m
   double verticalFov = 0.0;        // rad
   // Longitude and latitude (rad) of the point below the eye. The GPU gets longitudes and latitudes
-  // measured from it, which float resolves finely near the eye (DESIGN.md, Precision).
+  // measured from it, which float resolves finely near the eye (docs/architecture.md, "Precision").
   glm::dvec2 reference{0.0};
 
   // Eye-space position of a planet-fixed point, computed in double.

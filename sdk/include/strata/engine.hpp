@@ -79,8 +79,8 @@ class Engine {
   const FrameOutput& renderComplete(int width, int height);
   // Renders still frames (FrameState::still) until every page is in and two frames in a row are the same,
   // and returns the last: the frame of a sequence whose camera moves (a camera path, a synchronous
-  // benchmark), the same on every run however the page loaders are timed. Warns on stderr, and returns the
-  // last, when 256 renders did not settle it.
+  // benchmark), the same on every run however the page loaders are timed. Logs a warning (strata/log.hpp),
+  // and returns the last, when 256 renders did not settle it.
   const FrameOutput& renderSettled(int width, int height);
   const FrameStatistics& statistics() const;
   // The geometry generators' statistics for the last frame, summed; waits for the GPU to finish it.

@@ -18,7 +18,7 @@ struct GeometryStatistics {
   double rasterisationMs = 0.0;  // GPU: drawing the deferred texturing buffer
 };
 
-// The deferred texturing buffer a geometry generator rasterises (seed 000, section 3.4.2), read by
+// The deferred texturing buffer a geometry generator rasterises ([Kooima 2008, §3.4.2]), read by
 // every per-pixel compositor. Attachments:
 //   color(0) RGBA32F: longitude, latitude measured from View::reference (rad, longitude not wrapped), so
 //                     that float resolves them finely near the eye; planet-fixed unit normal x, y

@@ -1,10 +1,10 @@
 #pragma once
 #include <strata/export.hpp>
 // The HEALPix grid in double precision: the twelve base faces, the face-local coordinates the HEALPix terrain
-// generator (issue 6, digest 004) tessellates, the NESTED and RING pixel numbering of the HEALPix library
-// (Gorski et al. 2005, ApJ 622, 759), and the planar HEALPix projection (Calabretta & Roukema 2007, MNRAS
-// 381, 865; PROJ's +proj=healpix) on the unit sphere. Longitudes and latitudes are in radians on Strata's
-// axes: +z north, +x at longitude 0, +y at longitude pi/2.
+// generator (issue 6, [Westerteiger et al. 2011]) tessellates, the NESTED and RING pixel numbering of the
+// HEALPix library ([Gorski et al. 2005]), and the planar HEALPix projection ([Calabretta & Roukema 2007];
+// PROJ's +proj=healpix) on the unit sphere. Longitudes and latitudes are in radians on Strata's axes: +z
+// north, +x at longitude 0, +y at longitude pi/2.
 #include <cstdint>
 #include <optional>
 
@@ -29,9 +29,9 @@ struct FacePoint {
 
 // The face point of a longitude (any real) and latitude (in [-pi/2, pi/2]).
 FacePoint facePoint(glm::dvec2 lonlat);
-// A face point as the inverse of digest 004 section 1.2 gives it: z = sin(latitude), sin(colatitude) (formed
-// from the ring number in the caps, so that it keeps its precision up to the poles) and the longitude phi =
-// (pi / 4) (jpll + (x - y) / nr), not wrapped (at a pole, the face centre's).
+// A face point as the HEALPix library's face-local inverse ([Gorski et al. 2005]) gives it: z = sin(latitude),
+// sin(colatitude) (formed from the ring number in the caps, so that it keeps its precision up to the poles) and
+// the longitude phi = (pi / 4) (jpll + (x - y) / nr), not wrapped (at a pole, the face centre's).
 struct SphericalPoint {
   double z, sinColatitude, longitude;
 };

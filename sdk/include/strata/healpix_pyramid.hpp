@@ -1,13 +1,13 @@
 #pragma once
 #include <strata/export.hpp>
-// The HEALPix pyramid that `strata tile --to healpix` writes and source.gdal pages from (issue 6; digest 004
-// section 1.1: twelve base faces, each a quadtree of tiles, NESTED numbering). One Cloud Optimized GeoTIFF
-// holds the twelve faces side by side, face f in columns [f nside, (f + 1) nside), each an nside x nside grid
-// of HEALPix pixels: face f's texel (column, row) is the NESTED pixel f nside^2 + interleave(column,
-// nside - 1 - row) of the HEALPix library at that nside (column bits in the even positions), and holds the
-// value at that pixel's centre. Its 512x512 tiles are pages of the page cache; the one-sample overlap of the
-// paper's tiles is the pages' border, which the cache fills from the neighbouring face on the sphere (see
-// texelAcross), so that filtering is seamless across face edges.
+// The HEALPix pyramid that `strata tile --to healpix` writes and source.gdal pages from (issue 6;
+// [Westerteiger et al. 2011, §3]: twelve base faces, each a quadtree of tiles; NESTED numbering). One Cloud
+// Optimized GeoTIFF holds the twelve faces side by side, face f in columns [f nside, (f + 1) nside), each an
+// nside x nside grid of HEALPix pixels: face f's texel (column, row) is the NESTED pixel f nside^2 +
+// interleave(column, nside - 1 - row) of the HEALPix library at that nside (column bits in the even
+// positions), and holds the value at that pixel's centre. Its 512x512 tiles are pages of the page cache; the
+// one-sample overlap of the paper's tiles is the pages' border, which the cache fills from the neighbouring
+// face on the sphere (see texelAcross), so that filtering is seamless across face edges.
 //
 // Finer than kMostNside (about 10 cm texels on Earth) the twelve faces no longer fit GDAL's sizes, and data
 // that fine covers a small place anyway: such a pyramid holds a window of one face (kWindowItem), paged as
@@ -92,8 +92,9 @@ std::array<double, 6> facePlaneGeotransform(int face, std::int64_t nside, double
 
 // True least and greatest values of a one-channel HEALPix pyramid per page, which `strata tile` computes at full
 // resolution and stores in the file, so that geometry.healpix bounds each node's heights by its data rather than
-// by one global range (digest 004 section 2: the paper's per-node boxes). Overview pages hold averages, whose
-// range lies inside their texels' rather than around it, so the ranges cannot come from the overviews.
+// by one global range ([Westerteiger et al. 2011, §3.2.1, §3.2.2]: the paper's per-node boxes, here taken from
+// per-page ranges; docs/references.md, Errata). Overview pages hold averages, whose range lies inside their
+// texels' rather than around it, so the ranges cannot come from the overviews.
 class PageRanges {
  public:
   struct Range {

@@ -25,7 +25,8 @@ struct ValueRange {
   double greatest = 0.0;
 };
 
-// A layer is a GLSL sampling function over a projection, plus the GPU resources behind it (DESIGN.md).
+// A layer is a GLSL sampling function over a projection, plus the GPU resources behind it
+// (docs/architecture.md, "Nodes and what flows between them").
 // Consumers paste glslOnce() into their programs after "strata/surface_point.glsl" and call
 //   vec4 <samplingFunction()>(SurfacePoint p)
 // which returns the value in .rgb (.r for one-channel kinds: heights in metres, already scaled) and the

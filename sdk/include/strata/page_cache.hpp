@@ -54,10 +54,10 @@ struct PagedLayerPlacement {
 std::string pageAtlasInclude(PageFormat format);
 std::string pageAtlasSampler(PageFormat format);
 
-// Virtual texturing for every paged layer of a pipeline (DESIGN.md "Data and paging"; seed 000 section
-// 4.3.2, after Lefohn et al.): one atlas of 514x514 pages per page format (a 2D array texture), one
-// index of page references shared by all layers, so the number of layers is not bounded by texture
-// units. Each frame the pages the view needs are chosen from their bounds, read on loader threads and
+// Virtual texturing for every paged layer of a pipeline (docs/architecture.md, "Data and paging";
+// [Kooima 2008, §4.3.2], after Lefohn et al.): one atlas of 514x514 pages per page format (a 2D array
+// texture), one index of page references shared by all layers, so the number of layers is not bounded by
+// texture units. Each frame the pages the view needs are chosen from their bounds, read on loader threads and
 // uploaded through pixel buffer objects; until a page arrives the nearest coarser one stands in.
 // All calls on the GL thread.
 class PageCache {

@@ -7,7 +7,7 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // Pages of 512x512 texels plus a 1-texel border copied from their neighbours, 514x514 in the cache, so
-// that bilinear filtering is seamless across page edges (seed 000 section 4.3.1: about 500x500 tested
+// that bilinear filtering is seamless across page edges ([Kooima 2008, §4.3.1]: about 500x500 tested
 // best; 512 matches the COG tiles `strata tile` writes, so a page is one tile and its neighbours' edges).
 inline constexpr int kPagePayload = 512;
 inline constexpr int kPageBorder = 1;
@@ -24,7 +24,7 @@ struct PageKey {
   auto operator<=>(const PageKey&) const = default;
 };
 
-// The mip pyramid of pages over a raster (seed 000 section 4.3.1): level 0 is the raster, each level
+// The mip pyramid of pages over a raster ([Kooima 2008, §4.3.1]): level 0 is the raster, each level
 // halves the one below (a texel of level l covers 2^l x 2^l raster texels; the last row and column may
 // cover less), up to the first level that fits in one page.
 class PagePyramid {

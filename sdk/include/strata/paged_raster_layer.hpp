@@ -10,9 +10,9 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// A layer sampled through the page cache (DESIGN.md "Data and paging"): like RasterLayer, per sample the
-// projection maps longitude/latitude to texture coordinates, but the texels come from the pages of a
-// PageSource that the cache holds, so the raster may be far larger than GPU memory. Sources attach in
+// A layer sampled through the page cache (docs/architecture.md, "Data and paging"): like RasterLayer, per
+// sample the projection maps longitude/latitude to texture coordinates, but the texels come from the pages
+// of a PageSource that the cache holds, so the raster may be far larger than GPU memory. Sources attach in
 // createResources(), to the cache GpuContext::pages.
 class PagedRasterLayer : public ProjectedRasterLayer {
  public:

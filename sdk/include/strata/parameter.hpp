@@ -21,7 +21,7 @@ const char* toString(ParameterType type);
 using ParameterValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
 
 // One parameter of a node type, declared once: validation, error messages, `strata plugins --describe`
-// and (later) the viewer's controls all derive from this declaration.
+// and the viewer's controls all derive from this declaration.
 struct ParameterDeclaration {
   std::string name;
   ParameterType type = ParameterType::Real;

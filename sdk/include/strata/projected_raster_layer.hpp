@@ -20,7 +20,7 @@ class ShaderProgram;
 // What every raster sampled through a projection shares, whether its texels sit in one texture
 // (RasterLayer) or in the page cache (PagedRasterLayer): per sample the projection's GLSL maps
 // longitude/latitude to map coordinates, the geotransform maps those to texture coordinates, and a
-// footprint step through the projection picks the level of detail (DESIGN.md "Projections").
+// footprint step through the projection picks the level of detail (docs/architecture.md, "Projections").
 class ProjectedRasterLayer : public Layer {
  public:
   ProjectedRasterLayer(std::string nodeId, LayerKind kind);

@@ -54,7 +54,7 @@ enum class ProjectionAspect {
   SouthPolar,  // azimuthal, centred on the south pole
 };
 
-// A map projection (DESIGN.md "Projections"): geodetic longitude and latitude in radians to map
+// A map projection (docs/architecture.md, "Projections"): geodetic longitude and latitude in radians to map
 // coordinates (x, y) in the units of the raster's geotransform (metres for projected CRSs, degrees for
 // geographic ones), and back, in double precision. Its GLSL side does the forward mapping per vertex and
 // per pixel with the same formulas in single precision.

@@ -23,8 +23,8 @@ struct RasterImage {
   std::vector<float> texels;
 };
 
-// A layer sampled from one texture through any projection (DESIGN.md "Projections"): per sample the
-// projection's GLSL maps longitude/latitude to map coordinates and the geotransform maps those to the
+// A layer sampled from one texture through any projection (docs/architecture.md, "Projections"): per sample
+// the projection's GLSL maps longitude/latitude to map coordinates and the geotransform maps those to the
 // texture. Source plugins fill a RasterImage and hand it over; rasters too large for one texture go
 // through the page cache (PagedRasterLayer).
 class RasterLayer : public ProjectedRasterLayer {

@@ -12,7 +12,7 @@ namespace strata {
 
 class PluginRegistry;
 
-// What `strata tile` is asked to do (DESIGN.md "Data and paging").
+// What `strata tile` is asked to do (docs/architecture.md, "Data and paging").
 struct TilingRequest {
   std::filesystem::path input;   // any raster GDAL opens: 1 to 4 bands of 8/16/32-bit integers or floats
   std::filesystem::path output;  // the Cloud Optimized GeoTIFF to write

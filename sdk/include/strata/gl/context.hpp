@@ -27,7 +27,7 @@ struct GlInfo {
 };
 GlInfo currentGlInfo();
 
-// Routes GL debug messages of the current context to the log (stderr); errors always, others when verbose.
+// Routes GL debug messages of the current context to the log (strata/log.hpp); errors always, others when verbose.
 void enableGlDebugOutput(bool verbose);
 
 }  // namespace strata
