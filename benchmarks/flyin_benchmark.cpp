@@ -117,8 +117,15 @@ void BM_ExtraLayers(benchmark::State& state) {
   state.counters["frame_ms"] = frameMs / double(state.iterations());
 }
 
-BENCHMARK(BM_ExtraLayers)->ArgName("extra_layers")->Arg(0)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond)
-    ->UseRealTime()->Iterations(10);
+BENCHMARK(BM_ExtraLayers)
+    ->ArgName("extra_layers")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(4)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(10);
 
 }  // namespace
 

@@ -83,8 +83,8 @@ void benchmarkHealpix(benchmark::State& state, const fs::path& pipeline, const S
 void writeFieldRaster(const fs::path& raster) {
   constexpr int width = 4096, height = 2048;
   GDALAllRegister();
-  std::unique_ptr<GDALDataset> dataset(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      raster.c_str(), width, height, 1, GDT_Float32, nullptr));
+  std::unique_ptr<GDALDataset> dataset(
+      GetGDALDriverManager()->GetDriverByName("GTiff")->Create(raster.c_str(), width, height, 1, GDT_Float32, nullptr));
   OGRSpatialReference mars;
   mars.SetFromUserInput("+proj=longlat +R=3396190");
   dataset->SetSpatialRef(&mars);
@@ -98,7 +98,8 @@ void writeFieldRaster(const fs::path& raster) {
       row[std::size_t(x)] = float(4000.0 * std::sin(3.0 * lon + 1.0) * std::cos(2.0 * lat) +
                                   1500.0 * std::sin(7.0 * lon) * std::sin(5.0 * lat + 0.3));
     }
-    if (dataset->GetRasterBand(1)->RasterIO(GF_Write, 0, y, width, 1, row.data(), width, 1, GDT_Float32, 0, 0) != CE_None)
+    if (dataset->GetRasterBand(1)->RasterIO(GF_Write, 0, y, width, 1, row.data(), width, 1, GDT_Float32, 0, 0) !=
+        CE_None)
       throw std::runtime_error("cannot write " + raster.string());
   }
 }
@@ -107,18 +108,22 @@ void writeFieldRaster(const fs::path& raster) {
 // returns the pipelines over each, in that order, with procedural.yaml's global range of +-12 km.
 std::vector<fs::path> writeFieldPipelines() {
   const fs::path scratch = fs::temp_directory_path();
-  const fs::path raster = scratch / "strata-bench-healpix-field.tif", pyramid = scratch / "strata-bench-healpix-pyramid.tif";
+  const fs::path raster = scratch / "strata-bench-healpix-field.tif",
+                 pyramid = scratch / "strata-bench-healpix-pyramid.tif";
   writeFieldRaster(raster);
   strata::tileRaster(strata::PluginRegistry(),
                      {.input = raster, .output = pyramid, .target = "healpix", .overwrite = true, .nside = 1024});
   std::vector<fs::path> pipelines;
   for (const fs::path& heights : {raster, pyramid}) {
     pipelines.push_back(scratch / ("strata-bench-healpix-" + heights.stem().string() + ".yaml"));
-    std::ofstream(pipelines.back()) << "strata: 1\nbody: {name: Mars, radius: 3396190}\nnodes:\n"
-                                       "  colours: {type: source.procedural, kind: color}\n"
-                                       "  relief: {type: source.gdal, kind: height, path: " << heights.string() << "}\n"
-                                       "  terrain: {type: geometry.healpix, height: relief, lowest: -12000, highest: 12000}\n"
-                                       "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
+    std::ofstream(pipelines.back())
+        << "strata: 1\nbody: {name: Mars, radius: 3396190}\nnodes:\n"
+           "  colours: {type: source.procedural, kind: color}\n"
+           "  relief: {type: source.gdal, kind: height, path: "
+        << heights.string()
+        << "}\n"
+           "  terrain: {type: geometry.healpix, height: relief, lowest: -12000, highest: 12000}\n"
+           "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
   }
   return pipelines;
 }
@@ -143,10 +148,10 @@ void registerBenchmarks(const fs::path& pipeline) {
   const std::vector<fs::path> field = writeFieldPipelines();
   for (std::size_t i = 0; i < field.size(); ++i)
     for (const std::string& threshold : {std::string("0.01"), std::string("0.2")}) {
-      const std::string name = std::string("healpix/heights:") + (i == 0 ? "raster" : "pyramid") +
-                               "/view:near/threshold:" + threshold;
-      benchmark::RegisterBenchmark(name.c_str(), benchmarkHealpix, field[i], Scene{"near", strata::bench::nearMarsView()},
-                                   threshold)
+      const std::string name =
+          std::string("healpix/heights:") + (i == 0 ? "raster" : "pyramid") + "/view:near/threshold:" + threshold;
+      benchmark::RegisterBenchmark(name.c_str(), benchmarkHealpix, field[i],
+                                   Scene{"near", strata::bench::nearMarsView()}, threshold)
           ->Unit(benchmark::kMillisecond)
           ->UseRealTime()
           ->Iterations(reduced ? 3 : 300);

@@ -39,9 +39,13 @@ fs::path writePipeline(const fs::path& raster, int budgetMiB) {
   const fs::path file = fs::temp_directory_path() / "strata-bench-page-cache.yaml";
   std::ofstream(file) << "strata: 1\n"
                          "camera: {lon: 0, lat: 0, altitude: 300000, tilt: 30}\n"
-                         "cache: {budget: " << budgetMiB << "}\n"
+                         "cache: {budget: "
+                      << budgetMiB
+                      << "}\n"
                          "nodes:\n"
-                         "  imagery: {type: source.gdal, path: '" << raster.string() << "', kind: color}\n"
+                         "  imagery: {type: source.gdal, path: '"
+                      << raster.string()
+                      << "', kind: color}\n"
                          "  globe: {type: geometry.icosahedral}\n"
                          "  frame: {type: output.image, geometry: globe, surface: [imagery]}\n";
   return file;

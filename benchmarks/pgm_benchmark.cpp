@@ -79,8 +79,8 @@ std::vector<Configuration> thesisTables(int testCase, const std::vector<Size>& g
   std::vector<Configuration> configurations;
   for (Size grid : grids)
     for (Size screen : screens)
-      configurations.push_back({"pgm/" + prefix + "/grid:" + grid.text() + "/screen:" + screen.text(), testCase,
-                                grid, screen});
+      configurations.push_back(
+          {"pgm/" + prefix + "/grid:" + grid.text() + "/screen:" + screen.text(), testCase, grid, screen});
   for (Size size : gridIsScreen)
     configurations.push_back({"pgm_grid_is_screen/" + prefix + "/" + size.text(), testCase, size, size});
   return configurations;

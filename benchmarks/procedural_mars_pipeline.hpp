@@ -17,7 +17,9 @@ inline std::filesystem::path writeProceduralMarsPipeline(const std::string& name
                          "nodes:\n"
                          "  colours: {type: source.procedural, kind: color}\n"
                          "  relief: {type: source.procedural, kind: height}\n"
-                         "  terrain: {type: " << type << ", height: relief, lowest: -12000, highest: 12000}\n"
+                         "  terrain: {type: "
+                      << type
+                      << ", height: relief, lowest: -12000, highest: 12000}\n"
                          "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
   return file;
 }

@@ -86,17 +86,22 @@ void strataTile(benchmark::State& state, const fs::path& input, const fs::path& 
     strata::PluginRegistry plugins;  // each `strata tile` loads them: projections from plugins count
     plugins.loadDirectories(strata::defaultPluginDirectories());
     if (strata::tileRaster(plugins, request).reprojected)
-      throw std::runtime_error("strata tile reprojected the input and gdal_translate would not: give a raster in a "
-                               "projection Strata samples directly, e.g. longitude/latitude");
+      throw std::runtime_error(
+          "strata tile reprojected the input and gdal_translate would not: give a raster in a "
+          "projection Strata samples directly, e.g. longitude/latitude");
   });
 }
 
 // issue 3's command line, with the creation options core/src/tiling/tile_raster.cpp passes, so that both
 // write the same file. strata tile also sets GDAL_NUM_THREADS while it translates (docs/benchmarks.md).
 void gdalTranslateCog(benchmark::State& state, const fs::path& input, const fs::path& output, double megapixels) {
-  const std::vector<std::string> arguments{
-      "-of", "COG", "-co", "BLOCKSIZE=512", "-co", "COMPRESS=DEFLATE", "-co", "OVERVIEWS=IGNORE_EXISTING",
-      "-co", "RESAMPLING=AVERAGE", "-co", "NUM_THREADS=ALL_CPUS", "-co", "BIGTIFF=IF_SAFER"};
+  const std::vector<std::string> arguments{"-of", "COG",
+                                           "-co", "BLOCKSIZE=512",
+                                           "-co", "COMPRESS=DEFLATE",
+                                           "-co", "OVERVIEWS=IGNORE_EXISTING",
+                                           "-co", "RESAMPLING=AVERAGE",
+                                           "-co", "NUM_THREADS=ALL_CPUS",
+                                           "-co", "BIGTIFF=IF_SAFER"};
   timeTiling(state, output, megapixels, [&] { gdalTranslate(input, output, arguments); });
 }
 
@@ -130,10 +135,9 @@ void runBenchmarks(const fs::path& scratch) {
   const fs::path input = given && *given ? fs::path(given) : makeInput(scratch);
   const double megapixels = megapixelsOf(input);
   std::printf("input: %s (%.1f megapixels)\n", input.c_str(), megapixels);
-  for (auto* benchmark : {
-           benchmark::RegisterBenchmark("strata_tile", strataTile, input, scratch / "strata.tif", megapixels),
-           benchmark::RegisterBenchmark("gdal_translate_cog", gdalTranslateCog, input, scratch / "gdal.tif",
-                                        megapixels)})
+  for (auto* benchmark :
+       {benchmark::RegisterBenchmark("strata_tile", strataTile, input, scratch / "strata.tif", megapixels),
+        benchmark::RegisterBenchmark("gdal_translate_cog", gdalTranslateCog, input, scratch / "gdal.tif", megapixels)})
     benchmark->UseRealTime()->Unit(benchmark::kSecond)->Iterations(kIterations);
   RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);

@@ -25,13 +25,13 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BenchOptions : PipelineOptions {
-  std::string path;     // default: paths/<pipeline name>.yaml beside the pipeline
-  int frames = 4800;    // the benchmark of [Kooima 2008, §5.1]: 4800 frames in and back out
-  int average = 10;     // ... averaged over 10 frames into 480 points
-  int laps = 1;         // the path flown this many times: a soak run
-  std::string output;   // default: out/bench/<pipeline name>.csv
-  std::string plot;     // default: the CSV's name with .svg
-  std::string compare;  // a second pipeline run on the same path
+  std::string path;        // default: paths/<pipeline name>.yaml beside the pipeline
+  int frames = 4800;       // the benchmark of [Kooima 2008, §5.1]: 4800 frames in and back out
+  int average = 10;        // ... averaged over 10 frames into 480 points
+  int laps = 1;            // the path flown this many times: a soak run
+  std::string output;      // default: out/bench/<pipeline name>.csv
+  std::string plot;        // default: the CSV's name with .svg
+  std::string compare;     // a second pipeline run on the same path
   bool overwrite = false;  // --overwrite: existing outputs may be replaced (never a file a pipeline reads)
 };
 
@@ -89,8 +89,7 @@ std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOp
     if ((frame + 1) % std::max(options.frames / 10, 1) == 0)
       std::fprintf(stderr, "strata: %s: frame %d of %d\n", pipeline.c_str(), frame + 1, options.frames);
   };
-  return benchAlongPath(engine, path, options.frames, options.laps, options.size.width, options.size.height,
-                        progress);
+  return benchAlongPath(engine, path, options.frames, options.laps, options.size.width, options.size.height, progress);
 }
 
 std::string summaryLine(const FrameTimeSummary& s) {

@@ -15,13 +15,13 @@ constexpr const char* kHeader =
 
 std::string row(const BenchFrame& f) {
   char text[512];
-  std::snprintf(text, sizeof text,
-                "%d,%.4f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%llu,%llu,%d,%d,%d,%llu,%llu,%llu,%llu,%d", f.frame,
-                f.seconds, f.altitude, f.frameMs, f.prepareMs, f.renderMs, f.visibilityMs, f.subdivisionMs,
-                f.rasterisationMs, f.patches, static_cast<unsigned long long>(f.vertices),
-                static_cast<unsigned long long>(f.triangles), f.pagesResident, f.pagesWanted, f.pageFaults,
-                static_cast<unsigned long long>(f.uploadedThisFrame), static_cast<unsigned long long>(f.pagesUploaded),
-                static_cast<unsigned long long>(f.gpuBytes), static_cast<unsigned long long>(f.processBytes), f.openFiles);
+  std::snprintf(
+      text, sizeof text, "%d,%.4f,%.1f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f,%d,%llu,%llu,%d,%d,%d,%llu,%llu,%llu,%llu,%d",
+      f.frame, f.seconds, f.altitude, f.frameMs, f.prepareMs, f.renderMs, f.visibilityMs, f.subdivisionMs,
+      f.rasterisationMs, f.patches, static_cast<unsigned long long>(f.vertices),
+      static_cast<unsigned long long>(f.triangles), f.pagesResident, f.pagesWanted, f.pageFaults,
+      static_cast<unsigned long long>(f.uploadedThisFrame), static_cast<unsigned long long>(f.pagesUploaded),
+      static_cast<unsigned long long>(f.gpuBytes), static_cast<unsigned long long>(f.processBytes), f.openFiles);
   return text;
 }
 

@@ -12,9 +12,9 @@ namespace strata::cli {
 namespace {
 
 constexpr double kWidth = 960, kHeight = 830;
-constexpr double kLeft = 80, kRight = 880;           // the panels' x extent
-constexpr double kTimeTop = 80, kTimeBottom = 380;   // frame time panel; legends and title above
-constexpr double kDataTop = 450, kDataBottom = 600;  // pages and vertices panel
+constexpr double kLeft = 80, kRight = 880;               // the panels' x extent
+constexpr double kTimeTop = 80, kTimeBottom = 380;       // frame time panel; legends and title above
+constexpr double kDataTop = 450, kDataBottom = 600;      // pages and vertices panel
 constexpr double kMemoryTop = 640, kMemoryBottom = 780;  // memory and open files panel
 constexpr const char* kRunColours[] = {"#000000", "#d62728"};
 constexpr const char* kPhaseColours[] = {"#1f77b4", "#2ca02c", "#ff7f0e"};
@@ -171,8 +171,8 @@ void writeBenchPlot(const std::filesystem::path& file, const std::vector<PlotRun
               "strata bench: " + std::to_string(runs.front().frames) + " frames, averaged over " +
                   std::to_string(averagedOver),
               "font-size=\"14\"")
-      << frameTimePanel(runs, frameTimeAxisTop(slowest)) << dataPanel(runs.front()) << memoryPanel(runs.front()) << frameAxis(runs.front().frames)
-      << "</svg>\n";
+      << frameTimePanel(runs, frameTimeAxisTop(slowest)) << dataPanel(runs.front()) << memoryPanel(runs.front())
+      << frameAxis(runs.front().frames) << "</svg>\n";
   if (!out)
     throw Error(SourceLocation{file.string()}, "cannot write the benchmark's plot", "give --plot a writable path");
 }

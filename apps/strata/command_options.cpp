@@ -14,9 +14,10 @@ std::string parseSize(const std::string& text, FrameSize& size) {
   const auto [afterWidth, widthError] = std::from_chars(text.data(), end, width);
   // Digits beyond a long long are out of range, not malformed: from_chars still steps over them.
   const bool separated = widthError != std::errc::invalid_argument && afterWidth != end && *afterWidth == 'x';
-  const auto [afterHeight, heightError] =
-      separated ? std::from_chars(afterWidth + 1, end, height) : std::from_chars_result{end, std::errc::invalid_argument};
-  if (heightError == std::errc::invalid_argument || afterHeight != end) return "size must be WIDTHxHEIGHT, e.g. 1920x1080";
+  const auto [afterHeight, heightError] = separated ? std::from_chars(afterWidth + 1, end, height)
+                                                    : std::from_chars_result{end, std::errc::invalid_argument};
+  if (heightError == std::errc::invalid_argument || afterHeight != end)
+    return "size must be WIDTHxHEIGHT, e.g. 1920x1080";
   constexpr long long kMost = 16384;
   if (widthError != std::errc() || heightError != std::errc() || width < 1 || height < 1 || width > kMost ||
       height > kMost)
@@ -26,16 +27,21 @@ std::string parseSize(const std::string& text, FrameSize& size) {
 }
 
 void addPipelineOptions(CLI::App& command, PipelineOptions& options) {
-  command.add_option("pipeline", options.pipeline, "the pipeline file (YAML)")->required();  // the loader reports a missing file
-  command.add_option("--set", options.overrides,
-                     "override a value of the pipeline: PATH=VALUE, e.g. camera.altitude=5000 or nodes.relief.scale=50")
+  command.add_option("pipeline", options.pipeline, "the pipeline file (YAML)")
+      ->required();  // the loader reports a missing file
+  command
+      .add_option("--set", options.overrides,
+                  "override a value of the pipeline: PATH=VALUE, e.g. camera.altitude=5000 or nodes.relief.scale=50")
       ->allow_extra_args(false)
       ->take_all();
-  command.add_option_function<std::string>(
-             "--size", [&options](const std::string& text) {
-               if (auto problem = parseSize(text, options.size); !problem.empty()) throw CLI::ValidationError("--size", problem);
-             },
-             "frame size WIDTHxHEIGHT (default 1280x720)")
+  command
+      .add_option_function<std::string>(
+          "--size",
+          [&options](const std::string& text) {
+            if (auto problem = parseSize(text, options.size); !problem.empty())
+              throw CLI::ValidationError("--size", problem);
+          },
+          "frame size WIDTHxHEIGHT (default 1280x720)")
       ->type_name("WxH");
   command.add_flag("--gl-debug", options.glDebug, "log every OpenGL debug message, not only errors");
 }

@@ -9,7 +9,7 @@ namespace strata::cli {
 
 // A frame size given as WIDTHxHEIGHT.
 struct FrameSize {
-  int width = 1280;   // 720p: the default the issue asks for, and quick on a CPU renderer
+  int width = 1280;  // 720p: the default the issue asks for, and quick on a CPU renderer
   int height = 720;
 };
 

@@ -48,7 +48,9 @@ void describe(const NodeTypeDeclaration& type) {
   std::printf("\nparameters:\n");
   if (type.parameters.empty()) std::printf("  (none)\n");
   for (const ParameterDeclaration& p : type.parameters) {
-    std::string value = p.defaultValue ? "default " + formatValue(*p.defaultValue) : p.optional ? "optional" : "required";
+    std::string value = p.defaultValue ? "default " + formatValue(*p.defaultValue)
+                        : p.optional   ? "optional"
+                                       : "required";
     std::printf("  %-16s %-9s %-14s %-16s %-4s %s%s\n", p.name.c_str(), toString(p.type), value.c_str(),
                 range(p).c_str(), p.units.c_str(), p.live ? "(live) " : "", p.doc.c_str());
   }
@@ -67,8 +69,9 @@ void addPluginsCommand(CLI::App& app, int& exitCode) {
       registry.loadDirectories(defaultPluginDirectories());
       if (typeName->empty()) return list(registry);
       const NodeTypeDeclaration* type = registry.find(*typeName);
-      if (!type) throw Error({"strata plugins"}, "no node type '" + *typeName + "' is registered",
-                             "run `strata plugins` to list the types, or add a plugin directory to STRATA_PLUGIN_PATH");
+      if (!type)
+        throw Error({"strata plugins"}, "no node type '" + *typeName + "' is registered",
+                    "run `strata plugins` to list the types, or add a plugin directory to STRATA_PLUGIN_PATH");
       describe(*type);
     });
   });

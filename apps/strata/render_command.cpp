@@ -23,9 +23,9 @@ namespace {
 struct RenderOptions : PipelineOptions {
   std::string output;  // default: out/<pipeline name>.png, or out/<pipeline name>_%04d.png for a sequence
   bool stats = false;
-  std::string dates;   // --dates FIRST/LAST: a sweep through the scene's date
-  std::string path;    // --path FILE: a flight along a camera path
-  int frames = 0;      // of a sweep or a flight; 0: not given
+  std::string dates;       // --dates FIRST/LAST: a sweep through the scene's date
+  std::string path;        // --path FILE: a flight along a camera path
+  int frames = 0;          // of a sweep or a flight; 0: not given
   bool overwrite = false;  // --overwrite: existing outputs may be replaced (never the pipeline's own files)
 };
 
@@ -34,15 +34,16 @@ void printStatistics(const Engine& engine) {
   const FrameStatistics& frame = engine.statistics();
   const GeometryStatistics geometry = engine.geometryStatistics();
   const PageCacheStatistics& pages = engine.pageCacheStatistics();
-  std::printf("strata: last of %llu frames: %d patches, %llu vertices, %llu triangles\n"
-              "  geometry: visibility %.2f ms (CPU), subdivision %.2f ms, rasterisation %.2f ms (GPU)\n"
-              "  frame: prepare %.2f ms, render %.2f ms (CPU, to submit)\n"
-              "  page cache: %d of %d slots in use (%d pinned), %llu uploaded, %llu evicted, %llu unreadable\n",
-              static_cast<unsigned long long>(frame.frame), geometry.patches,
-              static_cast<unsigned long long>(geometry.vertices), static_cast<unsigned long long>(geometry.triangles),
-              geometry.visibilityMs, geometry.subdivisionMs, geometry.rasterisationMs, frame.prepareMs, frame.renderMs,
-              pages.resident, pages.capacity, pages.pinned, static_cast<unsigned long long>(pages.uploaded),
-              static_cast<unsigned long long>(pages.evicted), static_cast<unsigned long long>(pages.failed));
+  std::printf(
+      "strata: last of %llu frames: %d patches, %llu vertices, %llu triangles\n"
+      "  geometry: visibility %.2f ms (CPU), subdivision %.2f ms, rasterisation %.2f ms (GPU)\n"
+      "  frame: prepare %.2f ms, render %.2f ms (CPU, to submit)\n"
+      "  page cache: %d of %d slots in use (%d pinned), %llu uploaded, %llu evicted, %llu unreadable\n",
+      static_cast<unsigned long long>(frame.frame), geometry.patches,
+      static_cast<unsigned long long>(geometry.vertices), static_cast<unsigned long long>(geometry.triangles),
+      geometry.visibilityMs, geometry.subdivisionMs, geometry.rasterisationMs, frame.prepareMs, frame.renderMs,
+      pages.resident, pages.capacity, pages.pinned, static_cast<unsigned long long>(pages.uploaded),
+      static_cast<unsigned long long>(pages.evicted), static_cast<unsigned long long>(pages.failed));
 }
 
 std::string outputOf(const RenderOptions& options, const char* suffix) {
@@ -102,8 +103,10 @@ void renderFlight(Engine& engine, const RenderOptions& options, const std::files
   for (int frame = 0; frame < frames.count; ++frame) {
     engine.camera() = path.atFraction(frames.fractionOf(frame));
     const FrameOutput& output = engine.renderSettled(options.size.width, options.size.height);
-    if (ffmpeg.empty()) writeFrame(output, frameFileName(pattern, frame), files);
-    else output.write(frameFileName(pattern, frame));
+    if (ffmpeg.empty())
+      writeFrame(output, frameFileName(pattern, frame), files);
+    else
+      output.write(frameFileName(pattern, frame));
   }
   std::printf("strata: wrote %d frames %s along %s (%.1f s)", frames.count,
               ffmpeg.empty() ? pattern.c_str() : "for the video", options.path.c_str(), frames.duration);
@@ -143,8 +146,7 @@ void render(const RenderOptions& options) {
   const bool video = flying && isVideoFile(options.output);
   const std::filesystem::path ffmpeg = video ? requireFfmpeg() : std::filesystem::path{};
   const int flightFrames = flying ? pathFrames(readCameraPath(options.path, Body{}), options.frames).count : 0;
-  const std::vector<std::filesystem::path> targets =
-      targetsOf(options, sweeping ? sweep.frames : flightFrames, video);
+  const std::vector<std::filesystem::path> targets = targetsOf(options, sweeping ? sweep.frames : flightFrames, video);
   if (!video) imageFormatOf(targets.front());  // every frame of a sequence has the pattern's extension
   OutputFiles files(targets, readFiles(options), SourceLocation{"-o"});
   auto context = createHeadlessContext(options.glDebug);
@@ -178,13 +180,15 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                       "sequence, a pattern such as out/f_%04d.png, or for --path a video (.mp4, .webm)");
   command->add_flag("--overwrite", options->overwrite,
                     "replace outputs that exist (never a file the pipeline reads, nor one reached through a link)");
-  command->add_option("--dates", options->dates,
-                      "render a sequence through the scene's date: FIRST/LAST, e.g. 2004-01-01/2004-12-31, with --frames "
-                      "and -o naming each frame's file with a field such as %04d")
+  command
+      ->add_option("--dates", options->dates,
+                   "render a sequence through the scene's date: FIRST/LAST, e.g. 2004-01-01/2004-12-31, with --frames "
+                   "and -o naming each frame's file with a field such as %04d")
       ->type_name("FIRST/LAST");
-  command->add_option("--path", options->path,
-                      "render a flight along a camera path file (docs/camera-paths.md), with -o naming each frame's "
-                      "file with a field such as %05d, or a video (.mp4, .webm) when ffmpeg is installed")
+  command
+      ->add_option("--path", options->path,
+                   "render a flight along a camera path file (docs/camera-paths.md), with -o naming each frame's "
+                   "file with a field such as %05d, or a video (.mp4, .webm) when ffmpeg is installed")
       ->type_name("FILE")
       ->excludes("--dates");
   command->add_option("--frames", options->frames,

@@ -68,14 +68,14 @@ void encodeVideo(const std::filesystem::path& ffmpeg, const std::string& pattern
                  const std::filesystem::path& video) {
   // yuv420p: the chroma format every player decodes, which halves the chroma's resolution, so an odd width or
   // height is padded by a pixel; -y: `video` is in a fresh scratch folder, where nothing of the user's is.
-  const int status = runProgram({ffmpeg.string(), "-y", "-loglevel", "error", "-framerate",
-                                 std::to_string(framesPerSecond), "-i", pattern, "-vf",
-                                 "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", video.string()});
+  const int status =
+      runProgram({ffmpeg.string(), "-y", "-loglevel", "error", "-framerate", std::to_string(framesPerSecond), "-i",
+                  pattern, "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2", "-pix_fmt", "yuv420p", video.string()});
   if (status != 0)
-    throw Error(SourceLocation{"-o"}, "ffmpeg could not encode " + video.string() + " (exit status " +
-                                          std::to_string(status) + ")",
-                "read ffmpeg's message above; the frames are kept in " +
-                    std::filesystem::path(pattern).parent_path().string());
+    throw Error(
+        SourceLocation{"-o"},
+        "ffmpeg could not encode " + video.string() + " (exit status " + std::to_string(status) + ")",
+        "read ffmpeg's message above; the frames are kept in " + std::filesystem::path(pattern).parent_path().string());
 }
 
 }  // namespace strata::cli

@@ -55,32 +55,47 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "composite.chroma_fusion";
   type.category = NodeCategory::Compositor;
-  type.summary = "Fuses a high-resolution luminance layer with a low-resolution colour layer: chroma from the one, "
-                 "luminance from the other, in CIE L*a*b* or Y'CbCr";
-  type.inputs = {{.name = "luminance", .type = PortType::Layer, .kinds = {LayerKind::Luminance, LayerKind::Color},
+  type.summary =
+      "Fuses a high-resolution luminance layer with a low-resolution colour layer: chroma from the one, "
+      "luminance from the other, in CIE L*a*b* or Y'CbCr";
+  type.inputs = {{.name = "luminance",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Luminance, LayerKind::Color},
                   .doc = "the high-resolution layer whose luminance the result takes: a luminance layer (its value, "
                          "scene-linear relative luminance) or a colour layer (its Rec. 709 luminance)"},
-                 {.name = "colour", .type = PortType::Layer, .kinds = {LayerKind::Color},
+                 {.name = "colour",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Color},
                   .doc = "the low-resolution colour layer whose chroma the result takes"}};
   type.output = PortType::Layer;
   // Every parameter is a uniform: the space, the strength and the matching change the next frame.
   type.parameters = {
       // lab: its lightness depends on luminance alone, so a panchromatic measurement sets it exactly, and its
       // chroma is perceptually even
-      {.name = "space", .type = ParameterType::Choice, .defaultValue = std::string("lab"),
+      {.name = "space",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("lab"),
        .doc = "the opponent space whose chroma is kept: lab (CIE L*a*b*, D65) or ycbcr (BT.709 Y'CbCr of the "
               "sRGB-encoded values, as image files hold it)",
-       .choices = {"lab", "ycbcr"}, .live = true},
+       .choices = {"lab", "ycbcr"},
+       .live = true},
       // 1: the fusion the node is for; lower it to fade the luminance's detail in and out
-      {.name = "strength", .type = ParameterType::Real, .defaultValue = 1.0, .minimum = 0.0, .maximum = 1.0,
+      {.name = "strength",
+       .type = ParameterType::Real,
+       .defaultValue = 1.0,
+       .minimum = 0.0,
+       .maximum = 1.0,
        .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion",
        .live = true},
       // detail: two data sets seldom agree in absolute brightness (sensor, exposure, illumination), and the
       // colour's own brightness is what keeps its hue
-      {.name = "matching", .type = ParameterType::Choice, .defaultValue = std::string("detail"),
+      {.name = "matching",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("detail"),
        .doc = "detail: the colour layer's luminance times the luminance layer's ratio to its own low-pass at "
               "the colour layer's resolution; none: the luminance layer's luminance as it is",
-       .choices = {"detail", "none"}, .live = true},
+       .choices = {"detail", "none"},
+       .live = true},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<ChromaFusion>(setup); };
   return type;

@@ -12,9 +12,14 @@ ChromaFusionLayer::ChromaFusionLayer(const std::string& nodeId, const Layer& lum
 // colour layer's luminance (Rec. 709 weights, its primaries being the composition's).
 std::string ChromaFusionLayer::panLuminance() const {
   const std::string value = luminance_.kind() == LayerKind::Color ? "dot(pan.rgb, REC709_LUMINANCE)" : "pan.r";
-  return "vec2 " + prefix_ + "_pan(SurfacePoint p) {\n"
-         "  vec4 pan = " + luminance_.samplingFunction() + "(p);\n"
-         "  return vec2(" + value + ", pan.a);\n"
+  return "vec2 " + prefix_ +
+         "_pan(SurfacePoint p) {\n"
+         "  vec4 pan = " +
+         luminance_.samplingFunction() +
+         "(p);\n"
+         "  return vec2(" +
+         value +
+         ", pan.a);\n"
          "}\n";
 }
 
@@ -24,8 +29,11 @@ std::string ChromaFusionLayer::panLuminance() const {
 std::string ChromaFusionLayer::panLowpass() const {
   const std::string steps = colour_.texelStepsFunction();
   const std::string scale = steps.empty() ? "1.0" : "colourTexelScale(" + steps + "(p))";
-  return "float " + prefix_ + "_lowpass(SurfacePoint p) {\n"
-         "  return " + prefix_ + "_pan(widenedFootprint(p, " + scale + ")).x;\n"
+  return "float " + prefix_ +
+         "_lowpass(SurfacePoint p) {\n"
+         "  return " +
+         prefix_ + "_pan(widenedFootprint(p, " + scale +
+         ")).x;\n"
          "}\n";
 }
 
@@ -33,16 +41,29 @@ std::string ChromaFusionLayer::panLowpass() const {
 // `strength` of the luminance's coverage; where the luminance has none, the colour alone.
 std::string ChromaFusionLayer::fused() const {
   const std::string& p = prefix_;
-  return "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec4 colour = " + colour_.samplingFunction() + "(p);\n"
-         "  vec2 pan = " + p + "_pan(p);\n"
+  return "vec4 " + p +
+         "(SurfacePoint p) {\n"
+         "  vec4 colour = " +
+         colour_.samplingFunction() +
+         "(p);\n"
+         "  vec2 pan = " +
+         p +
+         "_pan(p);\n"
          "  if (pan.y <= 0.0) return colour;\n"
-         "  vec4 grey = vec4(vec3(max(pan.x, 0.0)), pan.y * " + p + "_strength);\n"
+         "  vec4 grey = vec4(vec3(max(pan.x, 0.0)), pan.y * " +
+         p +
+         "_strength);\n"
          "  if (colour.a <= 0.0) return grey.a > 0.0 ? grey : vec4(0.0);\n"
          "  float own = dot(colour.rgb, REC709_LUMINANCE);\n"
-         "  float lowpass = " + p + "_matching == 1 ? " + p + "_lowpass(p) : pan.x;\n"
-         "  float target = fusedLuminance(own, pan.x, lowpass, " + p + "_matching);\n"
-         "  vec3 fused = chromaFusion(colour.rgb, target, " + p + "_strength * pan.y, " + p + "_space);\n"
+         "  float lowpass = " +
+         p + "_matching == 1 ? " + p +
+         "_lowpass(p) : pan.x;\n"
+         "  float target = fusedLuminance(own, pan.x, lowpass, " +
+         p +
+         "_matching);\n"
+         "  vec3 fused = chromaFusion(colour.rgb, target, " +
+         p + "_strength * pan.y, " + p +
+         "_space);\n"
          "  return overlayOver(grey, vec4(fused, 1.0), colour.a);\n"
          "}\n";
 }
@@ -51,10 +72,14 @@ std::string ChromaFusionLayer::glsl() const {
   const std::string& p = prefix_;
   return luminance_.glslOnce() + colour_.glslOnce() +
          "#include \"composite/chroma_fusion.glsl\"\n"
-         "uniform int " + p + "_space;\n"
-         "uniform float " + p + "_strength;\n"
-         "uniform int " + p + "_matching;\n" +
-         panLuminance() + panLowpass() + fused();
+         "uniform int " +
+         p +
+         "_space;\n"
+         "uniform float " +
+         p +
+         "_strength;\n"
+         "uniform int " +
+         p + "_matching;\n" + panLuminance() + panLowpass() + fused();
 }
 
 void ChromaFusionLayer::bind(ShaderProgram& program, TextureUnits& units) const {

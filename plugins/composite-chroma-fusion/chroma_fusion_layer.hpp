@@ -16,7 +16,7 @@ namespace strata::composite {
 // none the colour alone. Space, strength and matching are uniforms: changing them rebuilds no program.
 class ChromaFusionLayer : public Layer {
  public:
-  enum class Space { Lab, YCbCr };      // the order opponent_spaces.glsl numbers them
+  enum class Space { Lab, YCbCr };       // the order opponent_spaces.glsl numbers them
   enum class Matching { None, Detail };  // the order chroma_fusion.glsl's fusedLuminance numbers them
 
   struct Fusion {

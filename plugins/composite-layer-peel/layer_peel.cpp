@@ -64,18 +64,30 @@ NodeTypeDeclaration layerPeelDeclaration() {
   type.type = "composite.layer_peel";
   type.category = NodeCategory::Compositor;
   type.summary = "A stack of height layers as one, its upper layers peeled away by a depth within a cutaway";
-  type.inputs = {{.name = "layers", .type = PortType::Layer, .kinds = {LayerKind::Height}, .list = true,
+  type.inputs = {{.name = "layers",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Height},
+                  .list = true,
                   .doc = "the stack's height layers, top first (ice surface, bedrock); the last is the floor"}};
   type.output = PortType::Layer;
   // Every parameter is a uniform: the peel and the cutaway change the next frame.
   type.parameters = {
       // 1: the top layer taken away, which shows the next one: what a stack of two is peeled for
-      {.name = "peel", .type = ParameterType::Integer, .defaultValue = std::int64_t(1), .minimum = 0.0,
-       .maximum = 15.0, .doc = "how many of the upper layers the cut takes away (at most all but the floor)",
+      {.name = "peel",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(1),
+       .minimum = 0.0,
+       .maximum = 15.0,
+       .doc = "how many of the upper layers the cut takes away (at most all but the floor)",
        .live = true},
       // 0: the surface the peel exposes, as its data have it
-      {.name = "depth", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e6,
-       .units = "m", .doc = "how far the cut goes below the surface the peel exposes, never below the floor",
+      {.name = "depth",
+       .type = ParameterType::Real,
+       .defaultValue = 0.0,
+       .minimum = 0.0,
+       .maximum = 1.0e6,
+       .units = "m",
+       .doc = "how far the cut goes below the surface the peel exposes, never below the floor",
        .live = true},
   };
   for (ParameterDeclaration& parameter : Cutaway::parameters()) type.parameters.push_back(std::move(parameter));

@@ -60,19 +60,27 @@ NodeTypeDeclaration peeledSurfaceDeclaration() {
   type.type = "composite.peeled_surface";
   type.category = NodeCategory::Compositor;
   type.summary = "The colours of what a composite.layer_peel shows: each layer's surface, and its cut faces";
-  type.inputs = {{.name = "peel", .type = PortType::Layer, .kinds = {LayerKind::Height},
+  type.inputs = {{.name = "peel",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Height},
                   .doc = "the composite.layer_peel whose surface to colour"},
-                 {.name = "surfaces", .type = PortType::Layer, .kinds = {LayerKind::Color}, .list = true,
+                 {.name = "surfaces",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Color},
+                  .list = true,
                   .doc = "one colour layer per layer of the stack, top first: what its surface shows"}};
   type.output = PortType::Layer;
   // A uniform: the faces' colours change the next frame.
   type.parameters = {
       // ice blue, rock brown, sediment ochre, basement grey: apart at a glance, for stacks of up to four
-      {.name = "faces", .type = ParameterType::RealList,
+      {.name = "faces",
+       .type = ParameterType::RealList,
        .defaultValue = std::vector<double>{0.7, 0.85, 1.0, 0.55, 0.4, 0.3, 0.8, 0.65, 0.35, 0.5, 0.5, 0.5},
-       .minimum = 0.0, .maximum = 1.0,
+       .minimum = 0.0,
+       .maximum = 1.0,
        .doc = "the colour of each layer's cut faces, where the cut runs through its material: red, green, blue "
-              "(sRGB, 0 to 1) per layer, top first", .live = true},
+              "(sRGB, 0 to 1) per layer, top first",
+       .live = true},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<PeeledSurface>(setup); };
   return type;

@@ -12,9 +12,12 @@ constexpr const char* kThinnest = "0.05";
 
 }  // namespace
 
-PeeledSurfaceLayer::PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel, std::vector<const Layer*> surfaces,
-                                       std::vector<double> faces)
-    : prefix_("layer_" + glslIdentifier(nodeId)), peel_(peel), surfaces_(std::move(surfaces)), faces_(std::move(faces)) {
+PeeledSurfaceLayer::PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel,
+                                       std::vector<const Layer*> surfaces, std::vector<double> faces)
+    : prefix_("layer_" + glslIdentifier(nodeId)),
+      peel_(peel),
+      surfaces_(std::move(surfaces)),
+      faces_(std::move(faces)) {
   for (const Layer* surface : surfaces_)
     if (std::find(distinct_.begin(), distinct_.end(), surface) == distinct_.end()) distinct_.push_back(surface);
 }
@@ -24,12 +27,21 @@ PeeledSurfaceLayer::PeeledSurfaceLayer(const std::string& nodeId, const PeelLaye
 // surface where nothing above it is left.
 std::string PeeledSurfaceLayer::exposed() const {
   const std::string n = std::to_string(peel_.stackSize());
-  return "int " + prefix_ + "_exposed(float h[" + n + "], float shown) {\n"
-         "  for (int i = 0; i + 1 < " + n + "; ++i) {\n"
-         "    if (abs(shown - h[i]) <= " + kThinnest + " && h[i] - h[i + 1] > " + kThinnest + ") return i;\n"
-         "    if (shown > h[i + 1] + " + kThinnest + ") return -1 - i;\n"
+  return "int " + prefix_ + "_exposed(float h[" + n +
+         "], float shown) {\n"
+         "  for (int i = 0; i + 1 < " +
+         n +
+         "; ++i) {\n"
+         "    if (abs(shown - h[i]) <= " +
+         kThinnest + " && h[i] - h[i + 1] > " + kThinnest +
+         ") return i;\n"
+         "    if (shown > h[i + 1] + " +
+         kThinnest +
+         ") return -1 - i;\n"
          "  }\n"
-         "  return " + std::to_string(peel_.stackSize() - 1) + ";\n"
+         "  return " +
+         std::to_string(peel_.stackSize() - 1) +
+         ";\n"
          "}\n";
 }
 
@@ -46,13 +58,21 @@ std::string PeeledSurfaceLayer::glsl() const {
   const std::string n = std::to_string(peel_.stackSize());
   std::string code = peel_.glslOnce();
   for (const Layer* surface : distinct_) code += surface->glslOnce();
-  return code + "uniform vec3 " + p + "_faces[" + n + "];\n" + exposed() + surfaceColour() +
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  float h[" + n + "];\n"
-         "  float covered = " + peel_.stackFunction() + "(p, h);\n"
+  return code + "uniform vec3 " + p + "_faces[" + n + "];\n" + exposed() + surfaceColour() + "vec4 " + p +
+         "(SurfacePoint p) {\n"
+         "  float h[" +
+         n +
+         "];\n"
+         "  float covered = " +
+         peel_.stackFunction() +
+         "(p, h);\n"
          "  if (covered <= 0.0) return vec4(0.0);\n"
-         "  int layer = " + p + "_exposed(h, " + peel_.shownFunction() + "(p, h));\n"
-         "  return layer < 0 ? vec4(" + p + "_faces[-1 - layer], covered) : " + p + "_surface(p, layer);\n"
+         "  int layer = " +
+         p + "_exposed(h, " + peel_.shownFunction() +
+         "(p, h));\n"
+         "  return layer < 0 ? vec4(" +
+         p + "_faces[-1 - layer], covered) : " + p +
+         "_surface(p, layer);\n"
          "}\n";
 }
 

@@ -15,8 +15,8 @@ namespace strata::composite {
 // of a cutaway's `edge`), that layer's cut-face colour, so the walls show the stack's strata in section.
 class PeeledSurfaceLayer : public Layer {
  public:
-  // `surfaces`: one colour layer per layer of `peel`'s stack, top first (one may serve several); `faces`: its cut faces' colours,
-  // sRGB-encoded in [0, 1], three numbers per layer, top first.
+  // `surfaces`: one colour layer per layer of `peel`'s stack, top first (one may serve several); `faces`: its cut
+  // faces' colours, sRGB-encoded in [0, 1], three numbers per layer, top first.
   PeeledSurfaceLayer(const std::string& nodeId, const PeelLayer& peel, std::vector<const Layer*> surfaces,
                      std::vector<double> faces);
 

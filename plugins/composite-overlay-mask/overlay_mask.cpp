@@ -28,8 +28,9 @@ const Layer& overlayOf(const NodeSetup& setup) {
   refuseRepeatedInputs(setup);
   const Layer &base = *setup.input("base")->layer(), &overlay = *setup.input("overlay")->layer();
   if (base.kind() != overlay.kind())
-    throw Error(setup.where, "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
-                                 toString(base.kind()) + " layer",
+    throw Error(setup.where,
+                "the overlay is a " + std::string(toString(overlay.kind())) + " layer, the base a " +
+                    toString(base.kind()) + " layer",
                 "lay heights over heights, colours over colours");
   return overlay;
 }
@@ -41,8 +42,8 @@ const Layer* maskOf(const NodeSetup& setup) {
 }
 
 OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
-  const OverlayMaskLayer::Edge edge{setup.parameters.real("feather"), setup.parameters.string("feather_units") == "metres",
-                                    setup.body->radius};
+  const OverlayMaskLayer::Edge edge{setup.parameters.real("feather"),
+                                    setup.parameters.string("feather_units") == "metres", setup.body->radius};
   if (edge.feather > 0.0 && overlay.texelStepsFunction().empty())
     throw Error(setup.parameters.where("feather"), "the overlay has no texels to feather its edge over",
                 "give a raster overlay (source.gdal), or feather: 0 for a hard edge");
@@ -68,16 +69,25 @@ NodeTypeDeclaration declaration() {
   type.summary =
       "Lays a local layer over a base layer where it has data (and a mask allows), with a hard or feathered edge";
   type.inputs = {{.name = "base", .type = PortType::Layer, .doc = "the layer beneath, of any resolution"},
-                 {.name = "overlay", .type = PortType::Layer,
+                 {.name = "overlay",
+                  .type = PortType::Layer,
                   .doc = "the local layer on top, of the same kind: where it has data (its extent, nodata, alpha)"},
-                 {.name = "mask", .type = PortType::Layer, .optional = true,
+                 {.name = "mask",
+                  .type = PortType::Layer,
+                  .optional = true,
                   .doc = "where the overlay may show: a layer whose value (0 to 1, e.g. source.gdal kind: mask, from a "
                          "raster or a vector file's polygons) times its coverage multiplies the overlay's"}};
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "feather", .type = ParameterType::Real, .defaultValue = 0.0, .minimum = 0.0, .maximum = 1.0e7,
+      {.name = "feather",
+       .type = ParameterType::Real,
+       .defaultValue = 0.0,
+       .minimum = 0.0,
+       .maximum = 1.0e7,
        .doc = "width over which the overlay fades in from its edge, in feather_units; 0: a hard edge"},
-      {.name = "feather_units", .type = ParameterType::Choice, .defaultValue = std::string("texels"),
+      {.name = "feather_units",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("texels"),
        .doc = "texels: the overlay's own, so the fade follows its resolution; metres: along the ground",
        .choices = {"texels", "metres"}},
   };

@@ -27,14 +27,24 @@ std::string OverlayMaskLayer::coverage() const {
 std::string OverlayMaskLayer::edgeWeight() const {
   const std::string& p = prefix_;
   if (edge_.feather <= 0.0) return "float " + p + "_weight(SurfacePoint p, float coverage) { return coverage; }\n";
-  const std::string width = edge_.metres ? p + "_feather / footprintMetres(p, " + p + "_radius) * texels" : p + "_feather";
-  return "float " + p + "_weight(SurfacePoint p, float coverage) {\n"
-         "  vec4 steps = " + overlay_.texelStepsFunction() + "(p);\n"
+  const std::string width =
+      edge_.metres ? p + "_feather / footprintMetres(p, " + p + "_radius) * texels" : p + "_feather";
+  return "float " + p +
+         "_weight(SurfacePoint p, float coverage) {\n"
+         "  vec4 steps = " +
+         overlay_.texelStepsFunction() +
+         "(p);\n"
          "  float texels = max(max(length(steps.xy), length(steps.zw)), 1e-6);  // overlay texels a sample\n"
-         "  float width = " + width + ";\n"
+         "  float width = " +
+         width +
+         ";\n"
          "  SurfacePoint wide = widenedFootprint(p, max(0.5 * width / texels, 1.0));\n"
-         "  float averaged = " + p + "_coverage(wide, " + overlay_.samplingFunction() + "(wide));\n"
-         "  float fromExtent = clamp(" + overlay_.edgeDistanceFunction() + "(p) / (0.5 * width), 0.0, 1.0);\n"
+         "  float averaged = " +
+         p + "_coverage(wide, " + overlay_.samplingFunction() +
+         "(wide));\n"
+         "  float fromExtent = clamp(" +
+         overlay_.edgeDistanceFunction() +
+         "(p) / (0.5 * width), 0.0, 1.0);\n"
          "  return min(featheredWeight(averaged), fromExtent);\n"
          "}\n";
 }
@@ -43,16 +53,26 @@ std::string OverlayMaskLayer::glsl() const {
   const std::string& p = prefix_;
   return base_.glslOnce() + overlay_.glslOnce() + (mask_ ? mask_->glslOnce() : std::string()) +
          "#include \"composite/overlay_mask.glsl\"\n"
-         "uniform float " + p + "_feather;\n"
-         "uniform float " + p + "_radius;\n" +
-         coverage() + edgeWeight() +
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec4 base = " + base_.samplingFunction() + "(p);\n"
-         "  vec4 over = " + overlay_.samplingFunction() + "(p);\n"
+         "uniform float " +
+         p +
+         "_feather;\n"
+         "uniform float " +
+         p + "_radius;\n" + coverage() + edgeWeight() + "vec4 " + p +
+         "(SurfacePoint p) {\n"
+         "  vec4 base = " +
+         base_.samplingFunction() +
+         "(p);\n"
+         "  vec4 over = " +
+         overlay_.samplingFunction() +
+         "(p);\n"
          "  if (over.a <= 0.0) return base;  // outside the overlay: no more work\n"
-         "  float coverage = " + p + "_coverage(p, over);\n"
+         "  float coverage = " +
+         p +
+         "_coverage(p, over);\n"
          "  if (coverage <= 0.0) return base;  // masked away\n"
-         "  return overlayOver(base, over, " + p + "_weight(p, coverage));\n"
+         "  return overlayOver(base, over, " +
+         p +
+         "_weight(p, coverage));\n"
          "}\n";
 }
 

@@ -40,13 +40,15 @@ ProjectionQualityLayer::Weighting weightingOf(const ParameterSet& parameters) {
 void requireAspects(const std::vector<const Layer*>& layers, const SourceLocation& where) {
   for (std::size_t i = 0; i < layers.size(); ++i)
     if (layers[i]->aspect() == ProjectionAspect::Other)
-      throw Error(where,
-                  "method: latitude weighs each layer by the region its projection samples best, but layer " +
-                      std::to_string(i + 1) + " of its `layers` is in no projection that samples the equator or a "
-                      "pole best (it is procedural or composed, HEALPix, or an oblique or transverse aspect)",
-                  "use method: isotropy, which weighs layers of any projection by the shape of their texels; or "
-                  "give only longitude/latitude maps and polar caps (polar stereographic, or orthographic or perspective "
-                  "centred on a pole)");
+      throw Error(
+          where,
+          "method: latitude weighs each layer by the region its projection samples best, but layer " +
+              std::to_string(i + 1) +
+              " of its `layers` is in no projection that samples the equator or a "
+              "pole best (it is procedural or composed, HEALPix, or an oblique or transverse aspect)",
+          "use method: isotropy, which weighs layers of any projection by the shape of their texels; or "
+          "give only longitude/latitude maps and polar caps (polar stereographic, or orthographic or perspective "
+          "centred on a pole)");
 }
 
 class ProjectionQuality : public Node {
@@ -77,29 +79,43 @@ NodeTypeDeclaration declaration() {
   type.type = "composite.projection_quality";
   type.category = NodeCategory::Compositor;
   type.summary = "Blends layers of one kind by how well each is sampled where it lands (isotropy, or latitude)";
-  type.inputs = {{.name = "layers", .type = PortType::Layer, .list = true,
+  type.inputs = {{.name = "layers",
+                  .type = PortType::Layer,
+                  .list = true,
                   .doc = "layers of one kind in any projections: a global map and polar caps, strips, insets"}};
   type.output = PortType::Layer;
   // Isotropy by default: it weighs layers of any projection, procedural ones included
   // ([Kooima 2008, §4.1.2] calls it the general method); latitude needs every layer to be a cylindrical map
   // or a polar cap.
   type.parameters = {
-      {.name = "method", .type = ParameterType::Choice, .defaultValue = std::string("isotropy"),
+      {.name = "method",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("isotropy"),
        .doc = "isotropy: by the shape of each layer's texels where they land (thesis method 2); latitude: a "
               "longitude/latitude map fades into polar caps across `band` (method 1, its cubic falloff)",
        .choices = {"isotropy", "latitude"}},
-      {.name = "quality", .type = ParameterType::Real, .defaultValue = 4.0, .minimum = 1.01, .maximum = 1000.0,
+      {.name = "quality",
+       .type = ParameterType::Real,
+       .defaultValue = 4.0,
+       .minimum = 1.01,
+       .maximum = 1000.0,
        .doc = "isotropy method: n of the weight 1 - |log k / log n|: texels n times longer than wide count nothing "
               "(4: the thesis finds 2 extremely aggressive, and larger n gentler on slopes seen edge on)"},
-      {.name = "resolution", .type = ParameterType::Boolean, .defaultValue = true,
+      {.name = "resolution",
+       .type = ParameterType::Boolean,
+       .defaultValue = true,
        .doc = "isotropy method: weigh by texels a pixel as well (up to one), so that the sharper of two "
               "well-shaped layers wins; the latitude method's weights depend on the place alone, not the view"},
       // 50 to 70: a longitude/latitude map's texels are 1.6 times wider than tall at 50 degrees and 2.9 times at
       // 70 (1 / cos), while a polar stereographic cap's are square everywhere and, true to scale at its pole,
       // at most 13% larger at 50 degrees. [Kooima 2008, §4.1.2] gives its method 1 no formula and no band
       // (docs/references.md, Errata).
-      {.name = "band", .type = ParameterType::RealList, .defaultValue = std::vector<double>{50.0, 70.0},
-       .minimum = 0.0, .maximum = 90.0, .units = "deg",
+      {.name = "band",
+       .type = ParameterType::RealList,
+       .defaultValue = std::vector<double>{50.0, 70.0},
+       .minimum = 0.0,
+       .maximum = 90.0,
+       .units = "deg",
        .doc = "latitude method: the |latitude| where the map starts to fade (inner) and is gone (outer), the polar "
               "caps fading in across it as their complement",
        .count = 2},

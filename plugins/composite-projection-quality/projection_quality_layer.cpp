@@ -46,11 +46,21 @@ std::string ProjectionQualityLayer::glsl() const {
   for (const Layer* input : inputs_) code += input->glslOnce();
   return code +
          "#include \"composite/projection_quality.glsl\"\n"
-         "uniform bool " + prefix_ + "_latitude;\n"
-         "uniform float " + prefix_ + "_quality;\n"
-         "uniform bool " + prefix_ + "_resolution;\n"
-         "uniform vec2 " + prefix_ + "_band;\n"
-         "vec4 " + prefix_ + "(SurfacePoint p) {\n"
+         "uniform bool " +
+         prefix_ +
+         "_latitude;\n"
+         "uniform float " +
+         prefix_ +
+         "_quality;\n"
+         "uniform bool " +
+         prefix_ +
+         "_resolution;\n"
+         "uniform vec2 " +
+         prefix_ +
+         "_band;\n"
+         "vec4 " +
+         prefix_ +
+         "(SurfacePoint p) {\n"
          "  vec4 sum = vec4(0.0);\n"
          "  float coverage = 0.0;\n" +
          accumulation() +

@@ -20,9 +20,9 @@ class ProjectionQualityLayer : public Layer {
   enum class Method { Isotropy, Latitude };
   struct Weighting {
     Method method = Method::Isotropy;
-    double quality = 4.0;     // isotropy: n of the weight (alpha = 0 at texels n times longer than wide)
-    bool resolution = true;   // isotropy: whether resolution counts too
-    glm::dvec2 band{0.0};     // latitude: the inner and outer |latitude| of the band, rad
+    double quality = 4.0;    // isotropy: n of the weight (alpha = 0 at texels n times longer than wide)
+    bool resolution = true;  // isotropy: whether resolution counts too
+    glm::dvec2 band{0.0};    // latitude: the inner and outer |latitude| of the band, rad
   };
 
   ProjectionQualityLayer(const std::string& nodeId, std::vector<const Layer*> inputs);

@@ -37,15 +37,21 @@ ReliefLayer::Ramp tintOf(const ParameterSet& parameters) {
   if (by == "none") return {};
   const std::vector<double>& stops = parameters.reals("tint_ramp");
   if (const std::string problem = rampProblem(stops); !problem.empty())
-    throw Error(parameters.where("tint_ramp"), problem,
-                "give stops of value, red, green, blue (sRGB, 0 to 1), values rising, e.g. [0, 0, 0.4, 0, 3000, 1, 1, 1]");
+    throw Error(
+        parameters.where("tint_ramp"), problem,
+        "give stops of value, red, green, blue (sRGB, 0 to 1), values rising, e.g. [0, 0, 0.4, 0, 3000, 1, 1, 1]");
   return {by == "elevation" ? ReliefLayer::Tint::Elevation : ReliefLayer::Tint::Slope, stops};
 }
 
 ReliefLayer::Lighting lightingOf(const ParameterSet& parameters) {
-  return {parameters.real("azimuth"), parameters.real("altitude"), parameters.real("exaggeration"),
-          parameters.string("blend") == "multiply", parameters.string("mode") == "multidirectional",
-          outputOf(parameters.string("output")), tintOf(parameters), parameters.boolean("normalise")};
+  return {parameters.real("azimuth"),
+          parameters.real("altitude"),
+          parameters.real("exaggeration"),
+          parameters.string("blend") == "multiply",
+          parameters.string("mode") == "multidirectional",
+          outputOf(parameters.string("output")),
+          tintOf(parameters),
+          parameters.boolean("normalise")};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -70,52 +76,91 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "composite.relief";
   type.category = NodeCategory::Compositor;
-  type.summary = "Shaded relief of a height layer, grey or multiplied over a colour layer, lit at an azimuth and altitude";
-  type.inputs = {{.name = "height", .type = PortType::Layer, .kinds = {LayerKind::Height},
+  type.summary =
+      "Shaded relief of a height layer, grey or multiplied over a colour layer, lit at an azimuth and altitude";
+  type.inputs = {{.name = "height",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Height},
                   .doc = "the heights to shade: any height layer, composed ones included"},
-                 {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color}, .optional = true,
+                 {.name = "surface",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Color},
+                  .optional = true,
                   .doc = "a colour layer the shade multiplies (blend: multiply); without one the shade is grey"}};
   type.output = PortType::Layer;
   // Every parameter is a uniform: the light, the exaggeration, the mode and the tint change the next frame.
   type.parameters = {
       // 315: light from the north-west, the cartographic convention, under which relief reads as raised
-      {.name = "azimuth", .type = ParameterType::Real, .defaultValue = 315.0, .minimum = 0.0, .maximum = 360.0,
-       .units = "deg", .doc = "direction the light comes from, clockwise from north", .live = true},
+      {.name = "azimuth",
+       .type = ParameterType::Real,
+       .defaultValue = 315.0,
+       .minimum = 0.0,
+       .maximum = 360.0,
+       .units = "deg",
+       .doc = "direction the light comes from, clockwise from north",
+       .live = true},
       // 45: the usual hillshade default, which leaves flat ground at cos 45 = 0.71 and shows slopes both ways
-      {.name = "altitude", .type = ParameterType::Real, .defaultValue = 45.0, .minimum = 0.0, .maximum = 90.0,
-       .units = "deg", .doc = "height of the light above the horizon", .live = true},
+      {.name = "altitude",
+       .type = ParameterType::Real,
+       .defaultValue = 45.0,
+       .minimum = 0.0,
+       .maximum = 90.0,
+       .units = "deg",
+       .doc = "height of the light above the horizon",
+       .live = true},
       // 1: the true relief; raise it to see gentle slopes on a planet's scale
-      {.name = "exaggeration", .type = ParameterType::Real, .defaultValue = 1.0, .minimum = 0.0, .maximum = 1.0e4,
-       .doc = "factor on the heights' slopes before shading (vertical exaggeration)", .live = true},
+      {.name = "exaggeration",
+       .type = ParameterType::Real,
+       .defaultValue = 1.0,
+       .minimum = 0.0,
+       .maximum = 1.0e4,
+       .doc = "factor on the heights' slopes before shading (vertical exaggeration)",
+       .live = true},
       // multiply: shaded imagery, the common use; alone shows the shade even where a surface is given
-      {.name = "blend", .type = ParameterType::Choice, .defaultValue = std::string("multiply"),
+      {.name = "blend",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("multiply"),
        .doc = "multiply: the surface's colour times the shade; alone: the grey shade",
-       .choices = {"multiply", "alone"}, .live = true},
+       .choices = {"multiply", "alone"},
+       .live = true},
       // single: the one light a reader expects; multidirectional shows relief facing any way, as from orbit
-      {.name = "mode", .type = ParameterType::Choice, .defaultValue = std::string("single"),
+      {.name = "mode",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("single"),
        .doc = "single: one light at azimuth; multidirectional: four at 225 to 360 degrees, weighted by the aspect "
               "(Mark 1992), at altitude",
-       .choices = {"single", "multidirectional"}, .live = true},
+       .choices = {"single", "multidirectional"},
+       .live = true},
       // shade: what relief shading is for; the others are the same gradient, as data
-      {.name = "output", .type = ParameterType::Choice, .defaultValue = std::string("shade"),
+      {.name = "output",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("shade"),
        .doc = "shade: the Lambertian shade; slope: the slope's angle over 90 degrees (0 flat, 1 vertical); aspect: the "
               "downslope direction clockwise from north over 360 degrees",
-       .choices = {"shade", "slope", "aspect"}, .live = true},
+       .choices = {"shade", "slope", "aspect"},
+       .live = true},
       // false: the hillshade as cartographers know it, flat ground at sin(altitude) (0.71 at 45 degrees)
-      {.name = "normalise", .type = ParameterType::Boolean, .defaultValue = false,
+      {.name = "normalise",
+       .type = ParameterType::Boolean,
+       .defaultValue = false,
        .doc = "divide the shade by flat ground's, sin(altitude), so that multiplied imagery keeps its colour on "
               "flat ground and slopes toward the light brighten it (up to white)",
        .live = true},
       // none: the shade alone reads as relief; a tint is a choice of what to show
-      {.name = "tint", .type = ParameterType::Choice, .defaultValue = std::string("none"),
+      {.name = "tint",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("none"),
        .doc = "colours the value by tint_ramp: by elevation (m) or by slope (deg); none: grey",
-       .choices = {"none", "elevation", "slope"}, .live = true},
+       .choices = {"none", "elevation", "slope"},
+       .live = true},
       // a hypsometric ramp for Earth-like elevations: sea blue, lowland green, upland tan, summits white
-      {.name = "tint_ramp", .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{-4000, 0.1, 0.3, 0.6, 0, 0.3, 0.55, 0.3, 2000, 0.75, 0.65, 0.45, 5000,
-                                           1, 1, 1},
+      {.name = "tint_ramp",
+       .type = ParameterType::RealList,
+       .defaultValue =
+           std::vector<double>{-4000, 0.1, 0.3, 0.6, 0, 0.3, 0.55, 0.3, 2000, 0.75, 0.65, 0.45, 5000, 1, 1, 1},
        .doc = "2 to 8 stops of value (m, or deg of slope), red, green, blue (sRGB, 0 to 1), values rising; blended "
-              "linearly in scene-linear light, held beyond the ends", .live = true},
+              "linearly in scene-linear light, held beyond the ends",
+       .live = true},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<Relief>(setup); };
   return type;

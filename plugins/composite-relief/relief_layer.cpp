@@ -24,13 +24,17 @@ float flatShade(double altitude) { return float(std::max(std::sin(altitude * std
 
 ReliefLayer::ReliefLayer(const std::string& nodeId, const Layer& height, const Layer* surface, Lighting lighting,
                          double radius)
-    : prefix_("layer_" + glslIdentifier(nodeId)), height_(height), surface_(surface), lighting_(lighting),
+    : prefix_("layer_" + glslIdentifier(nodeId)),
+      height_(height),
+      surface_(surface),
+      lighting_(lighting),
       radius_(radius) {}
 
 // Azimuth clockwise from north, altitude above the horizon: east = sin(azimuth) cos(altitude), north =
 // cos(azimuth) cos(altitude), up = sin(altitude) (the convention of cartographic hillshading).
 glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegrees) {
-  const double azimuth = azimuthDegrees * std::numbers::pi / 180.0, altitude = altitudeDegrees * std::numbers::pi / 180.0;
+  const double azimuth = azimuthDegrees * std::numbers::pi / 180.0,
+               altitude = altitudeDegrees * std::numbers::pi / 180.0;
   return {float(std::sin(azimuth) * std::cos(altitude)), float(std::cos(azimuth) * std::cos(altitude)),
           float(std::sin(altitude))};
 }
@@ -39,12 +43,23 @@ glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegr
 // Mark's four), or the slope or the aspect, each from 0 to 1.
 std::string ReliefLayer::value() const {
   const std::string& p = prefix_;
-  return "float " + p + "_value(vec2 slopes) {\n"
-         "  if (" + p + "_output == 1) return slopeAngle(slopes, " + p + "_exaggeration) / (0.5 * PI);\n"
-         "  if (" + p + "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
-         "  if (" + p + "_multidirectional == 1)\n"
-         "    return reliefMultidirectional(slopes, " + p + "_exaggeration, " + p + "_altitude) / " + p + "_flat;\n"
-         "  return reliefLambert(slopes, " + p + "_exaggeration, " + p + "_light) / " + p + "_flat;\n"
+  return "float " + p +
+         "_value(vec2 slopes) {\n"
+         "  if (" +
+         p + "_output == 1) return slopeAngle(slopes, " + p +
+         "_exaggeration) / (0.5 * PI);\n"
+         "  if (" +
+         p +
+         "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
+         "  if (" +
+         p +
+         "_multidirectional == 1)\n"
+         "    return reliefMultidirectional(slopes, " +
+         p + "_exaggeration, " + p + "_altitude) / " + p +
+         "_flat;\n"
+         "  return reliefLambert(slopes, " +
+         p + "_exaggeration, " + p + "_light) / " + p +
+         "_flat;\n"
          "}\n";
 }
 
@@ -52,10 +67,17 @@ std::string ReliefLayer::value() const {
 // slope (deg), or white.
 std::string ReliefLayer::tint() const {
   const std::string& p = prefix_;
-  return "vec3 " + p + "_tint(vec2 slopes, float h) {\n"
-         "  if (" + p + "_tintBy == 0) return vec3(1.0);\n"
-         "  float x = " + p + "_tintBy == 1 ? h : degrees(slopeAngle(slopes, 1.0));\n"
-         "  return reliefRamp(" + p + "_ramp, " + p + "_rampStops, x);\n"
+  return "vec3 " + p +
+         "_tint(vec2 slopes, float h) {\n"
+         "  if (" +
+         p +
+         "_tintBy == 0) return vec3(1.0);\n"
+         "  float x = " +
+         p +
+         "_tintBy == 1 ? h : degrees(slopeAngle(slopes, 1.0));\n"
+         "  return reliefRamp(" +
+         p + "_ramp, " + p +
+         "_rampStops, x);\n"
          "}\n";
 }
 
@@ -65,12 +87,16 @@ std::string ReliefLayer::tint() const {
 // twice more.
 std::string ReliefLayer::shaded() const {
   const std::string& p = prefix_;
-  const std::string shade = "  vec2 slopes = " + p + "_slopes(p, height.r);\n"
-                            "  vec3 shade = " + p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
+  const std::string shade = "  vec2 slopes = " + p +
+                            "_slopes(p, height.r);\n"
+                            "  vec3 shade = " +
+                            p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
   if (!surface_) return "  if (height.a <= 0.0) return vec4(0.0);\n" + shade + "  return vec4(shade, height.a);\n";
-  return "  vec4 surface = " + surface_->samplingFunction() + "(p);\n"
-         "  if (height.a <= 0.0) return " + p + "_multiply == 0 ? vec4(0.0) : surface;\n" + shade +
-         "  if (" + p + "_multiply == 0) return vec4(shade, height.a);\n"
+  return "  vec4 surface = " + surface_->samplingFunction() +
+         "(p);\n"
+         "  if (height.a <= 0.0) return " +
+         p + "_multiply == 0 ? vec4(0.0) : surface;\n" + shade + "  if (" + p +
+         "_multiply == 0) return vec4(shade, height.a);\n"
          "  return vec4(surface.rgb * mix(vec3(1.0), shade, height.a), surface.a);\n";
 }
 
@@ -78,22 +104,42 @@ std::string ReliefLayer::glsl() const {
   const std::string& p = prefix_;
   return height_.glslOnce() + (surface_ ? surface_->glslOnce() : std::string()) +
          "#include \"composite/relief.glsl\"\n"
-         "uniform vec3 " + p + "_light;\n"
-         "uniform float " + p + "_exaggeration;\n"
-         "uniform float " + p + "_radius;\n"
-         "uniform float " + p + "_altitude;\n"
-         "uniform int " + p + "_multiply;\n"
-         "uniform int " + p + "_multidirectional;\n"
-         "uniform float " + p + "_flat;\n"
-         "uniform int " + p + "_output;\n"
-         "uniform int " + p + "_tintBy;\n"
-         "uniform int " + p + "_rampStops;\n"
-         "uniform vec4 " + p + "_ramp[RELIEF_RAMP_STOPS];\n" +
-         heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + value() + tint() +
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec4 height = " + height_.samplingFunction() + "(p);\n" +
-         shaded() +
-         "}\n";
+         "uniform vec3 " +
+         p +
+         "_light;\n"
+         "uniform float " +
+         p +
+         "_exaggeration;\n"
+         "uniform float " +
+         p +
+         "_radius;\n"
+         "uniform float " +
+         p +
+         "_altitude;\n"
+         "uniform int " +
+         p +
+         "_multiply;\n"
+         "uniform int " +
+         p +
+         "_multidirectional;\n"
+         "uniform float " +
+         p +
+         "_flat;\n"
+         "uniform int " +
+         p +
+         "_output;\n"
+         "uniform int " +
+         p +
+         "_tintBy;\n"
+         "uniform int " +
+         p +
+         "_rampStops;\n"
+         "uniform vec4 " +
+         p + "_ramp[RELIEF_RAMP_STOPS];\n" + heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + value() +
+         tint() + "vec4 " + p +
+         "(SurfacePoint p) {\n"
+         "  vec4 height = " +
+         height_.samplingFunction() + "(p);\n" + shaded() + "}\n";
 }
 
 void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {

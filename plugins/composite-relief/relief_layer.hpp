@@ -14,13 +14,13 @@ namespace strata::composite {
 // gradient over a pixel's footprint along the ground gives the surface normal in the local east/north/up
 // frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude (or to four, in the
 // multidirectional mode) is the shade, grey alone or multiplied over a surface layer; or it shows the slope
-// or the aspect instead; a tint (a colour ramp by elevation or by slope) colours it. The light and the exaggeration are uniforms: changing them
-// rebuilds no program.
+// or the aspect instead; a tint (a colour ramp by elevation or by slope) colours it. The light and the exaggeration are
+// uniforms: changing them rebuilds no program.
 class ReliefLayer : public Layer {
  public:
   enum class Output { Shade, Slope, Aspect };  // the order the shader's _output uniform numbers them
 
-  enum class Tint { None, Elevation, Slope };  // the order the shader's _tint uniform numbers them
+  enum class Tint { None, Elevation, Slope };   // the order the shader's _tint uniform numbers them
   static constexpr std::size_t kRampStops = 8;  // relief.glsl's RELIEF_RAMP_STOPS
 
   // A colour ramp: stops of (value, red, green, blue), values rising, colours sRGB-encoded in [0, 1].
@@ -30,10 +30,10 @@ class ReliefLayer : public Layer {
   };
 
   struct Lighting {
-    double azimuth = 315.0;   // deg clockwise from north
-    double altitude = 45.0;   // deg above the horizon
+    double azimuth = 315.0;  // deg clockwise from north
+    double altitude = 45.0;  // deg above the horizon
     double exaggeration = 1.0;
-    bool multiply = true;     // over `surface` where one is given; else the grey shade alone
+    bool multiply = true;           // over `surface` where one is given; else the grey shade alone
     bool multidirectional = false;  // Mark's four oblique-weighted lights, at `altitude`, not one at `azimuth`
     Output output = Output::Shade;
     Ramp tint;

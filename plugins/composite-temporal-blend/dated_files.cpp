@@ -14,16 +14,21 @@ struct NamePattern {
 };
 
 NamePattern namePattern(const std::string& name, const SourceLocation& where) {
-  static const std::map<char, std::string> digits{{'Y', "(\\d{4})"}, {'m', "(\\d{2})"}, {'d', "(\\d{2})"}, {'j', "(\\d{3})"}};
+  static const std::map<char, std::string> digits{
+      {'Y', "(\\d{4})"}, {'m', "(\\d{2})"}, {'d', "(\\d{2})"}, {'j', "(\\d{3})"}};
   std::string expression;
   NamePattern pattern;
   for (std::size_t i = 0; i < name.size(); ++i) {
     const char c = name[i];
     if (c == '%' && i + 1 < name.size() && (digits.contains(name[i + 1]) || name[i + 1] == '%')) {
       const char field = name[++i];
-      if (field == '%') { expression += "%"; continue; }
+      if (field == '%') {
+        expression += "%";
+        continue;
+      }
       if (pattern.fields.contains(field))
-        throw Error(where, "the file-name pattern has %" + std::string(1, field) + " twice", "give each date field once");
+        throw Error(where, "the file-name pattern has %" + std::string(1, field) + " twice",
+                    "give each date field once");
       pattern.fields[field] = int(pattern.fields.size()) + 1;
       expression += digits.at(field);
     } else if (c == '*') {
@@ -79,15 +84,17 @@ std::vector<DatedFile> datedFiles(const std::string& pattern, const std::filesys
     files.push_back({entry.path(), *date});
   }
   if (files.empty())
-    throw Error(where, "no file in " + folder.string() + " matches '" + full.filename().string() + "'",
-                "check the pattern's fixed parts against the file names (%Y, %m, %d, %j: the date's digits; *: any text)");
+    throw Error(
+        where, "no file in " + folder.string() + " matches '" + full.filename().string() + "'",
+        "check the pattern's fixed parts against the file names (%Y, %m, %d, %j: the date's digits; *: any text)");
   std::sort(files.begin(), files.end(), [](const DatedFile& a, const DatedFile& b) {
     return a.date != b.date ? a.date < b.date : a.path < b.path;  // names too: the same message every time
   });
   for (std::size_t i = 1; i < files.size(); ++i)
     if (files[i].date == files[i - 1].date)
-      throw Error(where, "'" + files[i - 1].path.filename().string() + "' and '" + files[i].path.filename().string() +
-                             "' give the same date, " + formatIsoDate(files[i].date),
+      throw Error(where,
+                  "'" + files[i - 1].path.filename().string() + "' and '" + files[i].path.filename().string() +
+                      "' give the same date, " + formatIsoDate(files[i].date),
                   "a series has one file per date: narrow the pattern or move one of them");
   return files;
 }

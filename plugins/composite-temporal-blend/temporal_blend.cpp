@@ -40,12 +40,20 @@ Steps stepsFromFiles(const NodeSetup& setup) {
     throw Error(where, "the steps are given twice: by `files` and by `steps` and `dates`",
                 "keep `files` (the dates come from the file names) or `steps` with `dates`, not both");
   const NodeTypeDeclaration* reader = setup.plugins->find("source.gdal");
-  if (!reader) throw Error(where, "`files` reads its steps with source.gdal, which is not loaded", "install the source-gdal plugin");
+  if (!reader)
+    throw Error(where, "`files` reads its steps with source.gdal, which is not loaded",
+                "install the source-gdal plugin");
   Steps steps;
   for (const DatedFile& file : datedFiles(setup.parameters.string("files"), setup.pipelineDirectory, where)) {
-    NodeSetup step{setup.id + "/" + file.path.filename().string(), where,
-                   fileStepParameters(*reader, file.path, setup.parameters.string("kind"), where), {}, setup.body,
-                   setup.pipelineDirectory, setup.plugins, setup.date, setup.colour};
+    NodeSetup step{setup.id + "/" + file.path.filename().string(),
+                   where,
+                   fileStepParameters(*reader, file.path, setup.parameters.string("kind"), where),
+                   {},
+                   setup.body,
+                   setup.pipelineDirectory,
+                   setup.plugins,
+                   setup.date,
+                   setup.colour};
     steps.own.push_back(reader->create(step));
     steps.nodes.push_back(steps.own.back().get());
     steps.dates.push_back(file.date);
@@ -67,10 +75,12 @@ Steps stepsFromList(const NodeSetup& setup) {
                 "give one date per step, in the order of `steps`");
   const bool yearly = setup.parameters.string("repeat") == "yearly";
   for (std::size_t i = 1; i < dates.size(); ++i) {
-    const double before = yearly ? yearFraction(dates[i - 1]) : dates[i - 1], now = yearly ? yearFraction(dates[i]) : dates[i];
+    const double before = yearly ? yearFraction(dates[i - 1]) : dates[i - 1],
+                 now = yearly ? yearFraction(dates[i]) : dates[i];
     if (now <= before)
-      throw Error(where, "the dates are not in increasing order" + std::string(yearly ? " within the year" : "") + ": " +
-                             formatIsoDate(dates[i]) + " follows " + formatIsoDate(dates[i - 1]),
+      throw Error(where,
+                  "the dates are not in increasing order" + std::string(yearly ? " within the year" : "") + ": " +
+                      formatIsoDate(dates[i]) + " follows " + formatIsoDate(dates[i - 1]),
                   "list the steps and their dates from the earliest to the latest" +
                       std::string(yearly ? " day of the year" : ""));
   }
@@ -136,19 +146,31 @@ NodeTypeDeclaration declaration() {
   type.type = "composite.temporal_blend";
   type.category = NodeCategory::Compositor;
   type.summary = "A time series as one layer at the scene's date: the two bracketing steps blended linearly in time";
-  type.inputs = {{.name = "steps", .type = PortType::Layer, .list = true, .optional = true,
-                  .doc = "the series' layers, of one kind, from the earliest to the latest (one per date); or `files`"}};
+  type.inputs = {
+      {.name = "steps",
+       .type = PortType::Layer,
+       .list = true,
+       .optional = true,
+       .doc = "the series' layers, of one kind, from the earliest to the latest (one per date); or `files`"}};
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "dates", .type = ParameterType::DateList, .defaultValue = std::vector<double>{},
+      {.name = "dates",
+       .type = ParameterType::DateList,
+       .defaultValue = std::vector<double>{},
        .doc = "each step's date, ISO 8601 in UTC (2004-01-15), in the order of `steps`: when it shows alone"},
-      {.name = "files", .type = ParameterType::String, .defaultValue = std::string(),
+      {.name = "files",
+       .type = ParameterType::String,
+       .defaultValue = std::string(),
        .doc = "instead of steps and dates: a file-name pattern whose %Y %m %d %j give each file's date and * any "
               "text (bmng/world.%Y%m.*.jpg), each file read as source.gdal reads it; empty: use `steps`"},
-      {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
+      {.name = "kind",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("color"),
        .doc = "what the files `files` matches hold, as source.gdal's `kind`",
        .choices = {"color", "height", "scalar", "luminance", "mask"}},
-      {.name = "repeat", .type = ParameterType::Choice, .defaultValue = std::string("none"),
+      {.name = "repeat",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("none"),
        .doc = "none: before the first date and after the last, that step shows; yearly: the series is a climatology "
               "that repeats every year (months of any year), and the last step blends into the first",
        .choices = {"none", "yearly"}},

@@ -47,7 +47,8 @@ std::string TemporalBlendLayer::faceSamplingFunction() const {
 // feed projection_quality's latitude weighting.
 ProjectionAspect TemporalBlendLayer::aspect() const {
   const ProjectionAspect first = steps_.front()->aspect();
-  const bool shared = std::all_of(steps_.begin(), steps_.end(), [first](const Layer* step) { return step->aspect() == first; });
+  const bool shared =
+      std::all_of(steps_.begin(), steps_.end(), [first](const Layer* step) { return step->aspect() == first; });
   return shared ? first : ProjectionAspect::Other;
 }
 
@@ -55,31 +56,49 @@ std::string TemporalBlendLayer::glsl() const {
   const std::string& p = prefix_;
   std::string code;
   for (const Layer* step : steps_) code += step->glslOnce();
-  code += "#include \"composite/temporal_blend.glsl\"\n"
-          "uniform int " + p + "_earlier;\n"
-          "uniform int " + p + "_later;\n"
-          "uniform float " + p + "_fraction;\n" +
-          stepDispatch(&Layer::samplingFunction, p + "_step", "vec4", "SurfacePoint p", "p") +
-          "vec4 " + p + "(SurfacePoint p) {\n"
-          "  vec4 earlier = " + p + "_step(" + p + "_earlier, p);\n"
-          "  if (" + p + "_fraction <= 0.0) return earlier;  // on a step's date: one step's work\n"
-          "  return temporalBlend(earlier, " + p + "_step(" + p + "_later, p), " + p + "_fraction);\n"
-          "}\n";
+  code +=
+      "#include \"composite/temporal_blend.glsl\"\n"
+      "uniform int " +
+      p +
+      "_earlier;\n"
+      "uniform int " +
+      p +
+      "_later;\n"
+      "uniform float " +
+      p + "_fraction;\n" + stepDispatch(&Layer::samplingFunction, p + "_step", "vec4", "SurfacePoint p", "p") +
+      "vec4 " + p +
+      "(SurfacePoint p) {\n"
+      "  vec4 earlier = " +
+      p + "_step(" + p +
+      "_earlier, p);\n"
+      "  if (" +
+      p +
+      "_fraction <= 0.0) return earlier;  // on a step's date: one step's work\n"
+      "  return temporalBlend(earlier, " +
+      p + "_step(" + p + "_later, p), " + p +
+      "_fraction);\n"
+      "}\n";
   if (!texelStepsFunction().empty())
-    code += stepDispatch(&Layer::texelStepsFunction, p + "_stepTexels", "vec4", "SurfacePoint p", "p") +
-            "vec4 " + p + "_texelSteps(SurfacePoint p) { return " + p + "_stepTexels(" + p + "_earlier, p); }\n";
+    code += stepDispatch(&Layer::texelStepsFunction, p + "_stepTexels", "vec4", "SurfacePoint p", "p") + "vec4 " + p +
+            "_texelSteps(SurfacePoint p) { return " + p + "_stepTexels(" + p + "_earlier, p); }\n";
   if (!edgeDistanceFunction().empty())
-    code += stepDispatch(&Layer::edgeDistanceFunction, p + "_stepEdge", "float", "SurfacePoint p", "p") +
-            "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-            "  return max(" + p + "_stepEdge(" + p + "_earlier, p), " + p + "_stepEdge(" + p + "_later, p));\n}\n";
+    code += stepDispatch(&Layer::edgeDistanceFunction, p + "_stepEdge", "float", "SurfacePoint p", "p") + "float " + p +
+            "_edgeDistance(SurfacePoint p) {\n"
+            "  return max(" +
+            p + "_stepEdge(" + p + "_earlier, p), " + p + "_stepEdge(" + p + "_later, p));\n}\n";
   if (!faceSamplingFunction().empty())
     code += stepDispatch(&Layer::faceSamplingFunction, p + "_stepFace", "vec4", "vec3 point, float footprint",
                          "point, footprint") +
-            "vec4 " + p + "_faceSample(vec3 point, float footprint) {\n"
-            "  vec4 earlier = " + p + "_stepFace(" + p + "_earlier, point, footprint);\n"
-            "  if (" + p + "_fraction <= 0.0) return earlier;\n"
-            "  return temporalBlend(earlier, " + p + "_stepFace(" + p + "_later, point, footprint), " + p +
-            "_fraction);\n}\n";
+            "vec4 " + p +
+            "_faceSample(vec3 point, float footprint) {\n"
+            "  vec4 earlier = " +
+            p + "_stepFace(" + p +
+            "_earlier, point, footprint);\n"
+            "  if (" +
+            p +
+            "_fraction <= 0.0) return earlier;\n"
+            "  return temporalBlend(earlier, " +
+            p + "_stepFace(" + p + "_later, point, footprint), " + p + "_fraction);\n}\n";
   return code;
 }
 

@@ -4,7 +4,8 @@
 
 namespace strata::composite {
 
-TemporalSeries::TemporalSeries(std::vector<DayNumber> dates, bool yearly) : positions_(std::move(dates)), yearly_(yearly) {
+TemporalSeries::TemporalSeries(std::vector<DayNumber> dates, bool yearly)
+    : positions_(std::move(dates)), yearly_(yearly) {
   if (yearly_)
     for (double& position : positions_) position = yearFraction(position);
 }
@@ -27,7 +28,8 @@ Bracket TemporalSeries::bracketInside(double position) const {
 // After the year's last step or before its first: from the last towards the first of the next year.
 Bracket TemporalSeries::bracketAcrossNewYear(double position) const {
   const std::size_t last = positions_.size() - 1;
-  const double sinceLast = position >= positions_.back() ? position - positions_.back() : position + 1.0 - positions_.back();
+  const double sinceLast =
+      position >= positions_.back() ? position - positions_.back() : position + 1.0 - positions_.back();
   return {last, 0, sinceLast / (positions_.front() + 1.0 - positions_.back())};
 }
 

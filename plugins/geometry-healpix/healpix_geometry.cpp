@@ -38,10 +38,10 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
-    surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/healpix_surface.vert",
-                               gpu.shaders->expand("geometry/healpix_surface.vert", heights_.substitutions())},
-                              {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
-                               gpu.shaders->expand("geometry/surface_buffer.frag")}});
+    surface_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "geometry/healpix_surface.vert",
+          gpu.shaders->expand("geometry/healpix_surface.vert", heights_.substitutions())},
+         {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag", gpu.shaders->expand("geometry/surface_buffer.frag")}});
     buffers_.emplace(settings_.gridCells);
     rasterisationTimer_.emplace();
   }
@@ -49,15 +49,16 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
     if (!nodeHeights_) nodeHeights_ = nodeHeights();  // once the height layer has placed its texels
-    const std::vector<SelectedNode> selected = selectNodes(frame.view, radius_, heights_.range(), settings_, *nodeHeights_);
+    const std::vector<SelectedNode> selected =
+        selectNodes(frame.view, radius_, heights_.range(), settings_, *nodeHeights_);
     batch_ = batchNodes(selected, frame.view, radius_, settings_.gridCells);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
   GeometryStatistics statistics() const override {
     const std::uint64_t nodes = batch_.nodes.size(), cells = std::uint64_t(settings_.gridCells);
-    return {int(nodes), nodes * (cells + 1) * (cells + 1), nodes * 2 * cells * cells, visibilityMs_, 0.0,
-            rasterisationTimer_->milliseconds()};
+    return {int(nodes), nodes * (cells + 1) * (cells + 1),  nodes * 2 * cells * cells, visibilityMs_,
+            0.0,        rasterisationTimer_->milliseconds()};
   }
 
   void render(const FrameState& frame) override;
@@ -149,10 +150,17 @@ NodeTypeDeclaration declaration() {
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = {
-      {.name = "threshold", .type = ParameterType::Real, .defaultValue = 0.2, .minimum = 0.001, .maximum = 10.0,
+      {.name = "threshold",
+       .type = ParameterType::Real,
+       .defaultValue = 0.2,
+       .minimum = 0.001,
+       .maximum = 10.0,
        .doc = "vertices wanted per pixel: a node is drawn once its area on screen times this needs no more "
               "vertices than its grid has (0.2 is the paper's recommendation; it measured 0.005 to 1.0)"},
-      {.name = "cells", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 2.0,
+      {.name = "cells",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(64),
+       .minimum = 2.0,
        .maximum = 254.0,
        .doc = "grid cells along a node's side, even (64: 4225 vertices a node, so a few hundred nodes cover a "
               "view; the paper's 254 is its data tiles' size, 16-bit indices)"},

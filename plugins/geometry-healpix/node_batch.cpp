@@ -52,7 +52,8 @@ NodeBatch batchNodes(std::span<const SelectedNode> selected, const View& view, d
   batch.draws.reserve(selected.size());
   batch.boundary.reserve(selected.size() * 4 * std::size_t(cells));
   for (const SelectedNode& node : selected) {
-    batch.draws.push_back({indicesPerNode, 1, node.coarserEdges * indicesPerNode, 0, std::uint32_t(batch.nodes.size())});
+    batch.draws.push_back(
+        {indicesPerNode, 1, node.coarserEdges * indicesPerNode, 0, std::uint32_t(batch.nodes.size())});
     batch.nodes.push_back(gpuNode(node.key, view, radius, cells, reference));
     appendBoundary(node.key, view, radius, cells, reference, batch.boundary);
   }

@@ -6,8 +6,9 @@
 namespace strata::healpix {
 
 // The GPU side of the nodes: the stitched proxy grid's indices (uploaded once), and each frame's nodes,
-// their outline vertices and their draws. Each draw is one instance whose baseInstance names its node: an instanced vertex attribute (divisor
-// 1) reads it from a buffer of 0, 1, 2, ..., which GL 4.5 offsets by baseInstance (gl_DrawID needs 4.6).
+// their outline vertices and their draws. Each draw is one instance whose baseInstance names its node: an instanced
+// vertex attribute (divisor 1) reads it from a buffer of 0, 1, 2, ..., which GL 4.5 offsets by baseInstance (gl_DrawID
+// needs 4.6).
 class NodeBuffers {
  public:
   explicit NodeBuffers(int cells);

@@ -24,7 +24,8 @@ double largestDot(const NodeCone& cone, const glm::dvec3& n) {
 
 // The convex hull of points in the plane, counter-clockwise (Andrew's monotone chain).
 std::vector<glm::dvec2> convexHull(std::array<glm::dvec2, 8> points) {
-  std::ranges::sort(points, [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::ranges::sort(points,
+                    [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   const auto turn = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
   };
@@ -78,7 +79,8 @@ ShellView::ShellView(const View& view, double radius, HeightRange heights, NodeH
       near_(view.near),
       focal_(0.5 * double(view.height) / std::tan(0.5 * view.verticalFov)),
       halfScreen_(0.5 * double(view.width), 0.5 * double(view.height)),
-      pixelsPerSteradian_(focal_ * focal_ * std::pow(1.0 + glm::dot(halfScreen_, halfScreen_) / (focal_ * focal_), 1.5)),
+      pixelsPerSteradian_(focal_ * focal_ *
+                          std::pow(1.0 + glm::dot(halfScreen_, halfScreen_) / (focal_ * focal_), 1.5)),
       radius_(radius),
       heights_(heights),
       nodeHeights_(std::move(nodeHeights)) {

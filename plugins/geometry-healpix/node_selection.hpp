@@ -82,8 +82,8 @@ class ShellView {
   };
   glm::dvec3 eye_;
   glm::dmat3 planetToEye_;
-  double near_, focal_;  // focal length in pixels
-  glm::dvec2 halfScreen_;  // pixels
+  double near_, focal_;        // focal length in pixels
+  glm::dvec2 halfScreen_;      // pixels
   double pixelsPerSteradian_;  // at the screen's corners, the most
   double radius_;
   HeightRange heights_;

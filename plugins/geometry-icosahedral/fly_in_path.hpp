@@ -12,8 +12,8 @@ namespace strata::icosahedral {
 // falls geometrically, starting 2 km south of the summit and looking north, tilting from straight down to
 // 75 degrees below 100 km.
 struct FlyInPath {
-  static constexpr double kMarsRadius = 3396190.0;  // m
-  static constexpr int kFramesEachWay = 150;         // 5 s down and 5 s up at 30 Hz
+  static constexpr double kMarsRadius = 3396190.0;                       // m
+  static constexpr int kFramesEachWay = 150;                             // 5 s down and 5 s up at 30 Hz
   static constexpr double kStartAltitude = 1.0e7, kAboveSummit = 300.0;  // m
 
   double summitLon = 0.0, summitLat = 0.0;  // deg
@@ -26,8 +26,12 @@ struct FlyInPath {
     const double low = summitHeight + kAboveSummit;
     const double altitude = kStartAltitude * std::pow(low / kStartAltitude, t);
     const double closeness = std::clamp(std::log10(1.0e5 / altitude) / std::log10(1.0e5 / low), 0.0, 1.0);
-    return {.lon = summitLon, .lat = summitLat - glm::degrees(2000.0 / kMarsRadius) * closeness,
-            .altitude = altitude, .heading = 0.0, .tilt = 75.0 * closeness, .fov = 45.0};
+    return {.lon = summitLon,
+            .lat = summitLat - glm::degrees(2000.0 / kMarsRadius) * closeness,
+            .altitude = altitude,
+            .heading = 0.0,
+            .tilt = 75.0 * closeness,
+            .fov = 45.0};
   }
 };
 

@@ -120,7 +120,7 @@ template std::vector<GeodesicVertex<double>> subdivideGeodesic<double>(const Pat
                                                                        const SubdivisionTable&);
 
 ExactPoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
-                               LonLatReference reference) {
+                             LonLatReference reference) {
   return {unwrappedLonLat(normal, reference.lon) - glm::dvec2(reference.lon, reference.lat), radius * normal - eye};
 }
 

@@ -56,7 +56,6 @@ struct ExactPoint {
   glm::dvec2 lonlat;    // rad
   glm::dvec3 position;  // m
 };
-ExactPoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye,
-                               LonLatReference reference);
+ExactPoint exactSurfacePoint(const glm::dvec3& normal, double radius, const glm::dvec3& eye, LonLatReference reference);
 
 }  // namespace strata::icosahedral

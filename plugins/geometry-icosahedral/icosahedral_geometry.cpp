@@ -38,10 +38,9 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   void createResources(GpuContext& gpu) override {
     subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
                                    gpu.shaders->expand("geometry/subdivide_patches.comp", heights_.substitutions())}});
-    surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/icosahedral.vert",
-                               gpu.shaders->expand("geometry/icosahedral.vert")},
-                              {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag",
-                               gpu.shaders->expand("geometry/surface_buffer.frag")}});
+    surface_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "geometry/icosahedral.vert", gpu.shaders->expand("geometry/icosahedral.vert")},
+         {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag", gpu.shaders->expand("geometry/surface_buffer.frag")}});
     buffers_.emplace(table_, windings_);
     subdivisionTimer_.emplace();
     rasterisationTimer_.emplace();
@@ -64,8 +63,12 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   GeometryStatistics statistics() const override {
     std::uint64_t indices = 0;
     for (const DrawElementsIndirectCommand& draw : batch_.draws) indices += draw.count;
-    return {int(batch_.draws.size()), batch_.draws.size() * std::uint64_t(table_.vertexCount()), indices / 3,
-            visibilityMs_, subdivisionTimer_->milliseconds(), rasterisationTimer_->milliseconds()};
+    return {int(batch_.draws.size()),
+            batch_.draws.size() * std::uint64_t(table_.vertexCount()),
+            indices / 3,
+            visibilityMs_,
+            subdivisionTimer_->milliseconds(),
+            rasterisationTimer_->milliseconds()};
   }
 
   void render(const FrameState& frame) override;
@@ -145,13 +148,23 @@ NodeTypeDeclaration declaration() {
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = {
-      {.name = "patches", .type = ParameterType::Integer, .defaultValue = std::int64_t(300), .minimum = 20.0,
-       .maximum = 20000.0, .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"},
-      {.name = "depth", .type = ParameterType::Integer, .defaultValue = std::int64_t(5), .minimum = 1.0,
+      {.name = "patches",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(300),
+       .minimum = 20.0,
+       .maximum = 20000.0,
+       .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"},
+      {.name = "depth",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(5),
+       .minimum = 1.0,
        .maximum = 8.0,
        .doc = "subdivisions of each patch: 4^depth triangles (5 is Kooima 2008's default; 1 is the least without "
               "T-junctions between levels)"},
-      {.name = "operations", .type = ParameterType::Integer, .defaultValue = std::int64_t(64), .minimum = 0.0,
+      {.name = "operations",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(64),
+       .minimum = 0.0,
        .maximum = 100000.0,
        .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU time near half a "
               "millisecond and still follows a 30 Hz fly-in); 0 holds the tree the first frame made, to look at it "

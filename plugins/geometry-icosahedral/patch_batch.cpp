@@ -18,10 +18,12 @@ double centreLongitude(const SphericalTriangle& corners, double referenceLon) {
 }  // namespace
 
 PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        double splitDistanceAtLevelZero, const SubdivisionTable& table,
-                        const EdgeWindings& windings) {
-  PatchBatch batch{{view.reference.x, view.reference.y}, splitDistanceAtLevelZero,
-                   kFaceEdgeAngle / (std::numbers::sqrt2 * table.segments() * splitDistanceAtLevelZero), {}, {}};
+                        double splitDistanceAtLevelZero, const SubdivisionTable& table, const EdgeWindings& windings) {
+  PatchBatch batch{{view.reference.x, view.reference.y},
+                   splitDistanceAtLevelZero,
+                   kFaceEdgeAngle / (std::numbers::sqrt2 * table.segments() * splitDistanceAtLevelZero),
+                   {},
+                   {}};
   batch.seeds.reserve(3 * patches.size());
   batch.draws.reserve(patches.size());
   const glm::dvec2 reference(batch.reference.lon, batch.reference.lat);
@@ -32,8 +34,7 @@ PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, dou
                              glm::vec4(glm::vec3(seed.normals[c]), 0.0f),
                              glm::vec4(glm::vec2(seed.lonlat[c] - reference), 0.0f, 0.0f)});
     const IndexRange winding = windings.range(patch.coarseEdges);
-    batch.draws.push_back({winding.count, 1, winding.first,
-                           std::int32_t(batch.draws.size()) * table.vertexCount(), 0});
+    batch.draws.push_back({winding.count, 1, winding.first, std::int32_t(batch.draws.size()) * table.vertexCount(), 0});
   }
   return batch;
 }

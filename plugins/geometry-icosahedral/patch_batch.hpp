@@ -40,7 +40,6 @@ struct PatchBatch {
 };
 
 PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        double splitDistanceAtLevelZero, const SubdivisionTable& table,
-                        const EdgeWindings& windings);
+                        double splitDistanceAtLevelZero, const SubdivisionTable& table, const EdgeWindings& windings);
 
 }  // namespace strata::icosahedral

@@ -38,12 +38,12 @@ void PatchBuffers::reserve(std::size_t patches) {
   capacity_ = std::max(patches, capacity_ + capacity_ / 2);
   const std::size_t vertexVector = verticesPerPatch_ * sizeof(glm::vec4);
   const std::array<std::pair<Buffer, std::size_t>, 7> sizes{{{kSeeds, 3 * sizeof(SeedCorner)},
-                                                              {kDraws, sizeof(DrawElementsIndirectCommand)},
-                                                              {kPositions, vertexVector},
-                                                              {kNormals, vertexVector},
-                                                              {kLonLats, vertexVector},
-                                                              {kSurface, vertexVector},
-                                                              {kShading, vertexVector}}};
+                                                             {kDraws, sizeof(DrawElementsIndirectCommand)},
+                                                             {kPositions, vertexVector},
+                                                             {kNormals, vertexVector},
+                                                             {kLonLats, vertexVector},
+                                                             {kSurface, vertexVector},
+                                                             {kShading, vertexVector}}};
   for (const auto& [buffer, bytesPerPatch] : sizes) {
     glDeleteBuffers(1, &buffers_[buffer]);
     glCreateBuffers(1, &buffers_[buffer]);
@@ -65,7 +65,8 @@ void PatchBuffers::upload(const PatchBatch& batch) {
 
 void PatchBuffers::subdivide() const {
   if (patches_ == 0) return;
-  const std::array<Buffer, 7> bindings{kParents, kSeeds, kPositions, kNormals, kLonLats, kSurface, kShading};  // as the shader binds them
+  const std::array<Buffer, 7> bindings{kParents, kSeeds,   kPositions, kNormals,
+                                       kLonLats, kSurface, kShading};  // as the shader binds them
   for (GLuint binding = 0; binding < bindings.size(); ++binding)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffers_[bindings[binding]]);
   glDispatchCompute(GLuint(patches_), 1, 1);

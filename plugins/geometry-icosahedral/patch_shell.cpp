@@ -82,8 +82,7 @@ double leastFaceOnDistance(const PatchShell& shell, const glm::dvec3& eye) {
   const auto [oneLessDot, distance] = nearestAngle(shell.corners, eye);
   const double nearestRadius = std::clamp(distance * (1.0 - oneLessDot), shell.innerRadius, shell.outerRadius);
   const double nearest = distanceAtAngle(oneLessDot, distance, nearestRadius);
-  const double largestCosine =
-      nearest > 0.0 ? ((distance - shell.innerRadius) - distance * oneLessDot) / nearest : 1.0;
+  const double largestCosine = nearest > 0.0 ? ((distance - shell.innerRadius) - distance * oneLessDot) / nearest : 1.0;
   return nearest / std::sqrt(std::clamp(largestCosine, kGrazingCosine, 1.0));
 }
 

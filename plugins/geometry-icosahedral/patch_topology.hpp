@@ -18,8 +18,8 @@ struct PatchNode {
   std::array<std::int32_t, 4> children{-1, -1, -1, -1};  // corner 0's, 1's, 2's, then the middle one
   int level = 0;
   bool alive = false;
-  bool visible = false;      // set by the tree's visibility test
-  double distance = 0.0;     // m: the least face-on distance (patch_shell.hpp) from an eye that sees it
+  bool visible = false;                // set by the tree's visibility test
+  double distance = 0.0;               // m: the least face-on distance (patch_shell.hpp) from an eye that sees it
   std::optional<HeightRange> heights;  // the terrain's within it, once the tree asked (PatchHeights)
   bool leaf() const { return children[0] < 0; }
 };

@@ -22,7 +22,7 @@ int PatchTree::update(std::span<const ViewVolume> views, int operations) {
   views_ = views;
   const int made = refine(operations);
   if (made < operations) followCount(kFollowingStep);  // the count means something once the tree kept up
-  views_ = {};  // the views are the caller's: only this call may look at them
+  views_ = {};                                         // the views are the caller's: only this call may look at them
   return made;
 }
 
@@ -91,7 +91,8 @@ HeightRange PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& corne
   const std::int32_t parent = topology_[id].parent;
   if (parent < 0) return own;
   const PatchShell outer = shellOf(parent);
-  const HeightRange nested{std::max(own.lowest, outer.innerRadius - radius_), std::min(own.highest, outer.outerRadius - radius_)};
+  const HeightRange nested{std::max(own.lowest, outer.innerRadius - radius_),
+                           std::min(own.highest, outer.outerRadius - radius_)};
   return nested.lowest <= nested.highest ? nested : own;
 }
 
@@ -105,9 +106,9 @@ std::optional<double> PatchTree::viewedDistance(const PatchShell& shell) const {
   std::optional<double> distance;
   for (const ViewVolume& view : views_)
     if (!belowHorizon(shell, view.eye(), occluder) && view.mayHold(shell))
-      distance = std::min(distance.value_or(std::numeric_limits<double>::infinity()),
-                          leastFaceOnDistance(measuresOnTerrain() ? shell : PatchShell{shell.corners, radius_, radius_},
-                                              view.eye()));
+      distance = std::min(
+          distance.value_or(std::numeric_limits<double>::infinity()),
+          leastFaceOnDistance(measuresOnTerrain() ? shell : PatchShell{shell.corners, radius_, radius_}, view.eye()));
   return distance;
 }
 
@@ -188,8 +189,7 @@ int PatchTree::splitsAt(double detail) const {
 void PatchTree::splitKeepingOneLevel(std::int32_t leaf) {
   for (int e = 0; e < 3; ++e)
     if (topology_.across(leaf, e) < 0)
-      if (const std::int32_t coarser = topology_.coarserNeighbour(leaf, e); coarser >= 0)
-        splitKeepingOneLevel(coarser);
+      if (const std::int32_t coarser = topology_.coarserNeighbour(leaf, e); coarser >= 0) splitKeepingOneLevel(coarser);
   PatchNode& node = topology_[leaf];
   visibleCount_ -= int(node.visible);
   node.visible = false;

@@ -20,7 +20,8 @@ ViewVolume::ViewVolume(const View& view) : eye_(view.eye) {
 }
 
 bool ViewVolume::mayHold(const PatchShell& shell) const {
-  return std::ranges::none_of(planes_, [&](const Plane& plane) { return outsidePlane(shell, plane.normal, plane.offset); });
+  return std::ranges::none_of(planes_,
+                              [&](const Plane& plane) { return outsidePlane(shell, plane.normal, plane.offset); });
 }
 
 }  // namespace strata::icosahedral

@@ -32,8 +32,7 @@ namespace {
 glm::ivec2 gridOf(const NodeSetup& setup) {
   const std::optional<glm::ivec2> size = parseGridSize(setup.parameters.string("grid"));
   if (!size)
-    throw Error(setup.parameters.where("grid"),
-                "grid '" + setup.parameters.string("grid") + "' is not a grid size",
+    throw Error(setup.parameters.where("grid"), "grid '" + setup.parameters.string("grid") + "' is not a grid size",
                 "write columns x rows, each from " + std::to_string(kLeastGridSide) + " to " +
                     std::to_string(kGreatestGridSide) + ", e.g. grid: 1024x1024");
   return *size;
@@ -43,8 +42,13 @@ glm::ivec2 gridOf(const NodeSetup& setup) {
 ViewCamera viewCamera(const View& view) {
   const double top = view.near * std::tan(0.5 * view.verticalFov);
   const double right = top * double(view.width) / double(view.height);
-  return {.eye = view.eye, .planetToEye = view.planetToEye, .left = -right, .right = right, .bottom = -top,
-          .top = top, .near = view.near};
+  return {.eye = view.eye,
+          .planetToEye = view.planetToEye,
+          .left = -right,
+          .right = right,
+          .bottom = -top,
+          .top = top,
+          .near = view.near};
 }
 
 class PgmGeometry : public Node, public SurfaceGeometry {
@@ -56,12 +60,14 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
-    cast_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_cast.comp", gpu.shaders->expand("geometry/pgm_cast.comp")}});
+    cast_ =
+        ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_cast.comp", gpu.shaders->expand("geometry/pgm_cast.comp")}});
     displacement_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_displace.comp",
                                     gpu.shaders->expand("geometry/pgm_displace.comp", heights_.substitutions())}});
-    surface_ = ShaderProgram({{GL_VERTEX_SHADER, "geometry/pgm_grid.vert", gpu.shaders->expand("geometry/pgm_grid.vert")},
-                              {GL_FRAGMENT_SHADER, "geometry/pgm_surface_buffer.frag",
-                               gpu.shaders->expand("geometry/pgm_surface_buffer.frag")}});
+    surface_ =
+        ShaderProgram({{GL_VERTEX_SHADER, "geometry/pgm_grid.vert", gpu.shaders->expand("geometry/pgm_grid.vert")},
+                       {GL_FRAGMENT_SHADER, "geometry/pgm_surface_buffer.frag",
+                        gpu.shaders->expand("geometry/pgm_surface_buffer.frag")}});
     castBuffers_.emplace(grid_);
     mesh_.emplace(grid_);
     visibleRadius_.emplace(*gpu.shaders);
@@ -70,8 +76,12 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   }
 
   GeometryStatistics statistics() const override {
-    return {0, std::uint64_t(grid_.x) * std::uint64_t(grid_.y), mesh_->triangles(), visibilityMs_,
-            gridTimer_->milliseconds(), rasterisationTimer_->milliseconds()};
+    return {0,
+            std::uint64_t(grid_.x) * std::uint64_t(grid_.y),
+            mesh_->triangles(),
+            visibilityMs_,
+            gridTimer_->milliseconds(),
+            rasterisationTimer_->milliseconds()};
   }
 
   void render(const FrameState& frame) override;
@@ -96,7 +106,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   std::optional<GpuTimer> gridTimer_;
   std::optional<GpuTimer> rasterisationTimer_;
   using ReducedView = std::pair<std::uint64_t, View>;  // a frame's index and view
-  std::deque<ReducedView> reducedViews_;  // the frames whose reductions may be in flight
+  std::deque<ReducedView> reducedViews_;               // the frames whose reductions may be in flight
   double visibilityMs_ = 0.0;
   Framebuffer gbuffer_;  // the deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_
 };
@@ -144,7 +154,7 @@ void PgmGeometry::rasterise(const View& view) {
   if (gbuffer_.width() != view.width || gbuffer_.height() != view.height)
     gbuffer_ = Framebuffer(view.width, view.height, {GL_RGBA32F, GL_RGBA16F, GL_R32F}, GL_DEPTH_COMPONENT32F);
   gbuffer_.bind();
-  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
+  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;                   // reversed depth: 0 is infinitely far
   const float noHeight[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};  // visible_radius.hpp
   glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
   glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
@@ -166,15 +176,22 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "geometry.pgm";
   type.category = NodeCategory::Geometry;
-  type.summary = "Projective grid mapping: a grid of rays from the eye cast onto reference spheres, displaced and "
-                 "rasterised each frame";
+  type.summary =
+      "Projective grid mapping: a grid of rays from the eye cast onto reference spheres, displaced and "
+      "rasterised each frame";
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = {
-      {.name = "grid", .type = ParameterType::String, .defaultValue = std::string("1024x1024"),
+      {.name = "grid",
+       .type = ParameterType::String,
+       .defaultValue = std::string("1024x1024"),
        .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the thesis's largest, "
               "is a ray for every two pixels at 1920x1080; a smaller grid undersamples sharp peaks)"},
-      {.name = "zeta", .type = ParameterType::Real, .defaultValue = 0.9, .minimum = 0.0, .maximum = 1.0,
+      {.name = "zeta",
+       .type = ParameterType::Real,
+       .defaultValue = 0.9,
+       .minimum = 0.0,
+       .maximum = 1.0,
        .doc = "where rays start to turn from the primary sphere to the secondary one behind the horizon, as a "
               "share of the angle to the primary's horizon (0.9 is the thesis's)"},
   };

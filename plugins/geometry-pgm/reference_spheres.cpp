@@ -14,8 +14,7 @@ double clampPrimaryRadius(double primaryRadius, double eyeDistance) {
 // The back-facing hit of the primary tangent ray on the maximum sphere, which is never below the primary
 // one: at r_max = r_p, gamma0 is the primary horizon, pi/2 - tau0.
 double outermostNormalAngle(double eyeDistance, double primaryRadius, double maximumRadius) {
-  return backNormalAngle(eyeDistance, std::max(maximumRadius, primaryRadius),
-                         tangentAngle(eyeDistance, primaryRadius));
+  return backNormalAngle(eyeDistance, std::max(maximumRadius, primaryRadius), tangentAngle(eyeDistance, primaryRadius));
 }
 
 ReferenceSpheres referenceSpheres(double eyeDistance, double primaryRadius, double maximumRadius) {

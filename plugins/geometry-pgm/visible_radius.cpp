@@ -26,8 +26,8 @@ float fromOrderedBits(std::uint32_t ordered) {
 }  // namespace
 
 VisibleRadius::VisibleRadius(const ShaderLibrary& library)
-    : program_({{GL_COMPUTE_SHADER, "geometry/pgm_least_radius.comp",
-                 library.expand("geometry/pgm_least_radius.comp")}}) {
+    : program_(
+          {{GL_COMPUTE_SHADER, "geometry/pgm_least_radius.comp", library.expand("geometry/pgm_least_radius.comp")}}) {
   glCreateBuffers(1, &least_);
   glNamedBufferStorage(least_, sizeof(std::uint32_t), nullptr, 0);
   const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
@@ -50,8 +50,7 @@ VisibleRadius::~VisibleRadius() {
 // the new fence covers both. The barrier makes the shader's atomics visible to the copy, and to the next
 // frame's clear.
 void VisibleRadius::reduce(GLuint heights, int width, int height, std::uint64_t frame) {
-  glClearNamedBufferSubData(least_, GL_R32UI, 0, sizeof(std::uint32_t), GL_RED_INTEGER, GL_UNSIGNED_INT,
-                            &kUncovered);
+  glClearNamedBufferSubData(least_, GL_R32UI, 0, sizeof(std::uint32_t), GL_RED_INTEGER, GL_UNSIGNED_INT, &kUncovered);
   program_.use();
   program_.set("size", glm::ivec2(width, height));
   glBindTextureUnit(0, heights);

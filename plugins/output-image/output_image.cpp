@@ -21,7 +21,9 @@ namespace {
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
-      : geometry_(setup.input("geometry")->geometry()), parameters_(setup.parameters), displayGlsl_(displayGlsl(setup)),
+      : geometry_(setup.input("geometry")->geometry()),
+        parameters_(setup.parameters),
+        displayGlsl_(displayGlsl(setup)),
         translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
   }
@@ -35,13 +37,13 @@ class ImageOutput : public Node, public FrameOutput {
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
                     (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
     }
-    program_ = ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
-                              {GL_FRAGMENT_SHADER, "output/composite.frag",
-                               gpu.shaders->expand("output/composite.frag",
-                                                   {{"STRATA_DISPLAY_GLSL", displayGlsl_},
-                                                    {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                                                    {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                                                    {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+    program_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
+         {GL_FRAGMENT_SHADER, "output/composite.frag",
+          gpu.shaders->expand("output/composite.frag", {{"STRATA_DISPLAY_GLSL", displayGlsl_},
+                                                        {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                        {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                                                        {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
   }
 
@@ -79,7 +81,8 @@ class ImageOutput : public Node, public FrameOutput {
   // pipeline's `colour: {config}`, else the config $OCIO names, else Strata's own, whose default is the sRGB
   // display's Standard view.
   static std::string displayGlsl(const NodeSetup& setup) {
-    const ColourConfig config = ColourConfig::load(setup.colour.config, setup.colour.config.empty() ? setup.where : setup.colour.where);
+    const ColourConfig config =
+        ColourConfig::load(setup.colour.config, setup.colour.config.empty() ? setup.where : setup.colour.where);
     const std::string& display = setup.parameters.string("display");
     const std::string chosen = display.empty() ? config.defaultDisplay() : display;
     const std::string& view = setup.parameters.string("view");
@@ -115,32 +118,70 @@ NodeTypeDeclaration declaration() {
   type.summary = "Composes surface layers over a geometry, lights them and delivers 8-bit sRGB frames (PNG)";
   type.inputs = {
       {.name = "geometry", .type = PortType::Geometry, .doc = "the surface to colour (a geometry generator)"},
-      {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color, LayerKind::Luminance},
-       .list = true, .optional = true,
+      {.name = "surface",
+       .type = PortType::Layer,
+       .kinds = {LayerKind::Color, LayerKind::Luminance},
+       .list = true,
+       .optional = true,
        .doc = "layers draped on it, blended by coverage where they overlap; none: grey"},
-      {.name = "translucent", .type = PortType::Geometry, .list = true, .optional = true,
+      {.name = "translucent",
+       .type = PortType::Geometry,
+       .list = true,
+       .optional = true,
        .doc = "surfaces laid translucent over it where they lie nearer, farthest first (a stack's upper layers)"},
-      {.name = "translucent_surface", .type = PortType::Layer, .kinds = {LayerKind::Color}, .list = true,
-       .optional = true, .doc = "one colour layer per translucent geometry, in the same order"},
+      {.name = "translucent_surface",
+       .type = PortType::Layer,
+       .kinds = {LayerKind::Color},
+       .list = true,
+       .optional = true,
+       .doc = "one colour layer per translucent geometry, in the same order"},
   };
   // The light and the opacity are uniforms, changed the next frame; the display and view are GLSL.
   type.parameters = {
-      {.name = "shading", .type = ParameterType::Choice, .defaultValue = std::string("lambert"),
-       .doc = "lambert: lit by one distant light; none: the layers' colours as they are", .choices = {"lambert", "none"},
+      {.name = "shading",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("lambert"),
+       .doc = "lambert: lit by one distant light; none: the layers' colours as they are",
+       .choices = {"lambert", "none"},
        .live = true},
-      {.name = "light_azimuth", .type = ParameterType::Real, .defaultValue = 315.0, .minimum = 0.0, .maximum = 360.0,
-       .units = "deg", .doc = "where the light comes from, clockwise from the top of the image", .live = true},
-      {.name = "light_elevation", .type = ParameterType::Real, .defaultValue = 45.0, .minimum = 0.0, .maximum = 90.0,
-       .units = "deg", .doc = "the light's angle above the image plane", .live = true},
-      {.name = "ambient", .type = ParameterType::Real, .defaultValue = 0.25, .minimum = 0.0, .maximum = 1.0,
+      {.name = "light_azimuth",
+       .type = ParameterType::Real,
+       .defaultValue = 315.0,
+       .minimum = 0.0,
+       .maximum = 360.0,
+       .units = "deg",
+       .doc = "where the light comes from, clockwise from the top of the image",
+       .live = true},
+      {.name = "light_elevation",
+       .type = ParameterType::Real,
+       .defaultValue = 45.0,
+       .minimum = 0.0,
+       .maximum = 90.0,
+       .units = "deg",
+       .doc = "the light's angle above the image plane",
+       .live = true},
+      {.name = "ambient",
+       .type = ParameterType::Real,
+       .defaultValue = 0.25,
+       .minimum = 0.0,
+       .maximum = 1.0,
        .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable",
        .live = true},
       // 0.5: what lies behind shows as clearly as the translucent surface itself
-      {.name = "opacity", .type = ParameterType::Real, .defaultValue = 0.5, .minimum = 0.0, .maximum = 1.0,
-       .doc = "how much of what lies behind each translucent surface it hides", .live = true},
-      {.name = "display", .type = ParameterType::String, .defaultValue = std::string(),
+      {.name = "opacity",
+       .type = ParameterType::Real,
+       .defaultValue = 0.5,
+       .minimum = 0.0,
+       .maximum = 1.0,
+       .doc = "how much of what lies behind each translucent surface it hides",
+       .live = true},
+      {.name = "display",
+       .type = ParameterType::String,
+       .defaultValue = std::string(),
        .doc = "the OpenColorIO display the frame is for; empty: the config's default (Strata's: sRGB)"},
-      {.name = "view", .type = ParameterType::String, .defaultValue = std::string(),
+      {.name = "view",
+       .type = ParameterType::String,
+       .defaultValue = std::string(),
        .doc = "the display's view; empty: its default (Strata's sRGB: Standard; Raw shows linear values as they are)"},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<ImageOutput>(setup); };

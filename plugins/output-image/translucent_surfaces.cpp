@@ -29,10 +29,17 @@ TranslucentSurfaces::TranslucentSurfaces(const NodeSetup& setup) {
 // that has no data the surface is not there (its geometry holds the bare sphere).
 std::string TranslucentSurfaces::colourOf(std::size_t i) const {
   const std::string n = index(i);
-  return "vec4 translucentColour" + n + "(ivec2 pixel) {\n"
-         "  SurfacePoint p = surfacePointAt(translucentSurface" + n + ", translucentShading" + n + ", pixel);\n"
-         "  vec4 v = " + layers_[i]->samplingFunction() + "(p);\n"
-         "  return vec4(v.rgb * lightOn(texelFetch(translucentShading" + n + ", pixel, 0).xyz), v.a);\n"
+  return "vec4 translucentColour" + n +
+         "(ivec2 pixel) {\n"
+         "  SurfacePoint p = surfacePointAt(translucentSurface" +
+         n + ", translucentShading" + n +
+         ", pixel);\n"
+         "  vec4 v = " +
+         layers_[i]->samplingFunction() +
+         "(p);\n"
+         "  return vec4(v.rgb * lightOn(texelFetch(translucentShading" +
+         n +
+         ", pixel, 0).xyz), v.a);\n"
          "}\n";
 }
 
@@ -43,20 +50,29 @@ std::string TranslucentSurfaces::over() const {
   std::string depths, colours;
   for (std::size_t i = 0; i < geometries_.size(); ++i) {
     const std::string k = index(i);
-    depths += "  d[" + k + "] = texelFetch(translucentShading" + k + ", pixel, 0).a > 0.0 ? texelFetch(translucentDepth" +
-              k + ", pixel, 0).r : 0.0;\n  order[" + k + "] = " + k + ";\n";
+    depths += "  d[" + k + "] = texelFetch(translucentShading" + k +
+              ", pixel, 0).a > 0.0 ? texelFetch(translucentDepth" + k + ", pixel, 0).r : 0.0;\n  order[" + k +
+              "] = " + k + ";\n";
     colours += "    if (order[k] == " + k + ") c = translucentColour" + k + "(pixel);\n";
   }
   return "vec3 translucentOver(ivec2 pixel, vec3 colour, float depth) {\n"
-         "  float d[" + n + "];\n"
-         "  int order[" + n + "];\n" + depths +
-         "  for (int i = 1; i < " + n + "; ++i)\n"
+         "  float d[" +
+         n +
+         "];\n"
+         "  int order[" +
+         n + "];\n" + depths + "  for (int i = 1; i < " + n +
+         "; ++i)\n"
          "    for (int j = i; j > 0 && d[order[j]] < d[order[j - 1]]; --j) {\n"
          "      int swapped = order[j]; order[j] = order[j - 1]; order[j - 1] = swapped;\n"
          "    }\n"
-         "  for (int k = 0; k < " + n + "; ++k) {\n"
-         "    if (d[order[k]] <= depth * " + kNearer + ") continue;\n"
-         "    vec4 c = vec4(0.0);\n" + colours +
+         "  for (int k = 0; k < " +
+         n +
+         "; ++k) {\n"
+         "    if (d[order[k]] <= depth * " +
+         kNearer +
+         ") continue;\n"
+         "    vec4 c = vec4(0.0);\n" +
+         colours +
          "    colour = mix(colour, c.rgb, translucentOpacity * c.a);\n"
          "  }\n"
          "  return colour;\n"

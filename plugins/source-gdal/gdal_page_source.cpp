@@ -11,7 +11,10 @@ namespace strata::gdal {
 
 GdalPageSource::GdalPageSource(std::unique_ptr<GDALDataset> dataset, LayerKind kind,
                                std::optional<ColourEncoding> encoding, std::shared_ptr<const MemoryFile> memoryFile)
-    : memoryFile_(std::move(memoryFile)), path_(dataset->GetDescription()), kind_(kind), encoding_(std::move(encoding)),
+    : memoryFile_(std::move(memoryFile)),
+      path_(dataset->GetDescription()),
+      kind_(kind),
+      encoding_(std::move(encoding)),
       pyramid_(dataset->GetRasterXSize(), dataset->GetRasterYSize()) {
   idle_.push_back(std::move(dataset));
 }

@@ -123,9 +123,9 @@ void refuseNowhere(GDALDataset& dataset, const Projection& projection, const std
   else if (std::min(angleBetween(*centre, *east), angleBetween(*centre, *south)) < kFinestTexelAngle)
     problem = "makes its texels finer than 1e-12 rad of the body, where doubles no longer hold them apart";
   if (problem.empty()) return;
-  throw Error(where, "'" + describe(dataset) + "' has the geotransform " + geotransformText(t) + ", which " + problem,
-              "correct it: gdal_edit.py -a_ullr ulx uly lrx lry " + describe(dataset) +
-                  " (gdalinfo shows what it says now)");
+  throw Error(
+      where, "'" + describe(dataset) + "' has the geotransform " + geotransformText(t) + ", which " + problem,
+      "correct it: gdal_edit.py -a_ullr ulx uly lrx lry " + describe(dataset) + " (gdalinfo shows what it says now)");
 }
 
 }  // namespace

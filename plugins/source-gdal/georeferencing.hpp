@@ -12,11 +12,11 @@ namespace strata::gdal {
 
 // What the pipeline says about where a raster lies, beside what the file says.
 struct GeoreferenceOptions {
-  std::string crs;             // replaces the file's CRS when not empty (WKT, PROJ string, EPSG:code)
+  std::string crs;  // replaces the file's CRS when not empty (WKT, PROJ string, EPSG:code)
   SourceLocation crsWhere;
   std::vector<double> extent;  // [west, south, east, north] in degrees for a lon/lat raster, or empty
   SourceLocation extentWhere;
-  SourceLocation fileWhere;    // the `path` parameter, for problems of the file itself
+  SourceLocation fileWhere;  // the `path` parameter, for problems of the file itself
 };
 
 // The projection and geotransform of `dataset`, a raster of `dataset`'s size: its CRS recognised as one of

@@ -10,7 +10,6 @@
 namespace strata::gdal {
 namespace {
 
-
 std::string item(GDALDataset& dataset, const char* name) {
   const char* value = dataset.GetMetadataItem(name);
   return value ? value : "";
@@ -38,7 +37,8 @@ std::optional<healpix::FaceWindow> windowOf(GDALDataset& dataset, std::int64_t n
   const std::string size = std::to_string(width) + "x" + std::to_string(height) + " texels";
   if (!dataset.GetMetadataItem(healpix::kWindowItem)) {
     if (nside > healpix::kMostNside)
-      fail(dataset, where, "its nside " + std::to_string(nside) + " is above 2^26 and it has no " + healpix::kWindowItem);
+      fail(dataset, where,
+           "its nside " + std::to_string(nside) + " is above 2^26 and it has no " + healpix::kWindowItem);
     if (width != 12 * nside || height != nside)
       fail(dataset, where, "it is " + size + ", not 12 faces of nside " + std::to_string(nside) + " side by side");
     return std::nullopt;
@@ -46,9 +46,9 @@ std::optional<healpix::FaceWindow> windowOf(GDALDataset& dataset, std::int64_t n
   const std::string text = item(dataset, healpix::kWindowItem);
   std::optional<healpix::FaceWindow> window = healpix::windowOf(text, nside, width, height);
   if (!window)
-    fail(dataset, where, std::string(healpix::kWindowItem) + " '" + text + "' and its " + size +
-                             " are not a window of one face (face 0 to 11, first column and row) at nside " +
-                             std::to_string(nside));
+    fail(dataset, where,
+         std::string(healpix::kWindowItem) + " '" + text + "' and its " + size +
+             " are not a window of one face (face 0 to 11, first column and row) at nside " + std::to_string(nside));
   return window;
 }
 
@@ -75,11 +75,11 @@ std::optional<HealpixPyramidFile> healpixPyramidOf(GDALDataset& dataset, const P
   if (!window)
     ranges = healpix::PageRanges::fromMetadata(
         nside, [&](const std::string& name) { return dataset.GetMetadataItem(name.c_str()); });
-  return HealpixPyramidFile{
-      nside, window,
-      {healpix::stripProjection(planeOf(dataset, plugins, where)),
-       window ? healpix::windowGeotransform(nside, *window) : healpix::stripGeotransform(nside)},
-      ranges ? std::make_shared<const healpix::PageRanges>(std::move(*ranges)) : nullptr};
+  return HealpixPyramidFile{nside,
+                            window,
+                            {healpix::stripProjection(planeOf(dataset, plugins, where)),
+                             window ? healpix::windowGeotransform(nside, *window) : healpix::stripGeotransform(nside)},
+                            ranges ? std::make_shared<const healpix::PageRanges>(std::move(*ranges)) : nullptr};
 }
 
 }  // namespace strata::gdal

@@ -16,7 +16,7 @@ namespace strata::gdal {
 struct HealpixPyramidFile {
   std::int64_t nside = 0;
   std::optional<healpix::FaceWindow> window;  // the part of one face it holds, if not the whole strip
-  RasterGeoreference georeference;  // the strip's projection, and the geotransform of the strip or the window
+  RasterGeoreference georeference;            // the strip's projection, and the geotransform of the strip or the window
   std::shared_ptr<const healpix::PageRanges> ranges;  // the pages' true ranges, where the file holds them
 };
 

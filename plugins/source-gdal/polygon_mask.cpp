@@ -72,7 +72,8 @@ Grid gridOver(const OGREnvelope& extent, int texels) {
   const double size = std::max(spanX, spanY) / texels;
   const int margin = marginOf(texels);
   return {{extent.MinX - margin * size, size, 0.0, extent.MaxY + margin * size, 0.0, -size},
-          int(std::ceil(spanX / size)) + 2 * margin, int(std::ceil(spanY / size)) + 2 * margin};
+          int(std::ceil(spanX / size)) + 2 * margin,
+          int(std::ceil(spanY / size)) + 2 * margin};
 }
 
 void burn(GDALDataset& raster, const Polygons& polygons, const SourceLocation& where, const std::string& file) {
@@ -98,8 +99,9 @@ std::unique_ptr<GDALDataset> createRaster(const std::string& path, const Grid& g
   std::unique_ptr<GDALDataset> raster(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
       path.c_str(), grid.width, grid.height, 1, GDT_Float32, options.List()));
   if (!raster)
-    throw Error(where, "GDAL cannot make the " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
-                           " mask of '" + file + "': " + CPLGetLastErrorMsg(),
+    throw Error(where,
+                "GDAL cannot make the " + std::to_string(grid.width) + "x" + std::to_string(grid.height) +
+                    " mask of '" + file + "': " + CPLGetLastErrorMsg(),
                 "give fewer `texels`");
   raster->SetGeoTransform(const_cast<double*>(grid.geotransform.data()));
   return raster;
@@ -127,7 +129,8 @@ PolygonMask rasterisePolygons(GDALDataset& vector, const PolygonMaskOptions& opt
   if (!layer.GetSpatialRef() && !options.crsGiven)
     throw Error(options.fileWhere, named + " has no CRS, so where its polygons lie is unknown",
                 "give `projection:` (a PROJ string or EPSG:code), or assign one: "
-                "ogr2ogr -a_srs EPSG:4326 out.gpkg " + file);
+                "ogr2ogr -a_srs EPSG:4326 out.gpkg " +
+                    file);
   const Polygons polygons = polygonsOf(layer);
   if (polygons.geometries.empty() || !(polygons.extent.MaxX > polygons.extent.MinX) ||
       !(polygons.extent.MaxY > polygons.extent.MinY))
@@ -137,8 +140,8 @@ PolygonMask rasterisePolygons(GDALDataset& vector, const PolygonMaskOptions& opt
   PolygonMask mask{std::make_shared<const MemoryFile>("/vsimem/strata-polygon-mask-" + std::to_string(made++) + ".tif"),
                    nullptr};
   {
-    std::unique_ptr<GDALDataset> raster = createRaster(mask.file->path(), gridOver(polygons.extent, options.texels),
-                                                       options.fileWhere, file);
+    std::unique_ptr<GDALDataset> raster =
+        createRaster(mask.file->path(), gridOver(polygons.extent, options.texels), options.fileWhere, file);
     if (const OGRSpatialReference* crs = layer.GetSpatialRef()) raster->SetSpatialRef(crs);
     burn(*raster, polygons, options.fileWhere, file);
     buildOverviews(*raster, options.fileWhere, file);

@@ -12,7 +12,7 @@ namespace strata::gdal {
 
 // Which polygons of a vector file to burn into a mask, and how finely.
 struct PolygonMaskOptions {
-  std::string layer;         // the vector layer's name; empty: the file's first
+  std::string layer;  // the vector layer's name; empty: the file's first
   SourceLocation layerWhere;
   int texels = 0;            // along the longer side of the polygons' extent
   bool crsGiven = false;     // the pipeline gives the CRS (`projection`), so the file need not

@@ -22,8 +22,8 @@ std::vector<float> readReduced(GDALRasterBand& band, const RasterWindow& window,
   INIT_RASTERIO_EXTRA_ARG(extra);
   extra.eResampleAlg = GRIORA_Average;
   CPLErrorReset();
-  if (band.RasterIO(GF_Read, window.x, window.y, window.width, window.height, values.data(), width, height,
-                    GDT_Float32, 0, 0, &extra) != CE_None)
+  if (band.RasterIO(GF_Read, window.x, window.y, window.width, window.height, values.data(), width, height, GDT_Float32,
+                    0, 0, &extra) != CE_None)
     throw std::runtime_error(CPLGetLastErrorMsg());
   return values;
 }
@@ -53,8 +53,7 @@ std::vector<float> boxAveraged(const std::vector<float>& values, int width, int 
 // edges then lie within 1/kFiner of a texel of the level. 4: that, at 16 times the read, on edge pages only.
 constexpr int kFiner = 4;
 
-std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, int width, int height,
-                            bool refineEdges) {
+std::vector<float> readBand(GDALRasterBand& band, const RasterWindow& window, int width, int height, bool refineEdges) {
   std::vector<float> values = readReduced(band, window, width, height);
   const int finer = std::min({kFiner, window.width / width, window.height / height});
   if (!refineEdges || finer < 2 || !holdsAnEdge(values)) return values;
@@ -114,8 +113,9 @@ void readValues(GDALDataset& dataset, LayerKind kind, const RasterWindow& window
 void checkColourBands(GDALDataset& dataset, const SourceLocation& where) {
   const GDALDataType type = dataset.GetRasterBand(1)->GetRasterDataType();
   if (type != GDT_Byte && type != GDT_UInt16)
-    throw Error(where, "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) +
-                           " values, but a colour layer needs 8 or 16-bit bands",
+    throw Error(where,
+                "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) +
+                    " values, but a colour layer needs 8 or 16-bit bands",
                 "use `kind: scalar` for measurements, or convert: gdal_translate -ot Byte -scale");
 }
 
@@ -133,8 +133,8 @@ void checkNodata(GDALRasterBand& band, const SourceLocation& where) {
   std::snprintf(value.data(), value.size(), "%.9g", nodata);
   const std::string file = band.GetDataset() ? band.GetDataset()->GetDescription() : "";
   throw Error(where,
-              "'" + file + "' band " + std::to_string(band.GetBand()) + " declares nodata " + value.data() + ", which no " +
-                  GDALGetDataTypeName(type) + " sample can hold, so it would mask nothing",
+              "'" + file + "' band " + std::to_string(band.GetBand()) + " declares nodata " + value.data() +
+                  ", which no " + GDALGetDataTypeName(type) + " sample can hold, so it would mask nothing",
               "set the value the file really uses: gdal_edit.py -a_nodata VALUE " + file +
                   ", or remove it: gdal_edit.py -unsetnodata " + file);
 }

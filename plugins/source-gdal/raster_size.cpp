@@ -54,11 +54,11 @@ void checkPageableSize(GDALDataset& dataset, const SourceLocation& where) {
                     " MiB, too large to read pages from (at most " + mebibytes(kMostBlockBytes) + " MiB)",
                 "write it as tiles: `strata tile " + file + " OUTPUT.tif`, or gdal_translate -co TILED=YES");
   if (coarsestPageTexels(*dataset.GetRasterBand(1)) > kMostTexelsAveraged)
-    throw Error(where,
-                "'" + file + "' (" + size + ") has no overviews down to a page, so its coarsest page would average " +
-                    "more than 2^30 texels",
-                "write it as a tiled pyramid: `strata tile " + file + " OUTPUT.tif`, or add overviews: gdaladdo " +
-                    file);
+    throw Error(
+        where,
+        "'" + file + "' (" + size + ") has no overviews down to a page, so its coarsest page would average " +
+            "more than 2^30 texels",
+        "write it as a tiled pyramid: `strata tile " + file + " OUTPUT.tif`, or add overviews: gdaladdo " + file);
 }
 
 }  // namespace strata::gdal

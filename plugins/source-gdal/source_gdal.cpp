@@ -30,8 +30,11 @@ namespace {
 class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
-      : parameters_(setup.parameters), plugins_(*setup.plugins), kind_(kindOf(setup)),
-        encoding_(colourEncodingOf(setup, kind_)), layer_(setup.id, kind_) {
+      : parameters_(setup.parameters),
+        plugins_(*setup.plugins),
+        kind_(kindOf(setup)),
+        encoding_(colourEncodingOf(setup, kind_)),
+        layer_(setup.id, kind_) {
     layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
   }
 
@@ -180,38 +183,59 @@ NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
   type.type = "source.gdal";
   type.category = NodeCategory::Source;
-  type.summary = "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection, "
-                 "or a mask from the polygons of any vector file it opens (GeoJSON, Shapefile, GeoPackage, ...)";
+  type.summary =
+      "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection, "
+      "or a mask from the polygons of any vector file it opens (GeoJSON, Shapefile, GeoPackage, ...)";
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "path", .type = ParameterType::Path,
+      {.name = "path",
+       .type = ParameterType::Path,
        .doc = "the raster file, or a vector file of polygons (with kind: mask); relative to the pipeline file"},
-      {.name = "kind", .type = ParameterType::Choice, .defaultValue = std::string("color"),
+      {.name = "kind",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("color"),
        .doc = "what the values are: color (8/16-bit, see colorspace) or one-channel height, scalar, luminance, mask",
        .choices = {"color", "height", "scalar", "luminance", "mask"}},
       // srgb: 8-bit imagery (cameras, the web, map tiles) is almost always sRGB-encoded.
-      {.name = "colorspace", .type = ParameterType::String, .defaultValue = std::string("srgb"),
+      {.name = "colorspace",
+       .type = ParameterType::String,
+       .defaultValue = std::string("srgb"),
        .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's OpenColorIO "
               "config (Strata's: srgb, gamma22, linear, raw); converted to scene-linear on the GPU"},
-      {.name = "scale", .type = ParameterType::Real, .defaultValue = 1.0,
+      {.name = "scale",
+       .type = ParameterType::Real,
+       .defaultValue = 1.0,
        .doc = "one-channel kinds: multiplies raw values (vertical exaggeration, or counts to metres)"},
-      {.name = "offset", .type = ParameterType::Real, .defaultValue = 0.0,
+      {.name = "offset",
+       .type = ParameterType::Real,
+       .defaultValue = 0.0,
        .doc = "one-channel kinds: added after scale (metres for heights)"},
-      {.name = "extent", .type = ParameterType::RealList, .defaultValue = std::vector<double>{}, .minimum = -360.0,
-       .maximum = 360.0, .units = "deg",
+      {.name = "extent",
+       .type = ParameterType::RealList,
+       .defaultValue = std::vector<double>{},
+       .minimum = -360.0,
+       .maximum = 360.0,
+       .units = "deg",
        .doc = "[west, south, east, north] of a longitude/latitude raster; empty: from its geotransform (a bare 2:1 "
               "raster is global)",
        .count = 4},
-      {.name = "projection", .type = ParameterType::String, .defaultValue = std::string(),
+      {.name = "projection",
+       .type = ParameterType::String,
+       .defaultValue = std::string(),
        .doc = "the raster's CRS when the file's is missing or wrong: WKT, a PROJ string or EPSG:code; empty: the "
               "file's CRS (none: longitude/latitude)"},
-      {.name = "vector_layer", .type = ParameterType::String, .defaultValue = std::string(),
+      {.name = "vector_layer",
+       .type = ParameterType::String,
+       .defaultValue = std::string(),
        .doc = "vector files: the layer whose polygons make the mask; empty: the file's first (GeoJSON and "
               "Shapefiles have one)"},
       // 2048: the polygons' edges within half a texel of 1/2048 of their extent, under a pixel wherever the
       // whole mask fits on a 1920-pixel screen, in 16 MB (Float32); finer edges up close want a larger value,
       // up to 8192 (256 MB, held in memory while the node lives).
-      {.name = "texels", .type = ParameterType::Integer, .defaultValue = std::int64_t{2048}, .minimum = 16.0,
+      {.name = "texels",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t{2048},
+       .minimum = 16.0,
        .maximum = 8192.0,
        .doc = "vector files: the mask raster's texels across the polygons' longer side (how sharp their edges are)"},
   };

@@ -60,7 +60,8 @@ void visitDrawnTexels(GDALRasterBand& band, const DrawnTexel& visit) {
 ValueRange drawnRange(GDALRasterBand& band) {
   std::optional<ValueRange> range;
   visitDrawnTexels(band, [&](int, int, double value) {
-    range = range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
+    range =
+        range ? ValueRange{std::min(range->least, value), std::max(range->greatest, value)} : ValueRange{value, value};
   });
   return range.value_or(ValueRange{0.0, 0.0});
 }
@@ -105,7 +106,8 @@ std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset) {
   if (!countable(dataset)) return storedBlockRanges(dataset);
   auto blocks = std::make_shared<BlockRanges>(dataset.GetRasterXSize(), dataset.GetRasterYSize());
   const QuietGdalErrors quiet;  // as exactRawRange()
-  visitDrawnTexels(*dataset.GetRasterBand(1), [&](int column, int row, double value) { blocks->count(column, row, value); });
+  visitDrawnTexels(*dataset.GetRasterBand(1),
+                   [&](int column, int row, double value) { blocks->count(column, row, value); });
   return blocks;
 }
 

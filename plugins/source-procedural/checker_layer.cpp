@@ -23,15 +23,32 @@ void CheckerLayer::follow(const View& view) {
 // (F(x + w/2) - F(x - w/2)) / w; the board is the product of the two axes' waves, filtered axis by axis.
 std::string CheckerLayer::glsl() const {
   const std::string& p = prefix_;
-  return "uniform vec2 " + p + "_fraction;\n"
-         "uniform int " + p + "_parity;\n"
-         "uniform vec2 " + p + "_cellsPerRadian;\n"
-         "vec2 " + p + "_wave(vec2 x) { return 1.0 - abs(1.0 - mod(x, 2.0)); }\n"
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec2 cells = " + p + "_fraction + p.fromReference * " + p + "_cellsPerRadian;\n"
-         "  vec2 w = max((abs(p.lonlatDx) + abs(p.lonlatDy)) * " + p + "_cellsPerRadian, vec2(1e-4));\n"
-         "  vec2 mean = (" + p + "_wave(cells + 0.5 * w) - " + p + "_wave(cells - 0.5 * w)) / w;\n"
-         "  float light = 0.5 + 0.5 * mean.x * mean.y * (" + p + "_parity == 1 ? -1.0 : 1.0);\n"
+  return "uniform vec2 " + p +
+         "_fraction;\n"
+         "uniform int " +
+         p +
+         "_parity;\n"
+         "uniform vec2 " +
+         p +
+         "_cellsPerRadian;\n"
+         "vec2 " +
+         p +
+         "_wave(vec2 x) { return 1.0 - abs(1.0 - mod(x, 2.0)); }\n"
+         "vec4 " +
+         p +
+         "(SurfacePoint p) {\n"
+         "  vec2 cells = " +
+         p + "_fraction + p.fromReference * " + p +
+         "_cellsPerRadian;\n"
+         "  vec2 w = max((abs(p.lonlatDx) + abs(p.lonlatDy)) * " +
+         p +
+         "_cellsPerRadian, vec2(1e-4));\n"
+         "  vec2 mean = (" +
+         p + "_wave(cells + 0.5 * w) - " + p +
+         "_wave(cells - 0.5 * w)) / w;\n"
+         "  float light = 0.5 + 0.5 * mean.x * mean.y * (" +
+         p +
+         "_parity == 1 ? -1.0 : 1.0);\n"
          "  return vec4(mix(vec3(0.03), vec3(0.8), light), 1.0);\n"
          "}\n";
 }

@@ -18,8 +18,8 @@ inline constexpr int kLatticeOctaves = 24;  // the most octaves a planet sums (s
 struct PlanetLattice {
   std::array<glm::ivec3, kLatticeOctaves> anchor{};
   std::array<glm::dvec3, kLatticeOctaves> local{};
-  int octaves = 0;  // those whose anchor fits in an int: the finest of a tiny wavelength may not
-  glm::dmat3 frame{1.0};  // columns: east, north, up of the reference
+  int octaves = 0;                // those whose anchor fits in an int: the finest of a tiny wavelength may not
+  glm::dmat3 frame{1.0};          // columns: east, north, up of the reference
   glm::dvec2 latitude{0.0, 1.0};  // sin and cos of the reference's
 };
 

@@ -17,10 +17,8 @@ struct ColourStop {
 // Sea: deep blue to shallow; land: green lowland, brown highland, grey rock, white snow (the highest 1% of
 // the surface). The coast is a hard edge between the two.
 const std::array<ColourStop, 2> kSea{{{-0.5, {0.004, 0.015, 0.08}}, {0.0, {0.03, 0.18, 0.42}}}};
-const std::array<ColourStop, 4> kLand{{{0.0, {0.05, 0.20, 0.03}},
-                                       {0.2, {0.38, 0.24, 0.07}},
-                                       {0.4, {0.22, 0.18, 0.15}},
-                                       {0.5, {0.85, 0.87, 0.90}}}};
+const std::array<ColourStop, 4> kLand{
+    {{0.0, {0.05, 0.20, 0.03}}, {0.2, {0.38, 0.24, 0.07}}, {0.4, {0.22, 0.18, 0.15}}, {0.5, {0.85, 0.87, 0.90}}}};
 // Contour lines: nearly black, a contrast of 10:1 or more against every ramp colour but the deepest sea
 // (4:1), and 16% of the interval wide in height: at a global raster's 10 km pixels that is a line about a
 // pixel wide, whose shape shows how each projection sampled it.

@@ -19,13 +19,24 @@ std::string ProceduralLayer::glsl() const {
   const std::string value = kind_ == LayerKind::Height ? "vec4(h * " + p + "_scale, 0.0, 0.0, 1.0)"
                                                        : "vec4(planetColour(h, " + p + "_planet), 1.0)";
   return "#include \"procedural/planet.glsl\"\n"
-         "uniform ProceduralPlanet " + p + "_planet;\n"
-         "uniform PlanetLattice " + p + "_lattice;\n"
-         "uniform float " + p + "_scale;\n"
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  float h = planetHeightAt(p, planetFootprint(p, " + p + "_planet.radius), " + p + "_planet, " + p +
+         "uniform ProceduralPlanet " +
+         p +
+         "_planet;\n"
+         "uniform PlanetLattice " +
+         p +
+         "_lattice;\n"
+         "uniform float " +
+         p +
+         "_scale;\n"
+         "vec4 " +
+         p +
+         "(SurfacePoint p) {\n"
+         "  float h = planetHeightAt(p, planetFootprint(p, " +
+         p + "_planet.radius), " + p + "_planet, " + p +
          "_lattice);\n"
-         "  return " + value + ";\n"
+         "  return " +
+         value +
+         ";\n"
          "}\n";
 }
 

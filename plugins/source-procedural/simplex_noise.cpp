@@ -21,9 +21,18 @@ constexpr double kNormalisation = 76.0;
 
 // Gradients toward the midpoints of a cube's 12 edges (Perlin 2002, section 3): no axis is favoured and
 // a dot product needs no multiplications by irrational numbers.
-constexpr std::array<glm::dvec3, 12> kGradients{{{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
-                                                  {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
-                                                  {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}}};
+constexpr std::array<glm::dvec3, 12> kGradients{{{1, 1, 0},
+                                                 {-1, 1, 0},
+                                                 {1, -1, 0},
+                                                 {-1, -1, 0},
+                                                 {1, 0, 1},
+                                                 {-1, 0, 1},
+                                                 {1, 0, -1},
+                                                 {-1, 0, -1},
+                                                 {0, 1, 1},
+                                                 {0, -1, 1},
+                                                 {0, 1, -1},
+                                                 {0, -1, -1}}};
 
 // Which gradient a lattice corner carries. The coordinates are folded with the large primes of Teschner
 // et al. 2003 ("Optimized spatial hashing for collision detection"), then mixed by Wellons' lowbias32

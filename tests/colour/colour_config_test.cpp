@@ -47,7 +47,8 @@ void main() {
 }
 )";
   const ShaderLibrary library;
-  const ShaderProgram program({{GL_COMPUTE_SHADER, "colour_test.comp", library.expandText(source, "colour_test.comp")}});
+  const ShaderProgram program(
+      {{GL_COMPUTE_SHADER, "colour_test.comp", library.expandText(source, "colour_test.comp")}});
   return test::computeEach<std::array<float, 2>>(program, values);
 }
 

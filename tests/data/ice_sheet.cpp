@@ -58,8 +58,8 @@ void writeIceSheet(const std::filesystem::path& directory) {
   if (!bedrock) throw std::runtime_error("cannot read '" + bedrockFile.string() + "'");
   const int width = bedrock->GetRasterXSize(), height = bedrock->GetRasterYSize();
   std::vector<float> surface(std::size_t(width) * height);
-  if (bedrock->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, surface.data(), width, height, GDT_Float32,
-                                          0, 0) != CE_None)
+  if (bedrock->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, surface.data(), width, height, GDT_Float32, 0,
+                                          0) != CE_None)
     throw std::runtime_error("cannot read '" + bedrockFile.string() + "'");
   std::array<double, 6> t{};
   bedrock->GetGeoTransform(t.data());

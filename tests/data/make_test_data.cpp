@@ -22,8 +22,8 @@ namespace {
 // "WIDTHxHEIGHT", or an explanation of what is wrong with it.
 std::string parseSize(const std::string& text, int& width, int& height) {
   char separator = 0, rest = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x' ||
-      width < 2 || height < 1)
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &separator, &height, &rest) != 3 || separator != 'x' || width < 2 ||
+      height < 1)
     return "expected WIDTHxHEIGHT, e.g. 40000x20000";
   return {};
 }
@@ -51,11 +51,12 @@ void makeTestData(const std::filesystem::path& directory, int largeWidth, int la
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
-               "global, north, south, healpix, strip and gale (25 cm texels at 137.4 E, 4.6 S), each as <name>-height.tif "
-               "and <name>-color.tif, and twelve months "
-               "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, an ice sheet over "
-               "the north pole, ice-height.tif and ice-color.tif, and a panchromatic view of the strip, strip-luminance.tif."};
+  CLI::App app{
+      "Writes GeoTIFFs of the procedural planet (Mars-sized) observed through several projections: "
+      "global, north, south, healpix, strip and gale (25 cm texels at 137.4 E, 4.6 S), each as <name>-height.tif "
+      "and <name>-color.tif, and twelve months "
+      "of the global one with seasonal snow, season-200401-color.tif to season-200412-color.tif, an ice sheet over "
+      "the north pole, ice-height.tif and ice-color.tif, and a panchromatic view of the strip, strip-luminance.tif."};
   std::string directory;
   int largeWidth = 0, largeHeight = 0;
   app.add_option("directory", directory, "where the GeoTIFFs go (made if missing)")->required();

@@ -21,9 +21,16 @@ bool everywhere(double, double) { return true; }
 
 Observation global(const std::string& name, int width, int height) {
   const double pixelWidth = 360.0 / width, pixelHeight = 180.0 / height;
-  return {.name = name, .crs = kLongLat, .width = width, .height = height, .west = -180.0, .north = 90.0,
-          .pixelWidth = pixelWidth, .pixelHeight = pixelHeight,
-          .footprint = std::max(pixelWidth, pixelHeight) * kDegree * kMarsRadius, .covers = everywhere};
+  return {.name = name,
+          .crs = kLongLat,
+          .width = width,
+          .height = height,
+          .west = -180.0,
+          .north = 90.0,
+          .pixelWidth = pixelWidth,
+          .pixelHeight = pixelHeight,
+          .footprint = std::max(pixelWidth, pixelHeight) * kDegree * kMarsRadius,
+          .covers = everywhere};
 }
 
 // How far from the pole, in map metres, `crs` puts latitude `latDeg`: asked of PROJ, like every position
@@ -41,17 +48,32 @@ double polarRadius(const std::string& crs, double latDeg) {
 Observation polarCap(const std::string& name, const std::string& crs, double edgeDeg) {
   const double half = polarRadius(crs, edgeDeg), pixel = 2.0 * half / 1024;
   auto covers = [edge = edgeDeg * kDegree](double, double lat) { return edge > 0 ? lat >= edge : lat <= edge; };
-  return {.name = name, .crs = crs, .width = 1024, .height = 1024, .west = -half, .north = half, .pixelWidth = pixel,
-          .pixelHeight = pixel, .footprint = pixel, .covers = covers};
+  return {.name = name,
+          .crs = crs,
+          .width = 1024,
+          .height = 1024,
+          .west = -half,
+          .north = half,
+          .pixelWidth = pixel,
+          .pixelHeight = pixel,
+          .footprint = pixel,
+          .covers = covers};
 }
 
 // The HEALPix plane (Calabretta and Roukema 2007) x in [-pi R, pi R], y in [-pi R / 2, pi R / 2]; its empty
 // corners are where PROJ's inverse fails.
 Observation healpix() {
   const double pixel = 2.0 * kPi * kMarsRadius / 2048;
-  return {.name = "healpix", .crs = "+proj=healpix +R=3396190", .width = 2048, .height = 1024,
-          .west = -kPi * kMarsRadius, .north = kPi / 2.0 * kMarsRadius, .pixelWidth = pixel, .pixelHeight = pixel,
-          .footprint = pixel, .covers = everywhere};
+  return {.name = "healpix",
+          .crs = "+proj=healpix +R=3396190",
+          .width = 2048,
+          .height = 1024,
+          .west = -kPi * kMarsRadius,
+          .north = kPi / 2.0 * kMarsRadius,
+          .pixelWidth = pixel,
+          .pixelHeight = pixel,
+          .footprint = pixel,
+          .covers = everywhere};
 }
 
 // A strip at 4x the global resolution along the ground track of an orbit inclined 60 degrees with its
@@ -68,8 +90,16 @@ Observation strip() {
     return std::abs(std::asin(glm::dot(pole, n))) <= 1.5 * kDegree;
   };
   const double pixel = 360.0 / 8192;  // 4x global's 2048 across
-  return {.name = "strip", .crs = kLongLat, .width = 910, .height = 1365, .west = -10.0, .north = 30.0,
-          .pixelWidth = pixel, .pixelHeight = pixel, .footprint = pixel * kDegree * kMarsRadius, .covers = covers};
+  return {.name = "strip",
+          .crs = kLongLat,
+          .width = 910,
+          .height = 1365,
+          .west = -10.0,
+          .north = 30.0,
+          .pixelWidth = pixel,
+          .pixelHeight = pixel,
+          .footprint = pixel * kDegree * kMarsRadius,
+          .covers = covers};
 }
 
 }  // namespace
@@ -78,9 +108,16 @@ Observation galeStrip() {
   constexpr double kTexel = 0.25, lon = 137.4, lat = -4.6;  // m; deg
   constexpr int kWidth = 1024, kHeight = 4096;
   const double pixelHeight = kTexel / (kMarsRadius * kDegree), pixelWidth = pixelHeight / std::cos(lat * kDegree);
-  return {.name = "gale", .crs = kLongLat, .width = kWidth, .height = kHeight, .west = lon - pixelWidth * kWidth / 2,
-          .north = lat + pixelHeight * kHeight / 2, .pixelWidth = pixelWidth, .pixelHeight = pixelHeight,
-          .footprint = kTexel, .covers = everywhere};
+  return {.name = "gale",
+          .crs = kLongLat,
+          .width = kWidth,
+          .height = kHeight,
+          .west = lon - pixelWidth * kWidth / 2,
+          .north = lat + pixelHeight * kHeight / 2,
+          .pixelWidth = pixelWidth,
+          .pixelHeight = pixelHeight,
+          .footprint = kTexel,
+          .covers = everywhere};
 }
 
 procedural::PlanetParameters finePlanetParameters() { return {.octaves = 24, .contourInterval = 1.0}; }

@@ -90,9 +90,9 @@ void computeBlock(const Observation& observation, const procedural::PlanetModel&
 // Writes a block and flushes it: its tiles are complete, and GDAL's block cache would otherwise keep up
 // to 5% of the machine's memory of them.
 void writeBlock(const Block& block, int width, GDALDataset* heights, GDALDataset& colours) {
-  CPLErr result = colours.RasterIO(GF_Write, 0, block.firstRow, width, block.rows,
-                                   const_cast<std::uint8_t*>(block.colours.data()), width, block.rows, GDT_Byte, 4,
-                                   nullptr, 4, GSpacing(4) * width, 1, nullptr);
+  CPLErr result =
+      colours.RasterIO(GF_Write, 0, block.firstRow, width, block.rows, const_cast<std::uint8_t*>(block.colours.data()),
+                       width, block.rows, GDT_Byte, 4, nullptr, 4, GSpacing(4) * width, 1, nullptr);
   if (heights && result == CE_None)
     result = heights->GetRasterBand(1)->RasterIO(GF_Write, 0, block.firstRow, width, block.rows,
                                                  const_cast<float*>(block.heights.data()), width, block.rows,

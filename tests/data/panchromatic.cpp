@@ -55,8 +55,8 @@ void writePanchromatic(const std::filesystem::path& directory) {
                        std::int64_t(width) * 4, 1) != CE_None)
     throw std::runtime_error("cannot read '" + strip.string() + "'");
   const char* options[] = {"TILED=YES", "COMPRESS=DEFLATE", "PREDICTOR=3", nullptr};
-  Dataset written(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
-      file.c_str(), width, height, 1, GDT_Float32, const_cast<char**>(options)));
+  Dataset written(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(file.c_str(), width, height, 1, GDT_Float32,
+                                                                           const_cast<char**>(options)));
   if (!written) throw std::runtime_error("GDAL cannot create '" + file.string() + "': " + CPLGetLastErrorMsg());
   std::array<double, 6> transform{};
   source->GetGeoTransform(transform.data());

@@ -50,18 +50,24 @@ const std::string kGlobalGeotransform = "-180, 5.625, 0, 90, 0, -5.625";
 class BadData : public StrataCommandTest {
  protected:
   CommandResult renderHeights(const fs::path& raster, const std::string& size = "32x18") const {
-    const fs::path pipeline = write("p.yaml", "strata: 1\nnodes:\n"
-                                              "  data: {type: source.gdal, path: " + raster.string() + ", kind: height}\n"
-                                              "  globe: {type: geometry.icosahedral, height: data, highest: 2000}\n"
-                                              "  frame: {type: output.image, geometry: globe}\n");
+    const fs::path pipeline = write("p.yaml",
+                                    "strata: 1\nnodes:\n"
+                                    "  data: {type: source.gdal, path: " +
+                                        raster.string() +
+                                        ", kind: height}\n"
+                                        "  globe: {type: geometry.icosahedral, height: data, highest: 2000}\n"
+                                        "  frame: {type: output.image, geometry: globe}\n");
     return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string(), "--overwrite"});
   }
 
   CommandResult renderColour(const fs::path& raster, const std::string& size) const {
-    const fs::path pipeline = write("p.yaml", "strata: 1\nnodes:\n"
-                                              "  data: {type: source.gdal, path: " + raster.string() + "}\n"
-                                              "  globe: {type: geometry.icosahedral}\n"
-                                              "  frame: {type: output.image, geometry: globe, surface: [data]}\n");
+    const fs::path pipeline = write("p.yaml",
+                                    "strata: 1\nnodes:\n"
+                                    "  data: {type: source.gdal, path: " +
+                                        raster.string() +
+                                        "}\n"
+                                        "  globe: {type: geometry.icosahedral}\n"
+                                        "  frame: {type: output.image, geometry: globe, surface: [data]}\n");
     return run({"render", pipeline.string(), "--size", size, "-o", file("x.png").string(), "--overwrite"});
   }
 
@@ -111,7 +117,8 @@ TEST_F(BadData, TinyHeightsDrawAsTheBareSphere) {
 }
 
 TEST_F(BadData, AllNodataDrawsTheBareSphere) {
-  writeFloatRaster(file("none.tif"), 64, 32, kGlobe, [](int, int) { return -9999.0f; }, -9999.0);
+  writeFloatRaster(
+      file("none.tif"), 64, 32, kGlobe, [](int, int) { return -9999.0f; }, -9999.0);
   expectDrawnAsTheBareSphere(file("none.tif"));
 }
 
@@ -120,9 +127,9 @@ TEST_F(BadData, AnEmptyFileIsRefusedAsEmpty) {
 }
 
 TEST_F(BadData, ARasterOfNoTexelsIsRefused) {
-  expectRefused(renderHeights(write("zero.vrt", vrt("rasterXSize=\"0\" rasterYSize=\"0\"", "EPSG:4326",
-                                                    kGlobalGeotransform))),
-                {"zero.vrt", "gdalinfo"});
+  expectRefused(
+      renderHeights(write("zero.vrt", vrt("rasterXSize=\"0\" rasterYSize=\"0\"", "EPSG:4326", kGlobalGeotransform))),
+      {"zero.vrt", "gdalinfo"});
 }
 
 const std::string kAbsurdSize = "rasterXSize=\"2000000000\" rasterYSize=\"1000000000\"";
@@ -137,8 +144,8 @@ TEST_F(BadData, AbsurdDimensionsWithoutOverviewsAreRefusedWithTheirSize) {
 // pyramid's 10^13 pages (was: std::bad_alloc).
 TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
   writeFloatRaster(file("overview.tif"), 512, 256, kGlobe, [](int, int) { return 0.0f; });
-  const CommandResult result = renderHeights(write(
-      "absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform, overviewElement(file("overview.tif")))));
+  const CommandResult result = renderHeights(
+      write("absurd.vrt", vrt(kAbsurdSize, "EPSG:4326", kAbsurdGeotransform, overviewElement(file("overview.tif")))));
   expectRefused(result, {"2000000000x1000000000", "more than the page index holds", "gdal_translate -outsize"});
 }
 
@@ -188,9 +195,9 @@ TEST_F(BadData, AGeotransformThatPlacesTheRasterNowhereIsRefused) {
 }
 
 TEST_F(BadData, ABrokenCrsIsRefusedNamingTheFile) {
-  const CommandResult result = renderHeights(
-      write("broken.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"", "GEOGCS[\"broken\",DATUM[\"nothing\"",
-                              kGlobalGeotransform)));
+  const CommandResult result =
+      renderHeights(write("broken.vrt", vrt("rasterXSize=\"64\" rasterYSize=\"32\"",
+                                            "GEOGCS[\"broken\",DATUM[\"nothing\"", kGlobalGeotransform)));
   expectRefused(result, {"broken.vrt", "no PROJ form", "projection"});
 }
 
@@ -217,8 +224,8 @@ fs::path truncatedCopy(const fs::path& directory, const std::string& format, con
     return Rgb8{static_cast<unsigned char>(column / 2), static_cast<unsigned char>(row), 90};
   });
   GDALDatasetH source = GDALOpen(tiff.c_str(), GA_ReadOnly);
-  GDALDatasetH written = GDALCreateCopy(GDALGetDriverByName(format.c_str()), copy.c_str(), source, FALSE, nullptr,
-                                        nullptr, nullptr);
+  GDALDatasetH written =
+      GDALCreateCopy(GDALGetDriverByName(format.c_str()), copy.c_str(), source, FALSE, nullptr, nullptr, nullptr);
   GDALClose(written);
   GDALClose(source);
   fs::resize_file(copy, fs::file_size(copy) / 2);

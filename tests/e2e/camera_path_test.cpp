@@ -26,8 +26,8 @@ class CameraPathCommandTest : public StrataCommandTest {
   // kFrames small frames of a sample path, to `output`: by default the fly-in over the procedural planet.
   CommandResult renderFlyIn(const std::string& output, const std::string& pipeline = "pipelines/procedural.yaml",
                             const std::string& path = "pipelines/paths/flyin.yaml") const {
-    return run({"render", pipeline, "--path", path, "--frames", std::to_string(kFrames), "--size", "96x54", "-o",
-                output});
+    return run(
+        {"render", pipeline, "--path", path, "--frames", std::to_string(kFrames), "--size", "96x54", "-o", output});
   }
 };
 

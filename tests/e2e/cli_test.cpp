@@ -129,8 +129,9 @@ TEST_F(StrataCommandTest, RenderSweepsThroughTheScenesDate) {
 // output.image shows the frame through an OpenColorIO display and view (docs/colour.md); one the config lacks
 // is named at its line with the ones there are.
 TEST_F(StrataCommandTest, UnknownDisplayNamesTheDisplaysThereAre) {
-  const auto pipeline = write("p.yaml", "strata: 1\nnodes:\n  g: {type: geometry.icosahedral}\n"
-                                        "  f: {type: output.image, geometry: g, display: P3}\n");
+  const auto pipeline = write("p.yaml",
+                              "strata: 1\nnodes:\n  g: {type: geometry.icosahedral}\n"
+                              "  f: {type: output.image, geometry: g, display: P3}\n");
   const CommandResult result = renderTiny(pipeline);
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_TRUE(contains(result.err, "p.yaml:4:")) << result.err;
@@ -172,9 +173,10 @@ TEST_F(StrataCommandTest, RenderStatsCountPatchesVerticesAndTriangles) {
   int patches = 0;
   const std::size_t at = result.out.find("strata: last of");
   ASSERT_NE(at, std::string::npos) << result.out;
-  ASSERT_EQ(std::sscanf(result.out.c_str() + at, "strata: last of %llu frames: %d patches, %llu vertices, %llu triangles",
-                        &frames, &patches, &vertices, &triangles),
-            4)
+  ASSERT_EQ(
+      std::sscanf(result.out.c_str() + at, "strata: last of %llu frames: %d patches, %llu vertices, %llu triangles",
+                  &frames, &patches, &vertices, &triangles),
+      4)
       << result.out;
   EXPECT_GE(frames, 1u);
   EXPECT_GT(patches, 200);
@@ -187,8 +189,7 @@ TEST_F(StrataCommandTest, RenderStatsCountPatchesVerticesAndTriangles) {
 }
 
 TEST_F(StrataCommandTest, RenderToAnUnwritablePathFailsWithAMessage) {
-  const CommandResult result =
-      run({"render", "pipelines/demo.yaml", "--size", "32x18", "-o", "/proc/strata-test.png"});
+  const CommandResult result = run({"render", "pipelines/demo.yaml", "--size", "32x18", "-o", "/proc/strata-test.png"});
   EXPECT_EQ(result.exitCode, 1) << result.err;  // 1, not a signal or an abort
   EXPECT_TRUE(contains(result.err, "/proc/strata-test.png: error: cannot write")) << result.err;
   EXPECT_TRUE(contains(result.err, "\n  fix: ")) << result.err;
@@ -250,38 +251,40 @@ TEST_F(StrataCommandTest, WrongParameterTypeIsNamedAtItsValue) {
 }
 
 TEST_F(StrataCommandTest, ColourLayerAsHeightNamesBothKinds) {
-  const fs::path pipeline = write("kinds.yaml", "strata: 1\n"
-                                                "nodes:\n"
-                                                "  imagery:\n"
-                                                "    type: source.gdal\n"
-                                                "    path: /usr/share/xplanet/images/earth.jpg\n"
-                                                "    kind: color\n"
-                                                "  globe:\n"
-                                                "    type: geometry.icosahedral\n"
-                                                "    height: imagery\n"  // line 9
-                                                "  frame:\n"
-                                                "    type: output.image\n"
-                                                "    geometry: globe\n");
+  const fs::path pipeline = write("kinds.yaml",
+                                  "strata: 1\n"
+                                  "nodes:\n"
+                                  "  imagery:\n"
+                                  "    type: source.gdal\n"
+                                  "    path: /usr/share/xplanet/images/earth.jpg\n"
+                                  "    kind: color\n"
+                                  "  globe:\n"
+                                  "    type: geometry.icosahedral\n"
+                                  "    height: imagery\n"  // line 9
+                                  "  frame:\n"
+                                  "    type: output.image\n"
+                                  "    geometry: globe\n");
   // Layer kinds are known only once the nodes are made; the message points at the input that names it.
   const CommandResult result = renderTiny(pipeline);
   expectRejected(result, pipeline, 9, 13, {"height", "color", "imagery"});
 }
 
 TEST_F(StrataCommandTest, CycleOfInputsIsShownAsAPath) {
-  const fs::path pipeline = write("cycle.yaml", "strata: 1\n"
-                                                "nodes:\n"
-                                                "  first:\n"
-                                                "    type: composite.passthrough\n"
-                                                "    layer: second\n"  // line 5
-                                                "  second:\n"
-                                                "    type: composite.passthrough\n"
-                                                "    layer: first\n"  // line 8
-                                                "  globe:\n"
-                                                "    type: geometry.icosahedral\n"
-                                                "  frame:\n"
-                                                "    type: output.image\n"
-                                                "    geometry: globe\n"
-                                                "    surface: [first]\n");
+  const fs::path pipeline = write("cycle.yaml",
+                                  "strata: 1\n"
+                                  "nodes:\n"
+                                  "  first:\n"
+                                  "    type: composite.passthrough\n"
+                                  "    layer: second\n"  // line 5
+                                  "  second:\n"
+                                  "    type: composite.passthrough\n"
+                                  "    layer: first\n"  // line 8
+                                  "  globe:\n"
+                                  "    type: geometry.icosahedral\n"
+                                  "  frame:\n"
+                                  "    type: output.image\n"
+                                  "    geometry: globe\n"
+                                  "    surface: [first]\n");
   const CommandResult result = renderTiny(pipeline, STRATA_E2E_PLUGIN_DIR);
   expectRejected(result, pipeline, 5, 12, {"cycle", "first -> second -> first"});
 }
@@ -333,8 +336,8 @@ TEST_F(StrataCommandTest, HelpExitsWithZeroAndNamesTheCommands) {
 TEST_F(StrataCommandTest, PluginsListsTheBuiltInTypes) {
   const CommandResult result = run({"plugins"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
-  expectLinesStartingWith(result.out, {"source.gdal ", "geometry.healpix ", "geometry.icosahedral ", "geometry.pgm ",
-                                       "output.image "});
+  expectLinesStartingWith(
+      result.out, {"source.gdal ", "geometry.healpix ", "geometry.icosahedral ", "geometry.pgm ", "output.image "});
 }
 
 TEST_F(StrataCommandTest, PluginsDescribesTheParametersOfAType) {
@@ -366,8 +369,8 @@ TEST_F(StrataCommandTest, ProjectMapsPointsThroughAProjectionAndBack) {
                                      write("xy.txt", "1111949.2664455874 4447797.0657823496\n").string()});
   ASSERT_EQ(inverse.exitCode, 0) << inverse.err;
   EXPECT_EQ(inverse.out, "10 40\n");
-  const CommandResult farSide = run({"project", "+proj=ortho +lat_0=0 +lon_0=0" + earth,
-                                     write("far.txt", "120 0\n").string()});
+  const CommandResult farSide =
+      run({"project", "+proj=ortho +lat_0=0 +lon_0=0" + earth, write("far.txt", "120 0\n").string()});
   ASSERT_EQ(farSide.exitCode, 0) << farSide.err;
   EXPECT_EQ(farSide.out, "outside\n");
 }

@@ -18,12 +18,14 @@ class Faults : public StrataCommandTest {
  protected:
   CommandResult renderFailing(const std::string& phase, const std::string& throws = "exception") const {
     writeCheckerboard(file("board.tif"));
-    const fs::path pipeline = write("p.yaml", "strata: 1\nnodes:\n"
-                                              "  board: {type: source.gdal, path: board.tif}\n"
-                                              "  faulty: {type: composite.faulty, layer: board, fails: " + phase +
-                                                  ", throws: " + throws + "}\n"
-                                              "  globe: {type: geometry.icosahedral}\n"
-                                              "  frame: {type: output.image, geometry: globe, surface: [faulty]}\n");
+    const fs::path pipeline = write("p.yaml",
+                                    "strata: 1\nnodes:\n"
+                                    "  board: {type: source.gdal, path: board.tif}\n"
+                                    "  faulty: {type: composite.faulty, layer: board, fails: " +
+                                        phase + ", throws: " + throws +
+                                        "}\n"
+                                        "  globe: {type: geometry.icosahedral}\n"
+                                        "  frame: {type: output.image, geometry: globe, surface: [faulty]}\n");
     return renderTiny(pipeline, STRATA_E2E_PLUGIN_DIR);
   }
 };
@@ -55,10 +57,11 @@ TEST_F(Faults, APluginThrowingWhatIsNoExceptionIsNamedNotACrash) {
 TEST_F(Faults, AGpuWithoutTheMemoryTheCacheAsksForGetsASmallerCache) {
   writeCheckerboard(file("board.tif"));
   const auto render = [&](const std::string& budget, const std::string& image) {
-    const fs::path pipeline = write("p.yaml", "strata: 1\ncache: {budget: " + budget + "}\nnodes:\n"
-                                              "  board: {type: source.gdal, path: board.tif}\n"
-                                              "  globe: {type: geometry.icosahedral}\n"
-                                              "  frame: {type: output.image, geometry: globe, surface: [board]}\n");
+    const fs::path pipeline = write("p.yaml", "strata: 1\ncache: {budget: " + budget +
+                                                  "}\nnodes:\n"
+                                                  "  board: {type: source.gdal, path: board.tif}\n"
+                                                  "  globe: {type: geometry.icosahedral}\n"
+                                                  "  frame: {type: output.image, geometry: globe, surface: [board]}\n");
     return run({"render", pipeline.string(), "--size", "128x72", "-o", file(image).string()});
   };
   const CommandResult asked = render("60000", "asked.png");

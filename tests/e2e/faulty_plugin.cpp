@@ -15,7 +15,8 @@ namespace {
 class Faulty : public Node {
  public:
   explicit Faulty(const NodeSetup& setup)
-      : input_(setup.input("layer")), fails_(setup.parameters.string("fails")),
+      : input_(setup.input("layer")),
+        fails_(setup.parameters.string("fails")),
         other_(setup.parameters.string("throws") == "other") {
     failIn("create");
   }
@@ -46,10 +47,16 @@ NodeTypeDeclaration declaration() {
   type.inputs = {{.name = "layer", .type = PortType::Layer, .doc = "the layer to offer"}};
   type.output = PortType::Layer;
   type.parameters = {
-      {.name = "fails", .type = ParameterType::Choice, .defaultValue = std::string("render"),
-       .doc = "the phase that fails", .choices = {"create", "open", "resources", "prepare", "render"}},
-      {.name = "throws", .type = ParameterType::Choice, .defaultValue = std::string("exception"),
-       .doc = "what it throws: a std::exception, or an int", .choices = {"exception", "other"}},
+      {.name = "fails",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("render"),
+       .doc = "the phase that fails",
+       .choices = {"create", "open", "resources", "prepare", "render"}},
+      {.name = "throws",
+       .type = ParameterType::Choice,
+       .defaultValue = std::string("exception"),
+       .doc = "what it throws: a std::exception, or an int",
+       .choices = {"exception", "other"}},
   };
   type.create = [](const NodeSetup& setup) { return std::make_unique<Faulty>(setup); };
   return type;

@@ -1,9 +1,9 @@
 // `strata tile` interrupted by SIGINT at several moments leaves either the finished pyramid or nothing, and
 // no temporary file (GDAL's *.ovr.tmp and *.warped.tif.tmp, the HEALPix strip) (docs/robustness.md, "Outputs").
+#include <fcntl.h>
 #include <gdal_alg.h>
 #include <gdal_priv.h>
 #include <gtest/gtest.h>
-#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -121,8 +121,8 @@ TEST_P(InterruptedTile, LeavesTheFinishedFileOrNothing) {
     SCOPED_TRACE("SIGINT at " + std::to_string(fraction) + " of a run");
     EXPECT_TRUE((WIFSIGNALED(status) && WTERMSIG(status) == SIGINT) || (WIFEXITED(status) && WEXITSTATUS(status) == 0))
         << "status " << status;
-    const std::vector<std::string> left = whole ? std::vector<std::string>{"in.tif", "out.tif"}
-                                                : std::vector<std::string>{"in.tif"};
+    const std::vector<std::string> left =
+        whole ? std::vector<std::string>{"in.tif", "out.tif"} : std::vector<std::string>{"in.tif"};
     EXPECT_EQ(namesIn(file("work")), left) << "no temporary file";
     if (whole) {
       EXPECT_EQ(fingerprint(output), finished) << "a file under the final name is the finished one";

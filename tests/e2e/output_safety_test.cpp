@@ -69,7 +69,8 @@ TEST_F(OutputSafety, RenderNeverReplacesWhatItReads) {
   result = render((scratch_.path() / "." / "board.tif").string(), {"--overwrite"});
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_TRUE(contains(result.err, "-o: error: '" + (scratch_.path() / "." / "board.tif").string() + "' is '" +
-                                       file("board.tif").string() + "', a file this work reads; it is never overwritten"))
+                                       file("board.tif").string() +
+                                       "', a file this work reads; it is never overwritten"))
       << result.err;
   expectInputsKept();
 }
@@ -118,8 +119,8 @@ TEST_F(OutputSafety, BenchNeverReplacesItsPipelineOrPath) {
                               "  - {time: 1, lon: 10, lat: 0, altitude: 2.0e7}\n");
   for (const std::vector<std::string>& outputs :
        {std::vector<std::string>{"-o", pipeline_.string()}, {"--plot", pipeline_.string()}, {"-o", path.string()}}) {
-    std::vector<std::string> arguments{"bench", pipeline_.string(), "--path", path.string(), "--frames", "2",
-                                       "--size", "16x16", "--overwrite"};
+    std::vector<std::string> arguments{"bench", pipeline_.string(), "--path", path.string(), "--frames",
+                                       "2",     "--size",           "16x16",  "--overwrite"};
     arguments.insert(arguments.end(), outputs.begin(), outputs.end());
     const CommandResult result = run(arguments);
     EXPECT_EQ(result.exitCode, 1) << outputs[1];
@@ -134,8 +135,8 @@ TEST_F(OutputSafety, BenchReplacesAnExistingTableOnlyWithOverwrite) {
                               "strata-path: 1\nkeyframes:\n  - {time: 0, lon: 0, lat: 0, altitude: 2.0e7}\n"
                               "  - {time: 1, lon: 10, lat: 0, altitude: 2.0e7}\n");
   const fs::path table = write("times.csv", "a user's file");
-  const std::vector<std::string> arguments{"bench", pipeline_.string(), "--path", path.string(), "--frames", "2",
-                                           "--size", "16x16", "-o", table.string()};
+  const std::vector<std::string> arguments{"bench", pipeline_.string(), "--path", path.string(), "--frames",
+                                           "2",     "--size",           "16x16",  "-o",          table.string()};
   CommandResult result = run(arguments);
   EXPECT_EQ(result.exitCode, 1);
   EXPECT_TRUE(contains(result.err, "times.csv' exists already")) << result.err;

@@ -24,7 +24,8 @@ class SamplePipeline : public StrataCommandTest, public ::testing::WithParamInte
 
 TEST_P(SamplePipeline, RendersABodyAgainstSpace) {
   const std::filesystem::path png = file("frame.png");
-  const CommandResult result = run({"render", "pipelines/" + GetParam() + ".yaml", "--size", "160x90", "-o", png.string()});
+  const CommandResult result =
+      run({"render", "pipelines/" + GetParam() + ".yaml", "--size", "160x90", "-o", png.string()});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   const Image image = readImage(png);
   const auto corner = image.at(0, 0), centre = image.at(80, 45);
@@ -32,13 +33,12 @@ TEST_P(SamplePipeline, RendersABodyAgainstSpace) {
   EXPECT_GT(centre[0] + centre[1] + centre[2], 60) << "a lit body in the centre";
 }
 
-INSTANTIATE_TEST_SUITE_P(Recipes, SamplePipeline, ::testing::ValuesIn(samplePipelines()),
-                         [](const auto& test) {
-                           // A test's name takes letters, digits and underscores: bench-flyin is bench_flyin.
-                           std::string name = test.param;
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Recipes, SamplePipeline, ::testing::ValuesIn(samplePipelines()), [](const auto& test) {
+  // A test's name takes letters, digits and underscores: bench-flyin is bench_flyin.
+  std::string name = test.param;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+});
 
 }  // namespace
 }  // namespace strata::test

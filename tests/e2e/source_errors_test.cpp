@@ -32,20 +32,30 @@ class SourceErrors : public StrataCommandTest {
   // Lays a grey raster over itself where the vector file `vector` (`cut`, with `more` said of it) allows.
   CommandResult renderMask(const fs::path& vector, const std::string& more) const {
     writeRasterFile(file("grey.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 60, 30, 1, GDT_Byte});
-    return renderTiny(write("p.yaml", "strata: 1\nnodes:\n"
-                                      "  base: {type: source.gdal, path: " + file("grey.tif").string() + "}\n"
-                                      "  over: {type: source.gdal, path: " + file("grey.tif").string() + "}\n"
-                                      "  cut: {type: source.gdal, path: " + vector.string() + more + "}\n"
-                                      "  laid: {type: composite.overlay_mask, base: base, overlay: over, mask: cut}\n"
-                                      "  globe: {type: geometry.icosahedral}\n"
-                                      "  frame: {type: output.image, geometry: globe, surface: [laid]}\n"));
+    return renderTiny(write("p.yaml",
+                            "strata: 1\nnodes:\n"
+                            "  base: {type: source.gdal, path: " +
+                                file("grey.tif").string() +
+                                "}\n"
+                                "  over: {type: source.gdal, path: " +
+                                file("grey.tif").string() +
+                                "}\n"
+                                "  cut: {type: source.gdal, path: " +
+                                vector.string() + more +
+                                "}\n"
+                                "  laid: {type: composite.overlay_mask, base: base, overlay: over, mask: cut}\n"
+                                "  globe: {type: geometry.icosahedral}\n"
+                                "  frame: {type: output.image, geometry: globe, surface: [laid]}\n"));
   }
 
   CommandResult renderRaster(const fs::path& raster, const std::string& kind = "height") const {
-    return renderTiny(write("p.yaml", "strata: 1\nnodes:\n"
-                                      "  data: {type: source.gdal, path: " + raster.string() + ", kind: " + kind + "}\n"
-                                      "  globe: {type: geometry.icosahedral, height: data}\n"
-                                      "  frame: {type: output.image, geometry: globe}\n"));
+    return renderTiny(write("p.yaml",
+                            "strata: 1\nnodes:\n"
+                            "  data: {type: source.gdal, path: " +
+                                raster.string() + ", kind: " + kind +
+                                "}\n"
+                                "  globe: {type: geometry.icosahedral, height: data}\n"
+                                "  frame: {type: output.image, geometry: globe}\n"));
   }
 };
 
@@ -96,7 +106,13 @@ TEST_F(SourceErrors, ATruncatedRasterRendersWithEachUnreadablePageReportedOnce) 
 }
 
 TEST_F(SourceErrors, ACorruptCompressedTileRendersWithEachUnreadablePageReportedOnce) {
-  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 600, 300, 1, GDT_Float32, 255.0,
+  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190",
+                                    kNearTheEquator,
+                                    600,
+                                    300,
+                                    1,
+                                    GDT_Float32,
+                                    255.0,
                                     {"TILED=YES", "COMPRESS=DEFLATE"}});
   damage(file("bad.tif"), static_cast<std::streamoff>(fs::file_size(file("bad.tif")) / 2), 4096);
   expectEachPageReportedOnce(renderRaster(file("bad.tif")), "bad.tif");
@@ -106,7 +122,13 @@ TEST_F(SourceErrors, ACorruptCompressedTileRendersWithEachUnreadablePageReported
 // that cannot be read whole is counted again tile by tile, so a peak in the damaged tile's row of tiles
 // counts, and the height range a pipeline gives must hold it.
 TEST_F(SourceErrors, ACorruptTileLeavesOnlyItselfOutOfTheHeightsCounted) {
-  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190", kNearTheEquator, 600, 300, 1, GDT_Float32, 255.0,
+  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190",
+                                    kNearTheEquator,
+                                    600,
+                                    300,
+                                    1,
+                                    GDT_Float32,
+                                    255.0,
                                     {"TILED=YES", "COMPRESS=DEFLATE"}});
   std::string offset, size;
   {
@@ -121,11 +143,14 @@ TEST_F(SourceErrors, ACorruptTileLeavesOnlyItselfOutOfTheHeightsCounted) {
     size = dataset->GetRasterBand(1)->GetMetadataItem("BLOCK_SIZE_0_0", "TIFF");
   }
   damage(file("bad.tif"), std::stoll(offset), std::stoul(size));
-  const CommandResult result = renderTiny(write(
-      "p.yaml", "strata: 1\nnodes:\n"
-                "  data: {type: source.gdal, path: " + file("bad.tif").string() + ", kind: height}\n"
-                "  globe: {type: geometry.icosahedral, height: data, lowest: 0, highest: 300}\n"
-                "  frame: {type: output.image, geometry: globe}\n"));
+  const CommandResult result =
+      renderTiny(write("p.yaml",
+                       "strata: 1\nnodes:\n"
+                       "  data: {type: source.gdal, path: " +
+                           file("bad.tif").string() +
+                           ", kind: height}\n"
+                           "  globe: {type: geometry.icosahedral, height: data, lowest: 0, highest: 300}\n"
+                           "  frame: {type: output.image, geometry: globe}\n"));
   EXPECT_EQ(result.exitCode, 1) << result.err;
   EXPECT_TRUE(contains(result.err, "to 5000 m") && contains(result.err, "highest: 5000")) << result.err;
 }

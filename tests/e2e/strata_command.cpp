@@ -30,7 +30,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 std::vector<std::string> namesIn(const std::filesystem::path& folder) {
   std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) names.push_back(entry.path().filename().string());
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    names.push_back(entry.path().filename().string());
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -47,7 +48,8 @@ CommandResult StrataCommandTest::run(const std::vector<std::string>& arguments, 
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(out), readText(err)};
 }
 
-CommandResult StrataCommandTest::renderTiny(const std::filesystem::path& pipeline, const std::string& pluginPath) const {
+CommandResult StrataCommandTest::renderTiny(const std::filesystem::path& pipeline,
+                                            const std::string& pluginPath) const {
   return run({"render", pipeline.string(), "--size", "32x18", "-o", file("x.png").string(), "--overwrite"}, pluginPath);
 }
 

@@ -83,8 +83,8 @@ TEST_F(TileCommand, ReprojectsAnUnsupportedCrsIntoTheBestSuitedProjection) {
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "reprojected to +proj=longlat")) << result.out;
   // ...and a Lambert azimuthal cap around the north pole to polar stereographic.
-  writeRasterFile(file("cap.tif"), {"+proj=laea +lat_0=90 +lon_0=0 +R=3396190", {-1e6, 5000.0, 0.0, 1e6, 0.0, -5000.0}, 400,
-                                400});
+  writeRasterFile(file("cap.tif"),
+                  {"+proj=laea +lat_0=90 +lon_0=0 +R=3396190", {-1e6, 5000.0, 0.0, 1e6, 0.0, -5000.0}, 400, 400});
   result = run({"tile", file("cap.tif").string(), file("cap-tiled.tif").string()});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   auto out = openRaster(file("cap-tiled.tif"));
@@ -114,10 +114,12 @@ void expectBlocksHoldTheirTexels(GDALDataset& tiled) {
   ASSERT_TRUE(ranges) << "the file carries its blocks' ranges";
   std::vector<double> values(std::size_t(width) * height);
   std::vector<GByte> mask(values.size());
-  ASSERT_EQ(tiled.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float64,
-                                             0, 0), CE_None);
+  ASSERT_EQ(
+      tiled.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float64, 0, 0),
+      CE_None);
   ASSERT_EQ(tiled.GetRasterBand(1)->GetMaskBand()->RasterIO(GF_Read, 0, 0, width, height, mask.data(), width, height,
-                                                            GDT_Byte, 0, 0), CE_None);
+                                                            GDT_Byte, 0, 0),
+            CE_None);
   const int side = ranges->blockTexels();
   std::vector<bool> gaps(std::size_t(ranges->columns()) * ranges->rows(), false);
   for (int row = 0; row < height; ++row)
@@ -347,7 +349,8 @@ TEST_F(TileCommand, AHealpixPyramidOfHeightsCarriesItsPagesTrueRanges) {
         for (int row = (1 - iy) * 512; row < (2 - iy) * 512; ++row)
           for (int column = ix * 512; column < (ix + 1) * 512; ++column) {
             const float value = strip.at({face, column, row});
-            ASSERT_TRUE(value >= range.least && value <= range.greatest) << "face " << face << " node " << ix << ", " << iy;
+            ASSERT_TRUE(value >= range.least && value <= range.greatest)
+                << "face " << face << " node " << ix << ", " << iy;
           }
         widths += range.greatest - range.least;
       }
@@ -382,8 +385,8 @@ TEST_F(TileCommand, AHealpixPyramidOfAGlobeFromLongitude0IsTheSameAsFromMinus180
 // texel west of the antimeridian: the pyramid is covered all round the globe all the same.
 TEST_F(TileCommand, AHealpixPyramidOfAGridOfTexelCentresIsCoveredAcrossTheAntimeridian) {
   writeMarsField(file("centres.tif"), -180.25, 90.25, 720, 361);
-  ASSERT_EQ(run({"tile", file("centres.tif").string(), file("centres-healpix.tif").string(), "--to", "healpix"}).exitCode,
-            0);
+  ASSERT_EQ(
+      run({"tile", file("centres.tif").string(), file("centres-healpix.tif").string(), "--to", "healpix"}).exitCode, 0);
   auto tiled = openRaster(file("centres-healpix.tif"));
   const Strip strip = readStrip(*tiled, 512);
   for (const StripTexel texel : texelsToCheck(512, 3000)) {
@@ -486,8 +489,8 @@ double fineField(double lonDegrees, double latDegrees) {
 // The window's texels covered, checked against fineField where their centres lie inside the input by more
 // than a texel; returns how many were checked.
 int checkWindow(GDALDataset& out, const healpix::FaceWindow& window, std::int64_t nside) {
-  const std::unique_ptr<Projection> strip = healpix::stripProjection(
-      projectionOfCrs(PluginRegistry{}, out.GetMetadataItem(healpix::kFigureItem), {}));
+  const std::unique_ptr<Projection> strip =
+      healpix::stripProjection(projectionOfCrs(PluginRegistry{}, out.GetMetadataItem(healpix::kFigureItem), {}));
   std::vector<float> values(std::size_t(window.width) * std::size_t(window.height));
   EXPECT_EQ(out.GetRasterBand(1)->RasterIO(GF_Read, 0, 0, window.width, window.height, values.data(), window.width,
                                            window.height, GDT_Float32, 0, 0),
@@ -514,8 +517,7 @@ TEST_F(TileCommand, AHealpixPyramidFinerThanTheStripAllowsHoldsAWindowOfOneFace)
   writeFloatRaster(file("fine.tif"), kFineWidth, kFineHeight,
                    {kFineWest, kFineNorth - kFineHeight * kFineStep, kFineWest + kFineWidth * kFineStep, kFineNorth},
                    [](int column, int row) { return float(1000 * column + row); });
-  const CommandResult result =
-      run({"tile", file("fine.tif").string(), file("window.tif").string(), "--to", "healpix"});
+  const CommandResult result = run({"tile", file("fine.tif").string(), file("window.tif").string(), "--to", "healpix"});
   ASSERT_EQ(result.exitCode, 0) << result.err;
   EXPECT_TRUE(contains(result.out, "nside 536870912")) << "the least nside with texels below 2.2 cm: " << result.out;
   auto out = openRaster(file("window.tif"));
@@ -537,11 +539,13 @@ TEST_F(TileCommand, AHealpixPyramidFinerThanTheStripAllowsHoldsAWindowOfOneFace)
 
 TEST_F(TileCommand, AHealpixPyramidFinerThanTheStripAllowsMustLieOnOneFace) {
   // 45 degrees east on the equator, the corner where the equatorial faces 4 and 5 meet polar faces 0 and 8.
-  writeFloatRaster(file("corner.tif"), 100, 100, {45.0 - 1e-5, -1e-5, 45.0 + 1e-5, 1e-5}, [](int, int) { return 1.0f; });
-  const CommandResult result = run({"tile", file("corner.tif").string(), file("refused.tif").string(), "--to",
-                                    "healpix", "--nside", "134217728"});
+  writeFloatRaster(file("corner.tif"), 100, 100, {45.0 - 1e-5, -1e-5, 45.0 + 1e-5, 1e-5},
+                   [](int, int) { return 1.0f; });
+  const CommandResult result = run(
+      {"tile", file("corner.tif").string(), file("refused.tif").string(), "--to", "healpix", "--nside", "134217728"});
   EXPECT_EQ(result.exitCode, 1);
-  EXPECT_TRUE(contains(result.err, "reaches faces 0, 4, 5, 8") && contains(result.err, "--nside 67108864")) << result.err;
+  EXPECT_TRUE(contains(result.err, "reaches faces 0, 4, 5, 8") && contains(result.err, "--nside 67108864"))
+      << result.err;
   EXPECT_FALSE(fs::exists(file("refused.tif")));
 }
 

@@ -64,8 +64,9 @@ Node nodeAround(int face, int level, glm::dvec2 point) {
 // Points of a face where the inverse is hardest: its corners (a pole for faces 0-3 and 8-11), its centre,
 // astride a = 0 (x + y = 1) and random ones.
 std::vector<glm::dvec2> probedPoints(std::mt19937_64& random) {
-  std::vector<glm::dvec2> points = {{0, 0}, {1, 1}, {1, 0}, {0, 1}, {0.5, 0.5}, {0.3, 0.7}, {0.5 + 1e-9, 0.5},
-                                    {0.99999999, 0.99999999}, {1e-8, 1e-8}};
+  std::vector<glm::dvec2> points = {
+      {0, 0},      {1, 1}, {1, 0}, {0, 1}, {0.5, 0.5}, {0.3, 0.7}, {0.5 + 1e-9, 0.5}, {0.99999999, 0.99999999},
+      {1e-8, 1e-8}};
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int i = 0; i < 6; ++i) points.push_back({unit(random), unit(random)});
   return points;

@@ -27,9 +27,7 @@ struct Cell {
   bool operator==(const Cell&) const = default;
 };
 struct CellHash {
-  std::size_t operator()(const Cell& c) const {
-    return std::size_t(c.x * 73856093 ^ c.y * 19349663 ^ c.z * 83492791);
-  }
+  std::size_t operator()(const Cell& c) const { return std::size_t(c.x * 73856093 ^ c.y * 19349663 ^ c.z * 83492791); }
 };
 
 class EdgeSamples {
@@ -58,7 +56,8 @@ class EdgeSamples {
           const auto cell = cells_.find({c.x + dx, c.y + dy, c.z + dz});
           if (cell == cells_.end()) continue;
           for (const auto& [v, n] : cell->second) {
-            if (glm::length(v - u) < kMatch && std::find(found.begin(), found.end(), n) == found.end()) found.push_back(n);
+            if (glm::length(v - u) < kMatch && std::find(found.begin(), found.end(), n) == found.end())
+              found.push_back(n);
           }
         }
       }
@@ -98,8 +97,8 @@ TEST(NodeBalance, NeighboursDifferByAtMostOneLevelAndCoarserEdgesAreExact) {
             << test.name << ": face " << key.face << " level " << key.level << " edge " << e;
       }
     }
-    std::printf("%-36s %6d edge contacts, %4d across faces, %5d coarser edges\n", test.name.c_str(), pairs,
-                acrossFaces, coarser);
+    std::printf("%-36s %6d edge contacts, %4d across faces, %5d coarser edges\n", test.name.c_str(), pairs, acrossFaces,
+                coarser);
     EXPECT_GT(pairs, 0) << test.name;
   }
 }

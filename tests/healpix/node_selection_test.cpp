@@ -76,9 +76,12 @@ TEST(NodeSelection, PerNodeHeightsRefineOnlyWhatTheViewNeeds) {
   const std::vector<SelectedNode> coarse = selectNodes(view, kEarthRadius, global, {});
   const NodeHeights known = [&](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> { return local; };
   const std::vector<SelectedNode> fine = selectNodes(view, kEarthRadius, global, {}, known);
-  std::printf("5 km up, heights +-240 km: %zu nodes; known to lie within +-2 km: %zu nodes\n", coarse.size(), fine.size());
+  std::printf("5 km up, heights +-240 km: %zu nodes; known to lie within +-2 km: %zu nodes\n", coarse.size(),
+              fine.size());
   EXPECT_LT(fine.size() * 4, coarse.size());
-  const NodeHeights unknown = [](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> { return std::nullopt; };
+  const NodeHeights unknown = [](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> {
+    return std::nullopt;
+  };
   EXPECT_EQ(selectNodes(view, kEarthRadius, global, {}, unknown).size(), coarse.size());
   int seen = 0;
   for (int i = 0; i < 97; ++i)

@@ -45,7 +45,8 @@ inline std::vector<SelectedNode> selectAndReport(const TestView& test, const Sel
   const auto start = std::chrono::steady_clock::now();
   std::vector<SelectedNode> nodes = selectNodes(view, kEarthRadius, test.heights, settings);
   const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%-36s threshold %5.3f: %5zu nodes in %7.3f ms\n", test.name.c_str(), settings.threshold, nodes.size(), ms);
+  std::printf("%-36s threshold %5.3f: %5zu nodes in %7.3f ms\n", test.name.c_str(), settings.threshold, nodes.size(),
+              ms);
   return nodes;
 }
 

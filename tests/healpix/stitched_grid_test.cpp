@@ -22,7 +22,9 @@ constexpr int kCells = 8;
 glm::ivec2 latticeOf(std::uint32_t index) { return {int(index) % (kCells + 1), int(index) / (kCells + 1)}; }
 
 // Twice the signed area of a triangle of lattice points.
-int doubledArea(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+int doubledArea(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 // Which side an outline edge of the square lies on, or -1 inside: 0 at y = 0, 1 at x = cells, 2 at y = cells,
 // 3 at x = 0.
@@ -51,14 +53,15 @@ TEST(HealpixStitchedGrid, EveryEdgeSetCoversTheSquareAndMeetsItsNeighbours) {
       for (int k = 0; k < 3; ++k) ++directedEdges[{triangle[k], triangle[(k + 1) % 3]}];
     }
     EXPECT_EQ(doubledTotal, 2 * kCells * kCells);  // with no triangle turned over, the square once
-    std::array<int, 4> outlineSteps{};  // the longest outline edge on each side, in lattice steps
+    std::array<int, 4> outlineSteps{};             // the longest outline edge on each side, in lattice steps
     for (const auto& [edge, count] : directedEdges) {
       EXPECT_EQ(count, 1) << "two triangles overlap";
       if (directedEdges.contains({edge.second, edge.first})) continue;  // shared inside the square
       const glm::ivec2 a = latticeOf(edge.first), b = latticeOf(edge.second);
       const int side = sideOf(a, b);
       ASSERT_GE(side, 0) << "an outline edge inside the square";
-      outlineSteps[std::size_t(side)] = std::max(outlineSteps[std::size_t(side)], std::abs(b.x - a.x) + std::abs(b.y - a.y));
+      outlineSteps[std::size_t(side)] =
+          std::max(outlineSteps[std::size_t(side)], std::abs(b.x - a.x) + std::abs(b.y - a.y));
       if (coarser & (1u << side)) {
         EXPECT_TRUE(a.x % 2 == 0 && a.y % 2 == 0 && b.x % 2 == 0 && b.y % 2 == 0);
       }

@@ -83,8 +83,8 @@ template <typename Real>
 Discrepancy subdivisionError(const Corners& corners, const glm::dvec3& eye, LonLatReference origin) {
   const SubdivisionTable table(kDepth);
   const PatchSeed seed = patchSeed(corners, kEarth, eye, origin.lon);
-  return discrepancy(subdivideGeodesic<Real>(seed, origin, table), subdivideGeodesic<double>(seed, origin, table),
-                     eye, origin);
+  return discrepancy(subdivideGeodesic<Real>(seed, origin, table), subdivideGeodesic<double>(seed, origin, table), eye,
+                     origin);
 }
 
 struct Case {

@@ -38,7 +38,9 @@ class Geomorphing : public ::testing::TestWithParam<bool> {
   // The tree, told each patch's heights on the terrain: here the relief's whole range, which bounds them.
   PatchTree tree() const {
     if (!GetParam()) return PatchTree(kEarth, {-kRelief, kRelief});
-    return PatchTree(kEarth, {-kRelief, kRelief}, {}, [](const SphericalTriangle&) { return HeightRange{-kRelief, kRelief}; });
+    return PatchTree(kEarth, {-kRelief, kRelief}, {}, [](const SphericalTriangle&) {
+      return HeightRange{-kRelief, kRelief};
+    });
   }
   // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
   std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
@@ -110,7 +112,9 @@ TEST_P(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
 }
 
 INSTANTIATE_TEST_SUITE_P(MeasuredOn, Geomorphing, ::testing::Values(false, true),
-                         [](const ::testing::TestParamInfo<bool>& measured) { return measured.param ? "Terrain" : "Sphere"; });
+                         [](const ::testing::TestParamInfo<bool>& measured) {
+                           return measured.param ? "Terrain" : "Sphere";
+                         });
 
 }  // namespace
 }  // namespace strata::icosahedral

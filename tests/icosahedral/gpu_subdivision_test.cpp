@@ -42,8 +42,8 @@ Errors subdivideOnGpu(const Patch& patch, const glm::dvec3& eye) {
   View view;
   view.eye = eye;
   view.reference = {std::atan2(eye.y, eye.x), std::asin(eye.z / glm::length(eye))};  // as makeView sets it
-  static test::GpuPatches gpu;  // one program for all the tests
-  const auto [batch, vertices] = gpu.subdivide({patch}, view, 1.0);  // level 0: never morphed
+  static test::GpuPatches gpu;                                                       // one program for all the tests
+  const auto [batch, vertices] = gpu.subdivide({patch}, view, 1.0);                  // level 0: never morphed
   const SubdivisionTable& table = gpu.table();
 
   const glm::dvec3 centre = patch.corners[0] + patch.corners[1] + patch.corners[2];
@@ -55,7 +55,8 @@ Errors subdivideOnGpu(const Patch& patch, const glm::dvec3& eye) {
     const double lat = batch.reference.lat + reference[i].lonlat.y;
     const double allowed = 1e-3 + 1e-6 * glm::length(reference[i].position);
     errors.ground = std::max(errors.ground, kEarth * std::hypot(d.x * std::cos(lat), d.y) / allowed);
-    errors.position = std::max(errors.position, glm::length(glm::dvec3(glm::vec3(vertices[i].position)) - reference[i].position));
+    errors.position =
+        std::max(errors.position, glm::length(glm::dvec3(glm::vec3(vertices[i].position)) - reference[i].position));
   }
   return errors;
 }

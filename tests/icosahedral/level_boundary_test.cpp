@@ -29,12 +29,13 @@ TEST_P(LevelBoundaries, EveryPixelOnTheBodyIsDrawn) {
   TemporaryDirectory directory;
   const LowView low = GetParam();
   const auto pipeline = directory.write(
-      "low.yaml", "strata: 1\ncamera: {lon: " + std::to_string(low.lon) + ", lat: " + std::to_string(low.lat) +
-                      ", altitude: " + std::to_string(low.altitude) + ", heading: 20, tilt: " + std::to_string(low.tilt) + "}\nnodes:\n" +
-                      (low.heights ? "  heights: {type: source.procedural, kind: height}\n"
-                                     "  globe: {type: geometry.icosahedral, height: heights, lowest: -12000, highest: 12000}\n"
-                                   : "  globe: {type: geometry.icosahedral}\n") +
-                      "  frame: {type: output.image, geometry: globe, shading: none}\n");
+      "low.yaml",
+      "strata: 1\ncamera: {lon: " + std::to_string(low.lon) + ", lat: " + std::to_string(low.lat) + ", altitude: " +
+          std::to_string(low.altitude) + ", heading: 20, tilt: " + std::to_string(low.tilt) + "}\nnodes:\n" +
+          (low.heights ? "  heights: {type: source.procedural, kind: height}\n"
+                         "  globe: {type: geometry.icosahedral, height: heights, lowest: -12000, highest: 12000}\n"
+                       : "  globe: {type: geometry.icosahedral}\n") +
+          "  frame: {type: output.image, geometry: globe, shading: none}\n");
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kWidth, kHeight);
   const View view = engine->view(kWidth, kHeight);
@@ -59,16 +60,16 @@ TEST_P(LevelBoundaries, EveryPixelOnTheBodyIsDrawn) {
 // fly-in benchmark descends, to its end 300 m above the summit, where the one-level rule's forced splits
 // and geomorphing are busiest. The T-junctions of patches drawn without their edge windings crack the
 // first two; heights sampled with each patch's own footprint left a dozen one-pixel holes in the fifth.
-INSTANTIATE_TEST_SUITE_P(Views, LevelBoundaries,
-                         ::testing::Values(LowView{179.99, 35.0, 2.0, 80.0, false}, LowView{179.99, 35.0, 500.0, 85.0, false},
-                                           LowView{179.99, 35.0, 2.0e4, 70.0, false},
-                                           LowView{179.99, 35.0, 1.0e6, 40.0, false}, LowView{10.0, 20.0, 3.0e4, 60.0, true},
-                                           LowView{-74.0, 4.0, 1.0e5, 30.0, true}, LowView{-74.0, 4.0, 1.5e4, 60.0, true},
-                                           LowView{-74.0, 3.98, 9.0e3, 75.0, true}),
-                         [](const ::testing::TestParamInfo<LowView>& view) {
-                           return "altitude_" + std::to_string(int(view.param.altitude)) + "m_tilt_" +
-                                  std::to_string(int(view.param.tilt)) + (view.param.heights ? "_heights" : "");
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Views, LevelBoundaries,
+    ::testing::Values(LowView{179.99, 35.0, 2.0, 80.0, false}, LowView{179.99, 35.0, 500.0, 85.0, false},
+                      LowView{179.99, 35.0, 2.0e4, 70.0, false}, LowView{179.99, 35.0, 1.0e6, 40.0, false},
+                      LowView{10.0, 20.0, 3.0e4, 60.0, true}, LowView{-74.0, 4.0, 1.0e5, 30.0, true},
+                      LowView{-74.0, 4.0, 1.5e4, 60.0, true}, LowView{-74.0, 3.98, 9.0e3, 75.0, true}),
+    [](const ::testing::TestParamInfo<LowView>& view) {
+      return "altitude_" + std::to_string(int(view.param.altitude)) + "m_tilt_" + std::to_string(int(view.param.tilt)) +
+             (view.param.heights ? "_heights" : "");
+    });
 
 }  // namespace
 }  // namespace strata::test

@@ -40,10 +40,11 @@ TEST(PatchShell, TheSupportFunctionIsTheLargestDotOverTheTriangle) {
     const glm::dvec3 direction(any(random), any(random), any(random));
     double sampled = -2.0;
     for (int i = 0; i <= 60; ++i)
-      for (int j = 0; i + j <= 60; ++j) sampled = std::max(sampled, glm::dot(direction, inside(kTriangle, i / 60.0, j / 60.0)));
+      for (int j = 0; i + j <= 60; ++j)
+        sampled = std::max(sampled, glm::dot(direction, inside(kTriangle, i / 60.0, j / 60.0)));
     const double exact = largestDot(kTriangle, direction);
-    EXPECT_GE(exact, sampled - 1e-12);                              // never below a point of the triangle
-    EXPECT_LE(exact, sampled + 1e-3 * glm::length(direction));      // and the grid gets close to it
+    EXPECT_GE(exact, sampled - 1e-12);                          // never below a point of the triangle
+    EXPECT_LE(exact, sampled + 1e-3 * glm::length(direction));  // and the grid gets close to it
   }
 }
 
@@ -68,7 +69,8 @@ double faceOnDistance(const glm::dvec3& unit, double radius, const glm::dvec3& e
 // octant: the sampled nearest distance may lie up to about 0.02 above the true one).
 TEST(PatchShell, TheLeastFaceOnDistanceBoundsEveryPointOfThePatch) {
   const SphericalTriangle octant{glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0, 0, 1)};
-  EXPECT_NEAR(leastFaceOnDistance({octant, kEarth, kEarth}, glm::normalize(glm::dvec3(1, 1, 1)) * (kEarth + 1.0)), 1.0, 1e-6);
+  EXPECT_NEAR(leastFaceOnDistance({octant, kEarth, kEarth}, glm::normalize(glm::dvec3(1, 1, 1)) * (kEarth + 1.0)), 1.0,
+              1e-6);
   for (const glm::dvec3& eye : {glm::dvec3(-1, 1, 1) * 2.0, glm::dvec3(3, -1, 0.5), glm::dvec3(0.2, 0.3, 1.05)}) {
     double nearest = 1e300, leastFaceOn = 1e300;
     for (double a = 0.0; a <= 1.0; a += 1.0 / 64.0)
@@ -102,7 +104,8 @@ TEST(PatchShell, WhatIsRuledOutHasNoPointThatShows) {
     const double lo = lon(random), la = lat(random), size = 0.5 + 20.0 * (any(random) + 1.0);
     const SphericalTriangle t{at(lo, la), at(lo + size, la), at(lo + 0.5 * size, la + size)};
     const PatchShell shell{t, kEarth, kEarth + 8848.0};
-    const glm::dvec3 eye = at(lon(random), lat(random)) * (kEarth + std::pow(10.0, 2.0 + 5.0 * (any(random) + 1.0) / 2.0));
+    const glm::dvec3 eye =
+        at(lon(random), lat(random)) * (kEarth + std::pow(10.0, 2.0 + 5.0 * (any(random) + 1.0) / 2.0));
     const glm::dvec3 normal(any(random), any(random), any(random));
     const double offset = -glm::dot(normal, at(lon(random), lat(random)) * kEarth);
     const bool belowIt = belowHorizon(shell, eye, kEarth), outsideIt = outsidePlane(shell, normal, offset);

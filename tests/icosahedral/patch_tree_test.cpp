@@ -171,7 +171,8 @@ void expectOneLevelApartWithCoarseEdgesFlagged(const PatchTree& tree) {
       bool coarser = false;
       for (const double along : {0.25, 0.75}) {
         const glm::dvec3 edgePoint = glm::normalize(a * (1.0 - along) + b * along);
-        const std::int32_t neighbour = leafHolding(tree, ids, glm::normalize(edgePoint + outward * 1e-3 * glm::length(a - b)));
+        const std::int32_t neighbour =
+            leafHolding(tree, ids, glm::normalize(edgePoint + outward * 1e-3 * glm::length(a - b)));
         ASSERT_GE(neighbour, 0);
         EXPECT_LE(std::abs(topology[neighbour].level - topology[id].level), 1);
         coarser = coarser || topology[neighbour].level < topology[id].level;
@@ -206,15 +207,16 @@ TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
   };
   PatchTree bare(kEarth, {0.0, 0.0});
   settle(bare, std::vector<ViewVolume>{ViewVolume(viewFrom(overSphere))});
-  const std::vector<ViewVolume> plateauViews{ViewVolume(makeView(Body{"Earth", kEarth}, overPlateau, 1280, 720, terrain))};
+  const std::vector<ViewVolume> plateauViews{
+      ViewVolume(makeView(Body{"Earth", kEarth}, overPlateau, 1280, 720, terrain))};
   PatchTree own(kEarth, terrain, {}, plateau);
   settle(own, plateauViews);
   PatchTree whole(kEarth, terrain);
   settle(whole, plateauViews);
   EXPECT_GE(deepestLevel(bare), 20);
   EXPECT_NEAR(deepestLevel(own), deepestLevel(bare), 1);
-  std::printf("deepest levels: %d over the sphere, %d over the plateau, %d measured on the sphere\n", deepestLevel(bare),
-              deepestLevel(own), deepestLevel(whole));
+  std::printf("deepest levels: %d over the sphere, %d over the plateau, %d measured on the sphere\n",
+              deepestLevel(bare), deepestLevel(own), deepestLevel(whole));
   EXPECT_LE(deepestLevel(whole), deepestLevel(bare) - 8) << "3 km is 2^10 times 2 m: about ten levels coarser";
 }
 
@@ -255,8 +257,9 @@ TEST(PatchTree, NoTerrainTheEyeCanSeeIsCulled) {
 
 TEST(PatchTree, EveryViewIsServedAtOnce) {
   PatchTree tree(kEarth, {0.0, 0.0});
-  const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 90, .tilt = 80})),
-                                      ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 270, .tilt = 80}))};
+  const std::vector<ViewVolume> views{
+      ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 90, .tilt = 80})),
+      ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 270, .tilt = 80}))};
   settle(tree, views);
   int east = 0, west = 0;
   for (const Patch& patch : tree.visiblePatches()) {

@@ -151,10 +151,13 @@ void reportBuiltins(const std::vector<glm::vec2>& pairs, const std::vector<Resul
       }
     }
     const double eps = std::ldexp(1.0, -23);
-    std::printf("%-4s worst relative error, builtin / precise: 1e-7 to 1e-5 %.2g / %.2g, below 1e-4 %.2g / %.2g, "
-                "everywhere %.2g / %.2g\n", kNames[f], eps * builtin[0].units, eps * ours[0].units,
-                eps * builtin[1].units, eps * ours[1].units, eps * builtin[2].units, eps * ours[2].units);
-    ::testing::Test::RecordProperty(std::string("builtin_") + kNames[f] + "_tiny", std::to_string(eps * builtin[0].units));
+    std::printf(
+        "%-4s worst relative error, builtin / precise: 1e-7 to 1e-5 %.2g / %.2g, below 1e-4 %.2g / %.2g, "
+        "everywhere %.2g / %.2g\n",
+        kNames[f], eps * builtin[0].units, eps * ours[0].units, eps * builtin[1].units, eps * ours[1].units,
+        eps * builtin[2].units, eps * ours[2].units);
+    ::testing::Test::RecordProperty(std::string("builtin_") + kNames[f] + "_tiny",
+                                    std::to_string(eps * builtin[0].units));
     ::testing::Test::RecordProperty(std::string("precise_") + kNames[f] + "_tiny", std::to_string(eps * ours[0].units));
   }
 }
@@ -177,7 +180,6 @@ TEST(PreciseTrig, IsGoodToAFewUlpRelativeEverywhere) {
   }
   reportBuiltins(pairs, results);
 }
-
 
 }  // namespace
 }  // namespace strata::icosahedral

@@ -22,17 +22,19 @@ constexpr int kSize = 256;
 
 TEST(AntimeridianPages, BothSidesOfTheSeamAreDrawnAtFullResolution) {
   TemporaryDirectory directory;
-  writeColourRaster(directory.path() / "seam.tif", kTexelsAcross, kTexelsDown, {-180, -90, 180, 90}, [](int column, int) {
-    const unsigned char grey = column == 0 || column == kTexelsAcross - 1 ? kBright : kDark;
-    return Rgb8{grey, grey, grey};
-  });
+  writeColourRaster(directory.path() / "seam.tif", kTexelsAcross, kTexelsDown, {-180, -90, 180, 90},
+                    [](int column, int) {
+                      const unsigned char grey = column == 0 || column == kTexelsAcross - 1 ? kBright : kDark;
+                      return Rgb8{grey, grey, grey};
+                    });
   // 30 km up at 65.5 N, the view is 25 km across: half a texel (0.088 degrees, 4 km there) either side of
   // the seam is 41 pixels.
-  const auto pipeline = directory.write(
-      "seam.yaml", "strata: 1\ncamera: {lon: 180, lat: 65.5, altitude: 30000, fov: 45}\nnodes:\n"
-                   "  imagery: {type: source.gdal, path: seam.tif}\n"
-                   "  globe: {type: geometry.icosahedral}\n"
-                   "  frame: {type: output.image, geometry: globe, surface: [imagery], shading: none}\n");
+  const auto pipeline =
+      directory.write("seam.yaml",
+                      "strata: 1\ncamera: {lon: 180, lat: 65.5, altitude: 30000, fov: 45}\nnodes:\n"
+                      "  imagery: {type: source.gdal, path: seam.tif}\n"
+                      "  globe: {type: geometry.icosahedral}\n"
+                      "  frame: {type: output.image, geometry: globe, surface: [imagery], shading: none}\n");
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kSize, kSize);
   int dim = 0;

@@ -81,8 +81,8 @@ Slot assembled(const PageSource& source, PageKey key, bool wrapX) {
 TEST(PageAssembly, TheBorderHoldsTheNeighboursEdgeTexels) {
   const PositionSource source(2000, 1600);
   const Slot slot = assembled(source, {0, 1, 1}, false);
-  EXPECT_EQ(slot.at(1, 1), (std::array{512, 512}));       // the payload's first texel
-  EXPECT_EQ(slot.at(0, 0), (std::array{511, 511}));       // the north-west neighbour's corner
+  EXPECT_EQ(slot.at(1, 1), (std::array{512, 512}));        // the payload's first texel
+  EXPECT_EQ(slot.at(0, 0), (std::array{511, 511}));        // the north-west neighbour's corner
   EXPECT_EQ(slot.at(513, 513), (std::array{1024, 1024}));  // the south-east neighbour's corner
 }
 
@@ -126,8 +126,8 @@ TEST(PageAssembly, AWrappingLevelBordersItsEastAndWestEdges) {
 TEST(PageAssembly, AnUnreadableNeighbourLeavesTheBorderClampedToThePagesOwnEdge) {
   const PositionSource source(2000, 1600, 1024);  // the first column of page column 2
   const Slot slot = assembled(source, {0, 1, 1}, false);
-  EXPECT_EQ(slot.at(0, 0), (std::array{512, 512}));       // no longer the north-west neighbour's corner
-  EXPECT_EQ(slot.at(256, 256), (std::array{767, 767}));   // the payload as ever
+  EXPECT_EQ(slot.at(0, 0), (std::array{512, 512}));        // no longer the north-west neighbour's corner
+  EXPECT_EQ(slot.at(256, 256), (std::array{767, 767}));    // the payload as ever
   EXPECT_EQ(slot.at(513, 513), (std::array{1023, 1023}));  // no longer the south-east neighbour's corner
 }
 

@@ -5,8 +5,8 @@
 
 #include <cmath>
 #include <fstream>
-#include <numbers>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include <gdal_priv.h>
@@ -43,13 +43,19 @@ class PageCacheRendering : public ::testing::Test {
                                  double altitude) const {
     return scratch_.write("p.yaml",
                           "strata: 1\n"
-                          "camera: {lon: " + std::to_string(lon) + ", lat: " + std::to_string(lat) +
-                              ", altitude: " + std::to_string(altitude) + "}\n"
-                          "cache: " + cache + "\n"
-                          "nodes:\n"
-                          "  data: {type: source.gdal, path: " + file.string() + ", kind: luminance}\n"
-                          "  globe: {type: geometry.icosahedral}\n"
-                          "  frame: {type: output.image, geometry: globe, surface: [data], shading: none}\n");
+                          "camera: {lon: " +
+                              std::to_string(lon) + ", lat: " + std::to_string(lat) +
+                              ", altitude: " + std::to_string(altitude) +
+                              "}\n"
+                              "cache: " +
+                              cache +
+                              "\n"
+                              "nodes:\n"
+                              "  data: {type: source.gdal, path: " +
+                              file.string() +
+                              ", kind: luminance}\n"
+                              "  globe: {type: geometry.icosahedral}\n"
+                              "  frame: {type: output.image, geometry: globe, surface: [data], shading: none}\n");
   }
 
   static TemporaryDirectory* raster_;
@@ -61,7 +67,8 @@ TemporaryDirectory* PageCacheRendering::raster_ = nullptr;
 // The largest difference of any channel of any pixel.
 int largestDifference(const Image& a, const Image& b) {
   int largest = 0;
-  for (std::size_t i = 0; i < a.rgba.size(); ++i) largest = std::max(largest, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+  for (std::size_t i = 0; i < a.rgba.size(); ++i)
+    largest = std::max(largest, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
   return largest;
 }
 
@@ -89,9 +96,9 @@ void damageTile(const std::filesystem::path& file, int column, int row) {
 TEST_F(PageCacheRendering, ASmallBudgetStaysWithinItselfAndDrawsWhatARoomyOneDraws) {
   const std::filesystem::path file = raster_->path() / "plain.tif";
   auto engine = makeEngine();
-  const Image cramped = renderFrame(
-      *engine, pipeline(file, "{budget: 40, uploads_per_frame: 2, loader_threads: 1}", 10.0, -30.0, 1.5e6), kFrame,
-      kFrame);
+  const Image cramped =
+      renderFrame(*engine, pipeline(file, "{budget: 40, uploads_per_frame: 2, loader_threads: 1}", 10.0, -30.0, 1.5e6),
+                  kFrame, kFrame);
   const PageCacheStatistics& statistics = engine->pageCacheStatistics();
   EXPECT_EQ(statistics.capacity, 13);
   EXPECT_LE(statistics.wanted, statistics.capacity) << "the view must fit the small cache for the comparison";
@@ -104,8 +111,8 @@ TEST_F(PageCacheRendering, ASmallBudgetStaysWithinItselfAndDrawsWhatARoomyOneDra
 
 TEST_F(PageCacheRendering, TheLeastRecentlyUsedPagesAreEvictedAsTheViewMoves) {
   auto engine = makeEngine();
-  engine->load(pipeline(raster_->path() / "plain.tif", "{budget: 40, uploads_per_frame: 2, loader_threads: 1}",
-                        -150.0, 20.0, 1.5e6));
+  engine->load(pipeline(raster_->path() / "plain.tif", "{budget: 40, uploads_per_frame: 2, loader_threads: 1}", -150.0,
+                        20.0, 1.5e6));
   for (const double lon : {-150.0, -60.0, 30.0, 120.0}) {
     engine->camera().lon = lon;
     engine->renderComplete(kFrame, kFrame);

@@ -216,8 +216,10 @@ TEST(PgmCrossSection, RaysBeyondTheTangentOrAwayFromThePlanetMissAndGiveTheHoriz
         EXPECT_LT(glm::length(point.position - horizon.position), 1e-15 * glm::length(horizon.position));
       }
       const double gamma = std::acos(-glm::dot(point.normal, nadir));
-      EXPECT_NEAR(gamma, view.secondaryRadius > 0.0 ? 0.5 * std::numbers::pi - view.secondaryTangent
-                                                    : 0.5 * std::numbers::pi - tangent, 1e-7);
+      EXPECT_NEAR(gamma,
+                  view.secondaryRadius > 0.0 ? 0.5 * std::numbers::pi - view.secondaryTangent
+                                             : 0.5 * std::numbers::pi - tangent,
+                  1e-7);
     }
     EXPECT_TRUE(castRay(view, rayAt(nadir, tangent * (1.0 - 1e-9), 0.7), nadir).hit);
     EXPECT_TRUE(misses(view.altitude / kMars, std::sin(tangent * (1.0 + 1e-9)), std::cos(tangent * (1.0 + 1e-9))));

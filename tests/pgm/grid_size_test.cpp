@@ -14,8 +14,8 @@ TEST(PgmGridSize, ColumnsByRows) {
 }
 
 TEST(PgmGridSize, AnythingElseIsNoGrid) {
-  for (const char* text : {"", "512", "512x", "x512", "512X512", "512 x 512", "512x512x2", "-4x4", "1x512",
-                           "512x4097", "0x0", "512.5x512", "99999999999x2"})
+  for (const char* text : {"", "512", "512x", "x512", "512X512", "512 x 512", "512x512x2", "-4x4", "1x512", "512x4097",
+                           "0x0", "512.5x512", "99999999999x2"})
     EXPECT_EQ(parseGridSize(text), std::nullopt) << text;
 }
 

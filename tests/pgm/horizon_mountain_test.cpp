@@ -21,8 +21,8 @@
 namespace strata::test {
 namespace {
 
-constexpr double kEarth = 6371000.0;                          // m
-constexpr double kPeakHeight = 8000.0, kPeakWidth = 20000.0;  // m: a Gaussian of this height and 1/e radius
+constexpr double kEarth = 6371000.0;                            // m
+constexpr double kPeakHeight = 8000.0, kPeakWidth = 20000.0;    // m: a Gaussian of this height and 1/e radius
 const double kPeakLongitude = glm::degrees(150000.0 / kEarth);  // deg, on the equator
 constexpr int kWidth = 320, kHeight = 240;
 // Pixels: the peak is a smooth dome sampled by the grid (256 x 256 rays) and by the raster (556 m texels);
@@ -43,9 +43,11 @@ void writeMountain(const std::filesystem::path& file) {
 std::string pipelineWith(const std::filesystem::path& mountain, const std::string& geometry) {
   return "strata: 1\nbody: {name: Earth, radius: " + std::to_string(kEarth) +
          "}\nnodes:\n"
-         "  relief: {type: source.gdal, path: " + mountain.string() +
+         "  relief: {type: source.gdal, path: " +
+         mountain.string() +
          ", kind: height}\n"
-         "  terrain: {type: " + geometry + ", height: relief, lowest: 0, highest: " + std::to_string(kPeakHeight) +
+         "  terrain: {type: " +
+         geometry + ", height: relief, lowest: 0, highest: " + std::to_string(kPeakHeight) +
          "}\n"
          "  frame: {type: output.image, geometry: terrain, shading: none}\n";
 }
@@ -87,12 +89,12 @@ class PgmHorizonMountain : public ::testing::Test {
     return top;
   }
 
-  static constexpr Camera kCamera{.lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0,
-                                  .fov = 30.0};
+  static constexpr Camera kCamera{
+      .lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0, .fov = 30.0};
   TemporaryDirectory directory_;
   std::unique_ptr<Engine> engine_ = makeEngine();
-  Landmarks landmarks_ = landmarksOf(makeView(Body{.name = "Earth", .radius = kEarth}, kCamera, kWidth, kHeight),
-                                     kCamera.altitude);
+  Landmarks landmarks_ =
+      landmarksOf(makeView(Body{.name = "Earth", .radius = kEarth}, kCamera, kWidth, kHeight), kCamera.altitude);
   void SetUp() override {
     writeMountain(directory_.path() / "mountain.tif");
     // The peak stands well above the bare horizon, or the test shows nothing.

@@ -44,7 +44,7 @@
 namespace strata::pgm {
 namespace {
 
-constexpr double kMars = 3396000.0;  // m
+constexpr double kMars = 3396000.0;   // m
 constexpr double kHighest = 21000.0;  // m above kMars: the maximum sphere
 constexpr glm::ivec2 kGrid(64, 64);
 
@@ -76,7 +76,11 @@ ViewCamera viewAt(double altitude, double tilt) {
   const double near = 0.5, top = near * std::tan(glm::radians(30.0)), side = 16.0 / 9.0 * top;
   return {.eye = (kMars + altitude) * up,
           .planetToEye = glm::transpose(glm::dmat3(right, glm::cross(-forward, right), -forward)),
-          .left = -side, .right = side, .bottom = -top, .top = top, .near = near};
+          .left = -side,
+          .right = side,
+          .bottom = -top,
+          .top = top,
+          .near = near};
 }
 
 // How far the reference moves when its ray turns by kRayError, towards or away from the nadir or across
@@ -145,10 +149,11 @@ Errors castOnGpu(double altitude, double tilt) {
       errors.normal = std::max(errors.normal, normal / (kNormalError + spread.normal));
     }
   }
-  std::printf("%9.0f m, tilt %2.0f: %4d hits, %d undecided, %d flipped; position %.2g of distance (%.2f of "
-              "tolerance), normal %.2g (%.2f), within %.0f m %.2g m\n",
-              altitude, glm::degrees(tilt), errors.hits, errors.undecided, errors.flipped, errors.relative,
-              errors.position, errors.angle, errors.normal, kNearby, errors.nearby);
+  std::printf(
+      "%9.0f m, tilt %2.0f: %4d hits, %d undecided, %d flipped; position %.2g of distance (%.2f of "
+      "tolerance), normal %.2g (%.2f), within %.0f m %.2g m\n",
+      altitude, glm::degrees(tilt), errors.hits, errors.undecided, errors.flipped, errors.relative, errors.position,
+      errors.angle, errors.normal, kNearby, errors.nearby);
   return errors;
 }
 

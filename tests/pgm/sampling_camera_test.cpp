@@ -36,7 +36,10 @@ ViewCamera viewAt(const Pose& pose, double fovY, double aspect, double shift = 0
   const double near = 0.5, top = near * std::tan(0.5 * fovY);
   return {.eye = (kMars + pose.altitude) * up,
           .planetToEye = glm::transpose(glm::dmat3(right, glm::cross(-forward, right), -forward)),
-          .left = -aspect * top, .right = aspect * top, .bottom = (shift - 1.0) * top, .top = (shift + 1.0) * top,
+          .left = -aspect * top,
+          .right = aspect * top,
+          .bottom = (shift - 1.0) * top,
+          .top = (shift + 1.0) * top,
           .near = near};
 }
 
@@ -67,7 +70,8 @@ glm::dvec3 randomSphereRay(const glm::dvec3& eye, std::mt19937& random) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const glm::dvec3 nadir = -glm::normalize(eye);
   const glm::dvec3 across = glm::normalize(glm::cross(nadir, glm::dvec3(0.3, 0.5, 0.7)));
-  const double angle = std::asin(kMars / glm::length(eye)) * std::min(1.2 * unit(random), 1.0), azimuth = 2.0 * std::numbers::pi * unit(random);
+  const double angle = std::asin(kMars / glm::length(eye)) * std::min(1.2 * unit(random), 1.0),
+               azimuth = 2.0 * std::numbers::pi * unit(random);
   const glm::dvec3 side = std::cos(azimuth) * across + std::sin(azimuth) * glm::cross(nadir, across);
   return std::cos(angle) * nadir + std::sin(angle) * side;
 }
@@ -90,18 +94,20 @@ TEST(PgmSamplingCamera, EveryViewRayThatHitsIsCovered) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double latitudes[] = {0.0, 0.6, -1.1, glm::radians(89.9), glm::radians(-89.9)};
   for (int eye = 0; eye < 600; ++eye) {
-    const Pose pose{.latitude = latitudes[eye % 5], .longitude = 6.3 * unit(random),
+    const Pose pose{.latitude = latitudes[eye % 5],
+                    .longitude = 6.3 * unit(random),
                     .altitude = std::exp(std::log(2.0) + unit(random) * std::log(1e7)),
-                    .tilt = glm::radians(90.0) * unit(random), .heading = 6.3 * unit(random),
+                    .tilt = glm::radians(90.0) * unit(random),
+                    .heading = 6.3 * unit(random),
                     .roll = 0.6 * (unit(random) - 0.5)};
-    const ViewCamera view = viewAt(pose, glm::radians(20.0 + 80.0 * unit(random)), 0.5 + 1.5 * unit(random),
-                                   unit(random) - 0.5);
+    const ViewCamera view =
+        viewAt(pose, glm::radians(20.0 + 80.0 * unit(random)), 0.5 + 1.5 * unit(random), unit(random) - 0.5);
     const SamplingCamera camera = samplingCamera(view, kMars);
     for (int trial = 0; trial < 2000; ++trial) {
       const double across = trial % 4 == 0 ? std::round(unit(random)) : unit(random);
       const double upward = trial % 4 == 1 ? std::round(unit(random)) : unit(random);
-      const glm::dvec3 ray = viewRay(view, view.left + (view.right - view.left) * across,
-                                     view.bottom + (view.top - view.bottom) * upward);
+      const glm::dvec3 ray =
+          viewRay(view, view.left + (view.right - view.left) * across, view.bottom + (view.top - view.bottom) * upward);
       if (!hitsMars(view.eye, ray)) continue;
       ASSERT_LE(overshoot(camera, ray), coverTolerance(camera)) << pose.altitude << " " << pose.tilt;
     }
@@ -114,9 +120,11 @@ TEST(PgmSamplingCamera, RaysDownToTheNadirAreCovered) {
   std::mt19937 random(13);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int eye = 0; eye < 300; ++eye) {
-    const Pose pose{.latitude = 1.5 * (unit(random) - 0.5), .longitude = 6.3 * unit(random),
+    const Pose pose{.latitude = 1.5 * (unit(random) - 0.5),
+                    .longitude = 6.3 * unit(random),
                     .altitude = std::exp(std::log(2.0) + unit(random) * std::log(1e7)),
-                    .tilt = glm::radians(40.0 + 50.0 * unit(random)), .heading = 6.3 * unit(random)};
+                    .tilt = glm::radians(40.0 + 50.0 * unit(random)),
+                    .heading = 6.3 * unit(random)};
     const ViewCamera view = viewAt(pose, glm::radians(20.0 + 40.0 * unit(random)), 0.5 + 1.5 * unit(random));
     const SamplingCamera camera = samplingCamera(view, kMars);
     const glm::dvec3 nadir = -glm::normalize(view.eye);
@@ -152,8 +160,9 @@ double hitFraction(const SamplingCamera& camera, const glm::dvec3& eye) {
 // degrees, 60 degrees of vertical field of view at 16:9. Measured: 99.64% of its rays hit; the misses are the sliver
 // between the horizon and the VSF's top plane, which touches it only straight ahead.
 TEST(PgmSamplingCamera, MostSamplingRaysHitNearTheGround) {
-  const ViewCamera view = viewAt({.latitude = 0.3, .longitude = 1.0, .altitude = 1e3, .tilt = glm::radians(80.0),
-                                  .heading = 0.7}, glm::radians(60.0), 16.0 / 9.0);
+  const ViewCamera view =
+      viewAt({.latitude = 0.3, .longitude = 1.0, .altitude = 1e3, .tilt = glm::radians(80.0), .heading = 0.7},
+             glm::radians(60.0), 16.0 / 9.0);
   const SamplingCamera camera = samplingCamera(view, kMars);
   EXPECT_GE(hitFraction(camera, view.eye), 0.5);
 }
@@ -172,8 +181,9 @@ void expectSphereCovered(const ViewCamera& view, const SamplingCamera& camera) {
 TEST(PgmSamplingCamera, LookingAwayFallsBackToTheVisibleSphereFrustum) {
   for (double altitude : {2.0, 1e3, 1e6, 2e7}) {
     SCOPED_TRACE(altitude);
-    const ViewCamera view = viewAt({.latitude = 0.4, .longitude = 2.0, .altitude = altitude,
-                                    .tilt = std::numbers::pi, .heading = 0.3}, glm::radians(60.0), 1.5);
+    const ViewCamera view =
+        viewAt({.latitude = 0.4, .longitude = 2.0, .altitude = altitude, .tilt = std::numbers::pi, .heading = 0.3},
+               glm::radians(60.0), 1.5);
     const SamplingCamera camera = samplingCamera(view, kMars);
     EXPECT_EQ(camera.fit, SamplingFit::kVisibleSphereAlone);
     expectSphereCovered(view, camera);
@@ -185,8 +195,13 @@ TEST(PgmSamplingCamera, LookingAwayFallsBackToTheVisibleSphereFrustum) {
 TEST(PgmSamplingCamera, StraightDownKeepsTheScreenAxes) {
   for (double altitude : {2.0, 1e5, 2e7}) {
     SCOPED_TRACE(altitude);
-    const ViewCamera view{.eye = glm::dvec3(0.0, 0.0, kMars + altitude), .planetToEye = glm::dmat3(1.0),
-                          .left = -0.4, .right = 0.4, .bottom = -0.3, .top = 0.3, .near = 0.5};
+    const ViewCamera view{.eye = glm::dvec3(0.0, 0.0, kMars + altitude),
+                          .planetToEye = glm::dmat3(1.0),
+                          .left = -0.4,
+                          .right = 0.4,
+                          .bottom = -0.3,
+                          .top = 0.3,
+                          .near = 0.5};
     const SamplingCamera camera = samplingCamera(view, kMars);
     EXPECT_NE(camera.fit, SamplingFit::kExtendedToNadir);
     for (int column = 0; column < 3; ++column) {
@@ -209,8 +224,12 @@ TEST(PgmSamplingCamera, AtThePoles) {
   for (double latitude : {90.0, -90.0, 89.9, -89.9}) {
     for (double tilt : {0.0, 45.0, 88.0}) {
       SCOPED_TRACE(latitude + tilt / 1000.0);
-      const ViewCamera view = viewAt({.latitude = glm::radians(latitude), .longitude = 0.0, .altitude = 10.0,
-                                      .tilt = glm::radians(tilt), .heading = 1.0}, glm::radians(50.0), 1.2);
+      const ViewCamera view = viewAt({.latitude = glm::radians(latitude),
+                                      .longitude = 0.0,
+                                      .altitude = 10.0,
+                                      .tilt = glm::radians(tilt),
+                                      .heading = 1.0},
+                                     glm::radians(50.0), 1.2);
       const SamplingCamera camera = samplingCamera(view, kMars);
       for (int row = 0; row <= 40; ++row) {
         for (int column = 0; column <= 40; ++column) {
@@ -229,8 +248,9 @@ TEST(PgmSamplingCamera, AtThePoles) {
 // lies inside the view frustum, and every ray that hits is covered.
 TEST(PgmSamplingCamera, TheWholeDiscFromTwentyThousandKilometres) {
   for (double tilt : {0.0, 3.0}) {
-    const ViewCamera view = viewAt({.latitude = 0.2, .longitude = 0.5, .altitude = 2e7, .tilt = glm::radians(tilt),
-                                    .heading = 2.0}, glm::radians(30.0), 1.0);
+    const ViewCamera view =
+        viewAt({.latitude = 0.2, .longitude = 0.5, .altitude = 2e7, .tilt = glm::radians(tilt), .heading = 2.0},
+               glm::radians(30.0), 1.0);
     const SamplingCamera camera = samplingCamera(view, kMars);
     EXPECT_EQ(camera.fit, SamplingFit::kIntersection);
     expectSphereCovered(view, camera);
@@ -243,12 +263,14 @@ TEST(PgmSamplingCamera, TheFrustumIsFiniteAndEveryRayPointsAhead) {
   std::mt19937 random(23);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int eye = 0; eye < 5000; ++eye) {
-    const Pose pose{.latitude = 3.2 * (unit(random) - 0.5), .longitude = 6.3 * unit(random),
+    const Pose pose{.latitude = 3.2 * (unit(random) - 0.5),
+                    .longitude = 6.3 * unit(random),
                     .altitude = std::exp(std::log(1e-3) + unit(random) * std::log(2e10)),
-                    .tilt = std::numbers::pi * unit(random), .heading = 6.3 * unit(random),
+                    .tilt = std::numbers::pi * unit(random),
+                    .heading = 6.3 * unit(random),
                     .roll = 6.3 * unit(random)};
-    const ViewCamera view = viewAt(pose, glm::radians(10.0 + 140.0 * unit(random)), 0.3 + 3.0 * unit(random),
-                                   2.0 * (unit(random) - 0.5));
+    const ViewCamera view =
+        viewAt(pose, glm::radians(10.0 + 140.0 * unit(random)), 0.3 + 3.0 * unit(random), 2.0 * (unit(random) - 0.5));
     const SamplingCamera camera = samplingCamera(view, kMars);
     ASSERT_TRUE(std::isfinite(camera.left) && std::isfinite(camera.right)) << pose.altitude;
     ASSERT_TRUE(std::isfinite(camera.bottom) && std::isfinite(camera.top)) << pose.altitude;

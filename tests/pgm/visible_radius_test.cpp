@@ -148,9 +148,12 @@ TEST_F(PgmVisibleRadius, ReadsBackWithoutWaiting) {
     bool sawSecond = false;
     for (int poll = 0; poll < 1000; ++poll) {
       const std::optional<double> value = radius.latest();
-      if (sawSecond) ASSERT_EQ(value, leastOf(second)) << poll;
-      else if (warm) ASSERT_TRUE(value == leastOf(first) || value == leastOf(second)) << poll;
-      else ASSERT_TRUE(!value || value == leastOf(first) || value == leastOf(second)) << poll;
+      if (sawSecond)
+        ASSERT_EQ(value, leastOf(second)) << poll;
+      else if (warm)
+        ASSERT_TRUE(value == leastOf(first) || value == leastOf(second)) << poll;
+      else
+        ASSERT_TRUE(!value || value == leastOf(first) || value == leastOf(second)) << poll;
       sawSecond = value == leastOf(second);
     }
     EXPECT_EQ(finished(radius), leastOf(second));

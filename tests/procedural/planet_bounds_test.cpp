@@ -24,7 +24,8 @@ glm::dvec3 directionOf(double lonDegrees, double latDegrees) {
 glm::dvec3 pointInCap(const glm::dvec3& centre, double angle, std::mt19937_64& random) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double cosAngle = 1.0 - unit(random) * (1.0 - std::cos(angle)), turn = 2.0 * std::numbers::pi * unit(random);
-  const glm::dvec3 east = glm::normalize(glm::cross(std::abs(centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0), centre));
+  const glm::dvec3 east =
+      glm::normalize(glm::cross(std::abs(centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0), centre));
   const glm::dvec3 north = glm::cross(centre, east);
   const double sinAngle = std::sqrt(std::max(0.0, 1.0 - cosAngle * cosAngle));
   return glm::normalize(centre * cosAngle + (east * std::cos(turn) + north * std::sin(turn)) * sinAngle);
@@ -66,7 +67,8 @@ TEST(PlanetBounds, NarrowWithTheCap) {
     const glm::dvec3 centre = directionOf(place.lon, place.lat);
     for (const double metres : {2.0, 200.0, 20e3}) {
       const HeightBounds bounds = heightsWithin(planet, centre, metres / kMarsRadius);
-      EXPECT_LT(bounds.greatest - bounds.least, 0.6 * metres + 0.25) << metres << " m at " << place.lon << ", " << place.lat;
+      EXPECT_LT(bounds.greatest - bounds.least, 0.6 * metres + 0.25)
+          << metres << " m at " << place.lon << ", " << place.lat;
       EXPECT_LE(bounds.least, planet.height(centre));
       EXPECT_GE(bounds.greatest, planet.height(centre));
     }

@@ -71,8 +71,8 @@ TEST(PlanetModel, ACoarserFootprintLeavesOutOnlyFineOctaves) {
     EXPECT_LE(std::abs(planet.height(normal, footprint) - planet.height(normal)), bound);
   }
   EXPECT_DOUBLE_EQ(octaveWeight(0, p.wavelength, 1e9), 1.0);
-  EXPECT_DOUBLE_EQ(octaveWeight(3, 8000.0, 250.0), 1.0);   // 1000 m wavelength, 4 footprints
-  EXPECT_DOUBLE_EQ(octaveWeight(3, 8000.0, 500.0), 0.0);   // 2 footprints: the Nyquist limit
+  EXPECT_DOUBLE_EQ(octaveWeight(3, 8000.0, 250.0), 1.0);  // 1000 m wavelength, 4 footprints
+  EXPECT_DOUBLE_EQ(octaveWeight(3, 8000.0, 500.0), 0.0);  // 2 footprints: the Nyquist limit
   EXPECT_DOUBLE_EQ(octaveWeight(3, 8000.0, 1000.0), 0.0);
 }
 

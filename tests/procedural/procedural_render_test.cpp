@@ -29,8 +29,9 @@ void PrintTo(const CameraCase& camera, std::ostream* out) { *out << camera.name;
 std::string planetPipeline(const CameraCase& c) {
   return "strata: 1\n"
          "body: {name: Mars, radius: 3396190}\n"
-         "camera: {lon: " + std::to_string(c.lon) + ", lat: " + std::to_string(c.lat) + ", altitude: " +
-         std::to_string(c.altitude) + ", heading: " + std::to_string(c.heading) + ", tilt: " + std::to_string(c.tilt) +
+         "camera: {lon: " +
+         std::to_string(c.lon) + ", lat: " + std::to_string(c.lat) + ", altitude: " + std::to_string(c.altitude) +
+         ", heading: " + std::to_string(c.heading) + ", tilt: " + std::to_string(c.tilt) +
          ", fov: 45}\n"
          "nodes:\n"
          "  planet: {type: source.procedural, kind: color}\n"
@@ -104,8 +105,8 @@ TEST_P(ProceduralRender, EveryJudgedPixelShowsTheModelsColour) {
       if (error > 2 && ++wrong <= 5)
         ADD_FAILURE() << "pixel " << x << "," << y << " at lon " << hit->lon << " lat " << hit->lat << " (height " << h
                       << " m, footprint " << footprint << " m) is (" << pixel[0] << "," << pixel[1] << "," << pixel[2]
-                      << "), the model says (" << int(expected[0]) << "," << int(expected[1]) << ","
-                      << int(expected[2]) << ")";
+                      << "), the model says (" << int(expected[0]) << "," << int(expected[1]) << "," << int(expected[2])
+                      << ")";
     }
   EXPECT_EQ(wrong, 0);
   EXPECT_GT(judged, 1500) << "too few pixels were judged for the test to mean anything";

@@ -125,7 +125,7 @@ TEST_P(TestData, ColoursAreRgbaWithAnAlphaBand) {
 
 // Reads one pixel's height and RGBA.
 std::pair<float, std::array<std::uint8_t, 4>> readPixel(GDALDataset& heights, GDALDataset& colours, int column,
-                                                         int row) {
+                                                        int row) {
   float height = 0.0f;
   std::array<std::uint8_t, 4> rgba{};
   EXPECT_EQ(heights.GetRasterBand(1)->RasterIO(GF_Read, column, row, 1, 1, &height, 1, 1, GDT_Float32, 0, 0, nullptr),
@@ -178,14 +178,14 @@ TEST_P(TestData, PixelsAreThePlanetAtProjsInverseOfTheirCentres) {
 
 INSTANTIATE_TEST_SUITE_P(
     Observations, TestData,
-    ::testing::Values(Expected{"global", "+proj=longlat +R=3396190", 2048, 1024, true},
-                      Expected{"north", "+proj=stere +lat_0=90 +lat_ts=90 +R=3396190", 1024, 1024},
-                      Expected{"south", "+proj=stere +lat_0=-90 +lat_ts=-71 +R=3396190", 1024, 1024},
-                      Expected{"healpix", "+proj=healpix +R=3396190", 2048, 1024},
-                      Expected{"strip", "+proj=longlat +R=3396190", 910, 1365},
-                      // 25 cm texels at Gale crater's place, of the planet summed down to metre octaves
-                      Expected{"gale", "+proj=longlat +R=3396190", 1024, 4096, true,
-                               {.octaves = 24, .contourInterval = 1.0}}),
+    ::testing::Values(
+        Expected{"global", "+proj=longlat +R=3396190", 2048, 1024, true},
+        Expected{"north", "+proj=stere +lat_0=90 +lat_ts=90 +R=3396190", 1024, 1024},
+        Expected{"south", "+proj=stere +lat_0=-90 +lat_ts=-71 +R=3396190", 1024, 1024},
+        Expected{"healpix", "+proj=healpix +R=3396190", 2048, 1024},
+        Expected{"strip", "+proj=longlat +R=3396190", 910, 1365},
+        // 25 cm texels at Gale crater's place, of the planet summed down to metre octaves
+        Expected{"gale", "+proj=longlat +R=3396190", 1024, 4096, true, {.octaves = 24, .contourInterval = 1.0}}),
     [](const auto& test) { return std::string(test.param.name); });
 
 // Every texel of `dataset` as `type`, `bands` interleaved.
@@ -220,8 +220,7 @@ TEST(PanchromaticStrip, IsTheStripColoursLuminanceAtFourFifths) {
   int wrong = 0, withData = 0;
   for (std::size_t i = 0; i < values.size(); ++i) {
     const std::uint8_t* c = &rgba[i * 4];
-    const double relative =
-        0.2126729 * srgbDecode(c[0]) + 0.7151522 * srgbDecode(c[1]) + 0.0721750 * srgbDecode(c[2]);
+    const double relative = 0.2126729 * srgbDecode(c[0]) + 0.7151522 * srgbDecode(c[1]) + 0.0721750 * srgbDecode(c[2]);
     const double expected = c[3] == 0 ? -1.0 : 0.8 * relative;
     wrong += std::abs(values[i] - expected) > 1e-6;
     withData += c[3] != 0;

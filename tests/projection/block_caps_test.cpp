@@ -80,13 +80,15 @@ void expectHeld(const Raster& raster, const std::vector<SphericalCap>& caps) {
         EXPECT_TRUE(values.gaps) << "a point of the cap lies off the raster";
         continue;
       }
-      const std::optional<glm::dvec2> lonlat = projection->inverse(
-          {raster.geotransform[0] + (column + 0.5) * raster.geotransform[1],
-           raster.geotransform[3] + (row + 0.5) * raster.geotransform[5]});
+      const std::optional<glm::dvec2> lonlat =
+          projection->inverse({raster.geotransform[0] + (column + 0.5) * raster.geotransform[1],
+                               raster.geotransform[3] + (row + 0.5) * raster.geotransform[5]});
       ASSERT_TRUE(lonlat);
       ++sampled;
-      EXPECT_GE(field(*lonlat), values.least) << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
-      EXPECT_LE(field(*lonlat), values.greatest) << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
+      EXPECT_GE(field(*lonlat), values.least)
+          << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
+      EXPECT_LE(field(*lonlat), values.greatest)
+          << "cap at " << cap.centre.x << ", " << cap.centre.y << ", " << cap.centre.z;
     }
   }
   EXPECT_GT(sampled, 100 * int(caps.size()));
@@ -107,7 +109,8 @@ TEST(BlockCaps, AGlobalMapHoldsEveryTexelACapSamplesAcrossItsSeamAndAtItsPoles) 
 }
 
 TEST(BlockCaps, APolarStereographicMapHoldsEveryTexelACapSamples) {
-  const Raster polar{"+proj=stere +lat_0=-90 +lat_ts=-71", {-3.0e6, 5000.0, 0.0, 3.0e6, 0.0, -5000.0}, 1200, 1200, false};
+  const Raster polar{
+      "+proj=stere +lat_0=-90 +lat_ts=-71", {-3.0e6, 5000.0, 0.0, 3.0e6, 0.0, -5000.0}, 1200, 1200, false};
   for (const glm::dvec2 place : {glm::dvec2(0.0, -90.0), glm::dvec2(137.4, -70.0), glm::dvec2(-45.0, -62.0)})
     expectHeld(polar, capsNear(place, {1e-4, 5e-3, 0.1}));
 }
@@ -155,8 +158,8 @@ TEST(BlockCaps, AHealpixStripsPageRangesHoldEveryTexelACapSamples) {
     for (int column = 0; column < 12 * kNside; ++column) {
       healpix::PageRanges::Range& page = finest[std::size_t(row / kPagePayload) * pagesAcross + column / kPagePayload];
       const std::optional<double> value = valueAt({column, row});
-      page = value ? healpix::PageRanges::Range{std::min(page.least, float(*value)), std::max(page.greatest, float(*value)),
-                                                page.uncovered}
+      page = value ? healpix::PageRanges::Range{std::min(page.least, float(*value)),
+                                                std::max(page.greatest, float(*value)), page.uncovered}
                    : healpix::PageRanges::Range{page.least, page.greatest, true};
     }
   const std::shared_ptr<const BlockCaps> caps = pageCapsOf(healpix::PageRanges(kNside, finest), {strip, t}, kNside);
@@ -170,7 +173,8 @@ TEST(BlockCaps, AHealpixStripsPageRangesHoldEveryTexelACapSamples) {
     for (int j = 0; j < 100; ++j) {
       const glm::dvec2 map = *strip->forward(lonlatOf(inside(cap, random)));
       const glm::ivec2 texel(glm::floor(glm::dvec2((map.x - t[0]) / t[1], (map.y - t[3]) / t[5])));
-      const std::optional<double> value = valueAt(glm::clamp(texel, glm::ivec2(0), glm::ivec2(12 * kNside - 1, kNside - 1)));
+      const std::optional<double> value =
+          valueAt(glm::clamp(texel, glm::ivec2(0), glm::ivec2(12 * kNside - 1, kNside - 1)));
       if (!value) {
         EXPECT_TRUE(values.gaps) << "a point of the cap lies on the face without data";
         continue;

@@ -123,7 +123,8 @@ std::vector<std::int64_t> pixels(std::int64_t nside, std::uint64_t seed) {
   for (std::int64_t face = 0; face < 12; ++face)
     result.insert(result.end(), {face * nside * nside, (face + 1) * nside * nside - 1});
   for (std::int64_t edge : {cap, total - cap, total / 2 - 2 * nside})
-    for (std::int64_t offset = -5; offset <= 5; ++offset) result.push_back(std::clamp(edge + offset, std::int64_t{0}, total - 1));
+    for (std::int64_t offset = -5; offset <= 5; ++offset)
+      result.push_back(std::clamp(edge + offset, std::int64_t{0}, total - 1));
   std::mt19937_64 random(seed);
   std::uniform_int_distribution<std::int64_t> any(0, total - 1);
   for (int i = 0; i < 5000; ++i) result.push_back(any(random));
@@ -168,7 +169,8 @@ TEST(HealpixGrid, PixelIndicesEqualChealpix) {
     }
     EXPECT_EQ(nestedMismatches, 0) << "nside " << nside;
     EXPECT_LE(misnumbered, 8) << "nside " << nside;
-    if (misnumbered > 0) std::cout << "nside " << nside << ": " << misnumbered << " places in chealpix's misnumbered corner\n";
+    if (misnumbered > 0)
+      std::cout << "nside " << nside << ": " << misnumbered << " places in chealpix's misnumbered corner\n";
     EXPECT_EQ(ringMismatches, 0) << "nside " << nside;
   }
 }
@@ -234,8 +236,7 @@ TEST(HealpixGrid, NestedRingConversionsEqualChealpix) {
 // positions and iy's in the odd ones.
 std::int64_t nestedNumber(std::int64_t nside, int face, std::int64_t ix, std::int64_t iy) {
   std::int64_t bits = 0;
-  for (int bit = 0; bit < 30; ++bit)
-    bits |= (((ix >> bit) & 1) << (2 * bit)) | (((iy >> bit) & 1) << (2 * bit + 1));
+  for (int bit = 0; bit < 30; ++bit) bits |= (((ix >> bit) & 1) << (2 * bit)) | (((iy >> bit) & 1) << (2 * bit + 1));
   return face * nside * nside + bits;
 }
 
@@ -259,7 +260,7 @@ TEST(HealpixGrid, FaceConventionMatchesChealpixNumbering) {
     EXPECT_GT(north.y, south.y) << "face " << face;
     EXPECT_NEAR(wrapped(east.x - middle.x), kPi / 4.0, kTolerance) << "face " << face;
     EXPECT_NEAR(wrapped(west.x - middle.x), -kPi / 4.0, kTolerance) << "face " << face;
-    const double centreLongitude = face < 4 ? kPi / 4.0 + face * kPi / 2.0
+    const double centreLongitude = face < 4   ? kPi / 4.0 + face * kPi / 2.0
                                    : face < 8 ? (face - 4) * kPi / 2.0
                                               : kPi / 4.0 + (face - 8) * kPi / 2.0;
     const double centreLatitude = face < 4 ? std::asin(2.0 / 3.0) : face < 8 ? 0.0 : -std::asin(2.0 / 3.0);
@@ -343,7 +344,8 @@ TEST(HealpixGrid, FaceOfPlaneEqualsProjInverse) {
     const double apex = -0.75 * kPi + k * kPi / 2.0;
     points.insert(points.end(), {{apex, kPi / 2.0}, {apex, -kPi / 2.0}, {apex, kPi / 2.0 - 1e-9}});
   }
-  for (int i = 0; i < 1000; ++i) points.insert(points.end(), {{across(random), kPi / 4.0}, {across(random), -kPi / 4.0}, {-kPi, up(random)}});
+  for (int i = 0; i < 1000; ++i)
+    points.insert(points.end(), {{across(random), kPi / 4.0}, {across(random), -kPi / 4.0}, {-kPi, up(random)}});
   double worst = 0.0, worstBeyondPoles = 0.0;
   for (const glm::dvec2& xy : points) {
     const auto reference = proj.inverse(xy);
@@ -351,7 +353,8 @@ TEST(HealpixGrid, FaceOfPlaneEqualsProjInverse) {
     if (reference.has_value() != ours.has_value()) {
       // Only on a triangle's edge may the two round to different sides.
       bool nearEdge = false;
-      for (glm::dvec2 step : {glm::dvec2(1e-9, 0.0), glm::dvec2(-1e-9, 0.0), glm::dvec2(0.0, 1e-9), glm::dvec2(0.0, -1e-9)})
+      for (glm::dvec2 step :
+           {glm::dvec2(1e-9, 0.0), glm::dvec2(-1e-9, 0.0), glm::dvec2(0.0, 1e-9), glm::dvec2(0.0, -1e-9)})
         nearEdge = nearEdge || faceOfPlane(xy + step).has_value() != ours.has_value();
       EXPECT_TRUE(nearEdge) << xy.x << ' ' << xy.y;
       continue;
@@ -363,9 +366,11 @@ TEST(HealpixGrid, FaceOfPlaneEqualsProjInverse) {
     EXPECT_LE(chord, allowed) << xy.x << ' ' << xy.y;
     EXPECT_LE(latitude, allowed) << xy.x << ' ' << xy.y;
     // Longitude as the distance it moves the place along its parallel.
-    EXPECT_LE(std::abs(wrapped(lonlat(*ours).x - reference->x)) * std::cos(reference->y), allowed) << xy.x << ' ' << xy.y;
+    EXPECT_LE(std::abs(wrapped(lonlat(*ours).x - reference->x)) * std::cos(reference->y), allowed)
+        << xy.x << ' ' << xy.y;
     worst = std::max({worst, chord, latitude});
-    if (projInverseRounding(reference->y) < kTolerance) worstBeyondPoles = std::max({worstBeyondPoles, chord, latitude});
+    if (projInverseRounding(reference->y) < kTolerance)
+      worstBeyondPoles = std::max({worstBeyondPoles, chord, latitude});
   }
   std::cout << "face of plane against PROJ inverse: worst " << worst << " (" << worstBeyondPoles
             << " where PROJ's polar rounding is below 1e-12)\n";

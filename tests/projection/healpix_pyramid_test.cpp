@@ -160,7 +160,8 @@ TEST(HealpixPageRanges, BoundANodesPageAndItsNeighbours) {
     std::vector<PageRanges::Range> finest;
     for (int row = 0; row < 2; ++row)
       for (int column = 0; column < 24; ++column) {
-        const float angle = float(std::acos(std::clamp(glm::dot(pageCentre({column, row}), pageCentre(page)), -1.0, 1.0)));
+        const float angle =
+            float(std::acos(std::clamp(glm::dot(pageCentre({column, row}), pageCentre(page)), -1.0, 1.0)));
         finest.push_back({angle, angle, false});
       }
     const PageRanges ranges(1024, finest);
@@ -168,7 +169,8 @@ TEST(HealpixPageRanges, BoundANodesPageAndItsNeighbours) {
       const std::int64_t last = (std::int64_t{1} << level) - 1;
       const PageRanges::Range range = ranges.overNode(face, level, last, last);
       const auto angleOf = [&](glm::ivec2 p) { return finest[std::size_t(p.y * 24 + p.x)].least; };
-      for (const glm::ivec2 neighbour : {page, page - glm::ivec2(1, 0), page + glm::ivec2(0, 1), page - glm::ivec2(1, -1)})
+      for (const glm::ivec2 neighbour :
+           {page, page - glm::ivec2(1, 0), page + glm::ivec2(0, 1), page - glm::ivec2(1, -1)})
         EXPECT_TRUE(holds(range, angleOf(neighbour))) << "face " << face;
       for (const glm::ivec2 beyond : {page + glm::ivec2(1, 0), page - glm::ivec2(0, 1), page + glm::ivec2(1, -1)})
         EXPECT_TRUE(holds(range, angleOf(texelAcross(2, face, beyond)))) << "face " << face;
@@ -193,9 +195,8 @@ TEST(HealpixPageRanges, SurviveTheFilesMetadata) {
     std::map<std::string, std::string> items;
     for (const auto& [name, value] : ranges.metadataItems()) items[name] = value;
     EXPECT_EQ(items.size(), nside == 1024 ? 2u : 7u) << "levels with at most kMostStoredPages pages";
-    const std::optional<PageRanges> read = PageRanges::fromMetadata(nside, [&](const std::string& name) {
-      return items.contains(name) ? items.at(name).c_str() : nullptr;
-    });
+    const std::optional<PageRanges> read = PageRanges::fromMetadata(
+        nside, [&](const std::string& name) { return items.contains(name) ? items.at(name).c_str() : nullptr; });
     ASSERT_TRUE(read);
     for (int level = 0; level < 10; ++level)
       for (const std::int64_t i : {std::int64_t{0}, (std::int64_t{1} << level) - 1}) {

@@ -16,8 +16,8 @@
 namespace strata {
 namespace {
 
-constexpr double kRadius = 6371000.0;      // m
-constexpr double kRasterMetres = 10.0;     // a 1024-texel raster of 1 cm texels, about
+constexpr double kRadius = 6371000.0;       // m
+constexpr double kRasterMetres = 10.0;      // a 1024-texel raster of 1 cm texels, about
 constexpr double kTolerance = 0.01 / 1024;  // uv: a hundredth of one of its texels
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
@@ -41,12 +41,12 @@ void expectAgreesWithin(const LocalTextureFrame& frame, const TextureMapping& ma
     glm::dvec2 offset(unit(random), unit(random));
     if (glm::length(offset) > 1.0) continue;
     offset *= frame.reach;
-    const glm::dvec2 lonlat = frame.coordinates == LocalCoordinates::LonLat
-                                  ? reference + offset
-                                  : lonlatOfTangentOffset(reference, offset);
+    const glm::dvec2 lonlat =
+        frame.coordinates == LocalCoordinates::LonLat ? reference + offset : lonlatOfTangentOffset(reference, offset);
     if (std::abs(lonlat.y) > 0.5 * std::numbers::pi) continue;
     const glm::dvec2 error = frame.at(offset) - *mapping(lonlat);
-    EXPECT_LE(std::max(std::abs(error.x), std::abs(error.y)), kTolerance) << "at offset " << offset.x << ", " << offset.y;
+    EXPECT_LE(std::max(std::abs(error.x), std::abs(error.y)), kTolerance)
+        << "at offset " << offset.x << ", " << offset.y;
   }
 }
 
@@ -82,7 +82,8 @@ TEST(LocalTextureFrame, AMappingUndefinedAtTheReferenceHasNoReach) {
   const TextureMapping mapping = [&](glm::dvec2 lonlat) -> std::optional<glm::dvec2> {
     return projection->forward(lonlat);
   };
-  EXPECT_EQ(localTextureFrame(mapping, {radians(180.0), 0.0}, glm::dvec2(kTolerance), false).reach, 0.0) << "the far side";
+  EXPECT_EQ(localTextureFrame(mapping, {radians(180.0), 0.0}, glm::dvec2(kTolerance), false).reach, 0.0)
+      << "the far side";
 }
 
 // The tangent plane's offsets, east then north, land where the unit sphere puts them: a step e east leaves

@@ -50,8 +50,7 @@ TEST(ProjParameters, RejectsWhatIsNotATerm) {
 }
 
 TEST(ProjParameters, RejectsValuesThatAreNotNumbers) {
-  const ProjParameters terms =
-      ProjParameters::parse("+lat_0=north +lon_0= +south +x_0=1000m +y_0=nan +k=inf +h=+-5");
+  const ProjParameters terms = ProjParameters::parse("+lat_0=north +lon_0= +south +x_0=1000m +y_0=nan +k=inf +h=+-5");
   for (const std::string key : {"lat_0", "lon_0", "south", "x_0", "y_0", "k", "h"}) {
     try {
       terms.real(key, 0.0);

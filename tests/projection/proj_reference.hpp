@@ -3,8 +3,8 @@
 #include <optional>
 #include <string>
 
-#include <glm/vec2.hpp>
 #include <proj.h>
+#include <glm/vec2.hpp>
 
 namespace strata::test {
 

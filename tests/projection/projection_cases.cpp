@@ -19,7 +19,8 @@ constexpr double kPi = std::numbers::pi;
 
 std::string figureTerms(const Ellipsoid& ellipsoid) {
   char text[96];
-  if (ellipsoid.inverseFlattening == 0.0) std::snprintf(text, sizeof text, " +R=%.17g", ellipsoid.semiMajorAxis);
+  if (ellipsoid.inverseFlattening == 0.0)
+    std::snprintf(text, sizeof text, " +R=%.17g", ellipsoid.semiMajorAxis);
   else
     std::snprintf(text, sizeof text, " +a=%.17g +rf=%.17g", ellipsoid.semiMajorAxis, ellipsoid.inverseFlattening);
   return text;
@@ -49,8 +50,7 @@ std::vector<ProjectionCase> projectionCases() {
       {"stere_mars_north_pole_scale", "+proj=stere +lat_0=90 +lat_ts=90", kMars, {0, 90}},
       {"stere_wgs84_south_71", "+proj=stere +lat_0=-90 +lat_ts=-71 +lon_0=0", kWgs84, {0, -90}},
       {"stere_wgs84_north_70", "+proj=stere +lat_0=90 +lat_ts=70 +lon_0=-45", kWgs84, {-45, 90}},
-      {"stere_moon_south_60", "+proj=stere +lat_0=-90 +lat_ts=-60 +lon_0=30 +x_0=100000 +y_0=200000", kMoon,
-       {30, -90}},
+      {"stere_moon_south_60", "+proj=stere +lat_0=-90 +lat_ts=-60 +lon_0=30 +x_0=100000 +y_0=200000", kMoon, {30, -90}},
       {"stere_wgs84_north_k0", "+proj=stere +lat_0=90 +k=0.994 +x_0=2000000 +y_0=2000000", kWgs84, {0, 90}},
       {"stere_mars_south_k0", "+proj=stere +lat_0=-90 +k_0=0.97 +lon_0=100", kMars, {100, -90}},
       {"stere_mars_north_equator_true", "+proj=stere +lat_0=90 +lat_ts=0", kMars, {0, 90}},
@@ -71,8 +71,10 @@ std::vector<ProjectionCase> projectionCases() {
       {"nsper_mars_north", "+proj=nsper +h=1000000 +lat_0=90", kMars, {0, 90}},
       {"nsper_moon_low", "+proj=nsper +h=3000 +lat_0=10 +lon_0=20", kMoon, {20, 10}},
       {"tpers_wgs84", "+proj=tpers +h=1000000 +lat_0=40 +lon_0=-100 +tilt=30 +azi=45", kWgs84, {-100, 40}},
-      {"tpers_mars_steep", "+proj=tpers +h=200000 +lat_0=-60 +lon_0=120 +tilt=60 +azi=-120 +x_0=500 +y_0=-700",
-       kMars, {120, -60}},
+      {"tpers_mars_steep",
+       "+proj=tpers +h=200000 +lat_0=-60 +lon_0=120 +tilt=60 +azi=-120 +x_0=500 +y_0=-700",
+       kMars,
+       {120, -60}},
       {"tpers_moon_polar", "+proj=tpers +h=5000000 +lat_0=90 +tilt=-20 +azi=10", kMoon, {0, 90}},
   };
 }
@@ -121,8 +123,8 @@ std::vector<glm::dvec2> mapSamples(const MapWindow& window, int count) {
   return samples;
 }
 
-std::vector<glm::dvec2> lonlatSamples(const ProjReference& proj, const MapWindow& window, int lonCount,
-                                      int latCount, int mapCount) {
+std::vector<glm::dvec2> lonlatSamples(const ProjReference& proj, const MapWindow& window, int lonCount, int latCount,
+                                      int mapCount) {
   std::vector<glm::dvec2> samples;
   const double capBoundary = std::asin(2.0 / 3.0);
   const double specialLatitudes[] = {0.5 * kPi - 1e-8, 0.5 * kPi - 1e-4, capBoundary - 1e-9, capBoundary,
@@ -160,10 +162,9 @@ bool nearRim(const Projection& projection, glm::dvec2 lonlat, double delta) {
 bool nearSeam(const Projection& projection, glm::dvec2 lonlat, double delta, double jump) {
   const auto here = projection.forward(lonlat);
   if (!here) return false;
-  for (glm::dvec2 step : {glm::dvec2(delta, 0.0), glm::dvec2(-delta, 0.0), glm::dvec2(0.0, delta),
-                          glm::dvec2(0.0, -delta)}) {
-    const auto there =
-        projection.forward({lonlat.x + step.x, std::clamp(lonlat.y + step.y, -0.5 * kPi, 0.5 * kPi)});
+  for (glm::dvec2 step :
+       {glm::dvec2(delta, 0.0), glm::dvec2(-delta, 0.0), glm::dvec2(0.0, delta), glm::dvec2(0.0, -delta)}) {
+    const auto there = projection.forward({lonlat.x + step.x, std::clamp(lonlat.y + step.y, -0.5 * kPi, 0.5 * kPi)});
     if (there && glm::length(*there - *here) > jump) return true;
   }
   return false;

@@ -23,10 +23,10 @@ inline const Ellipsoid kMoon{1737400.0, 0.0};
 inline const Ellipsoid kWgs84{6378137.0, 298.257223563};
 
 struct ProjectionCase {
-  std::string name;    // for test names: letters, digits and underscores
-  std::string terms;   // the CRS's PROJ terms, without the figure
+  std::string name;   // for test names: letters, digits and underscores
+  std::string terms;  // the CRS's PROJ terms, without the figure
   Ellipsoid ellipsoid;
-  glm::dvec2 centre;   // longitude and latitude (degrees) at the middle of the compared map window
+  glm::dvec2 centre;  // longitude and latitude (degrees) at the middle of the compared map window
 };
 
 std::vector<ProjectionCase> projectionCases();
@@ -57,8 +57,8 @@ std::vector<glm::dvec2> mapSamples(const MapWindow& window, int count);
 // Longitudes and latitudes (radians): a global grid of `lonCount` x `latCount` that includes the poles and
 // avoids the meridians of the HEALPix seams, latitudes just off the poles and off HEALPix's polar-cap
 // boundary, and PROJ's inverse of mapSamples(window, mapCount), dense where the projection is.
-std::vector<glm::dvec2> lonlatSamples(const ProjReference& proj, const MapWindow& window, int lonCount,
-                                      int latCount, int mapCount);
+std::vector<glm::dvec2> lonlatSamples(const ProjReference& proj, const MapWindow& window, int lonCount, int latCount,
+                                      int mapCount);
 
 // Whether forward() changes between defined and empty within `delta` radians of `lonlat`, in any direction:
 // the rim of the visible hemisphere, the horizon.

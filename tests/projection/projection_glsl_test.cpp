@@ -69,18 +69,22 @@ class GlslProjection {
     const ShaderLibrary library;
     const std::string fragment =
         "#version 450 core\n"
-        "#include \"" + projection.glslInclude() + "\"\n"
+        "#include \"" +
+        projection.glslInclude() +
+        "\"\n"
         "layout(binding = 0) uniform sampler2D lonlats;\n"
         "uniform vec4 projectionA;\n"
         "uniform vec4 projectionB;\n"
         "layout(location = 0) out vec4 result;\n"
         "void main() {\n"
         "  vec2 lonlat = texelFetch(lonlats, ivec2(gl_FragCoord.xy), 0).xy;\n"
-        "  result = vec4(" + projection.glslFunction() + "(lonlat, projectionA, projectionB), 0.0);\n"
+        "  result = vec4(" +
+        projection.glslFunction() +
+        "(lonlat, projectionA, projectionB), 0.0);\n"
         "}\n";
-    program_ = ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", library.expand("strata/fullscreen.vert")},
-                              {GL_FRAGMENT_SHADER, "projection_glsl_test.frag",
-                               library.expandText(fragment, "projection_glsl_test.frag")}});
+    program_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "strata/fullscreen.vert", library.expand("strata/fullscreen.vert")},
+         {GL_FRAGMENT_SHADER, "projection_glsl_test.frag", library.expandText(fragment, "projection_glsl_test.frag")}});
   }
 
   std::vector<glm::vec3> evaluate(std::vector<glm::vec2> lonlats) const {
@@ -146,9 +150,8 @@ TEST_P(GlslAgainstProj, MatchesProjAndIsUndefinedWhereForwardIs) {
     worstShare = std::max(worstShare, error / glslTolerance(*projection, lonlat, glsl));
     ++compared;
   }
-  std::cout << GetParam().name << " GLSL: worst " << worst << " map units = " << worst / window.texel()
-            << " texels of " << window.texel() << "; worst error / tolerance " << worstShare << " (" << compared
-            << " samples)\n";
+  std::cout << GetParam().name << " GLSL: worst " << worst << " map units = " << worst / window.texel() << " texels of "
+            << window.texel() << "; worst error / tolerance " << worstShare << " (" << compared << " samples)\n";
   RecordProperty("worst_texels", std::to_string(worst / window.texel()));
   EXPECT_LE(worstShare, 1.0);
   EXPECT_EQ(wrongZ, 0);
@@ -188,7 +191,8 @@ TEST(GlslHealpixStrip, MatchesTheStripProjection) {
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<glm::vec2> lonlats;
     for (int i = 0; i < 100000; ++i)
-      lonlats.push_back(floatLonlat({std::numbers::pi * (2.0 * unit(random) - 1.0), std::asin(2.0 * unit(random) - 1.0)}));
+      lonlats.push_back(
+          floatLonlat({std::numbers::pi * (2.0 * unit(random) - 1.0), std::asin(2.0 * unit(random) - 1.0)}));
     const std::vector<glm::vec3> results = GlslProjection(*projection).evaluate(lonlats);
     double worstShare = 0.0;
     int compared = 0;

@@ -116,16 +116,15 @@ class AgainstProj : public testing::TestWithParam<ProjectionCase> {
 
   void report(const std::string& what, double worst, int compared) {
     std::cout << GetParam().name << " " << what << ": worst " << worst << " map units = " << worst / window_.texel()
-              << " texels of " << window_.texel() << " (" << compared << " samples, tolerance " << tolerance()
-              << ")\n";
+              << " texels of " << window_.texel() << " (" << compared << " samples, tolerance " << tolerance() << ")\n";
     RecordProperty(what + "_worst_texels", std::to_string(worst / window_.texel()));
   }
 
   // Whether inverse() changes between defined and empty within `delta` of `xy`.
   bool nearInverseEdge(glm::dvec2 xy, double delta) const {
     const bool here = projection_->inverse(xy).has_value();
-    for (glm::dvec2 step : {glm::dvec2(delta, 0.0), glm::dvec2(-delta, 0.0), glm::dvec2(0.0, delta),
-                            glm::dvec2(0.0, -delta)})
+    for (glm::dvec2 step :
+         {glm::dvec2(delta, 0.0), glm::dvec2(-delta, 0.0), glm::dvec2(0.0, delta), glm::dvec2(0.0, -delta)})
       if (projection_->inverse(xy + step).has_value() != here) return true;
     return false;
   }
@@ -144,8 +143,8 @@ TEST_P(AgainstProj, ForwardMatchesProj) {
     const auto mine = projection_->forward(lonlat);
     const auto theirs = proj_->forward(lonlat);
     if (mine.has_value() != theirs.has_value()) {
-      const bool explained = nearRim(*projection_, lonlat, 1e-9) ||
-                             (theirs && (!window_.contains(*theirs) || behindCamera(lonlat)));
+      const bool explained =
+          nearRim(*projection_, lonlat, 1e-9) || (theirs && (!window_.contains(*theirs) || behindCamera(lonlat)));
       if (!explained) disagreements.add(mine ? "PROJ undefined" : "forward() empty", lonlat);
       continue;
     }
@@ -213,10 +212,9 @@ TEST_P(AgainstProj, RoundTrips) {
   };
   for (glm::dvec2 lonlat : lonlatSamples(*proj_, window_, 720, 361, 0)) {
     const auto xy = projection_->forward(lonlat);
-    const bool nearEdge = nearRim(*projection_, lonlat, 1e-9) ||
-                          nearSeam(*projection_, lonlat, 1e-9, 0.01 * window_.fullRangeX);
-    if (xy && window_.contains(*xy) && !nearEdge)
-      check(*xy, "forward then inverse");
+    const bool nearEdge =
+        nearRim(*projection_, lonlat, 1e-9) || nearSeam(*projection_, lonlat, 1e-9, 0.01 * window_.fullRangeX);
+    if (xy && window_.contains(*xy) && !nearEdge) check(*xy, "forward then inverse");
   }
   for (glm::dvec2 xy : mapSamples(window_, 400))
     if (projection_->inverse(xy)) check(xy, "inverse then forward");

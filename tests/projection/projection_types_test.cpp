@@ -34,9 +34,8 @@ TEST(ProjectionTypes, DeclareEachTypeAndProjNameOnce) {
 
 TEST(ProjectionTypes, DeclineVariantsTheyDoNotHandle) {
   for (const std::string terms :
-       {"+proj=stere +lat_0=45", "+proj=stere", "+proj=healpix +rot_xy=30", "+proj=ortho +k_0=2",
-        "+proj=eqc +units=km", "+proj=longlat +pm=paris", "+proj=nsper +h=1000 +axis=neu",
-        "+proj=stere +lat_0=90 +to_meter=0.3048"})
+       {"+proj=stere +lat_0=45", "+proj=stere", "+proj=healpix +rot_xy=30", "+proj=ortho +k_0=2", "+proj=eqc +units=km",
+        "+proj=longlat +pm=paris", "+proj=nsper +h=1000 +axis=neu", "+proj=stere +lat_0=90 +to_meter=0.3048"})
     EXPECT_EQ(makeProjection(terms, kWgs84), nullptr) << terms;
 }
 

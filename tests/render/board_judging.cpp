@@ -56,7 +56,8 @@ Judgement judgeBoard(const Image& image, const View& view, double radius, const 
       if (!cell) continue;
       ++judgement.judged;
       const int expected = (cell->x + cell->y) % 2 == 0 ? light : dark;
-      if (std::abs(image.at(x, y)[1] - expected) > 2) ++judgement.wrong;  // 2 levels: 8-bit rounding after float arithmetic
+      if (std::abs(image.at(x, y)[1] - expected) > 2)
+        ++judgement.wrong;  // 2 levels: 8-bit rounding after float arithmetic
     }
   return judgement;
 }

@@ -1,7 +1,7 @@
 // Issues 4 and 5: a 1 cm checkerboard laid on the ground (source.checker) renders crisp and steady from 2 m
-// above an Earth-sized body, drawn by each geometry generator. Every pixel whose 3x3 neighbourhood lies in one cell, by a ray cast in double
-// against the sphere, must show that cell's colour; the eye then moves by millimetres and the board must
-// stay where the rays say it is. A board drawn 2 mm out of place (1.4 pixels below the eye) fails.
+// above an Earth-sized body, drawn by each geometry generator. Every pixel whose 3x3 neighbourhood lies in one cell, by
+// a ray cast in double against the sphere, must show that cell's colour; the eye then moves by millimetres and the
+// board must stay where the rays say it is. A board drawn 2 mm out of place (1.4 pixels below the eye) fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,7 +18,7 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 480;
 constexpr double kAnchorLon = 10.0, kAnchorLat = 45.0, kCell = 0.01;  // deg, deg, m
-constexpr int kLight = 231, kDark = 48;  // sRGB of the board's linear 0.8 and 0.03
+constexpr int kLight = 231, kDark = 48;                               // sRGB of the board's linear 0.8 and 0.03
 
 struct Board {
   double radius;
@@ -71,13 +71,16 @@ TEST_P(CheckerBoard, StaysCrispAndStillFromTwoMetres) {
   auto engine = makeEngine();
   const auto& [geometry, tilt] = GetParam();
   for (const double eastMillimetres : {0.0, 1.0, 3.0, 7.0}) {
-    const double lon = kAnchorLon + glm::degrees(0.137 + eastMillimetres * 1e-3) /
-                                        (6371000.0 * std::cos(glm::radians(kAnchorLat)));
+    const double lon =
+        kAnchorLon + glm::degrees(0.137 + eastMillimetres * 1e-3) / (6371000.0 * std::cos(glm::radians(kAnchorLat)));
     const auto pipeline = directory.write(
         "board.yaml", "strata: 1\ncamera: {lon: " + degrees(lon) + ", lat: " + degrees(kAnchorLat + 2e-6) +
-                          ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) + ", fov: 20}\nnodes:\n"
+                          ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) +
+                          ", fov: 20}\nnodes:\n"
                           "  board: {type: source.checker, lon: 10, lat: 45, cell: 0.01}\n"
-                          "  globe: {type: " + geometry + "}\n"
+                          "  globe: {type: " +
+                          geometry +
+                          "}\n"
                           "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
     const Image image = renderFrame(*engine, pipeline, kWidth, kHeight);
     const View view = engine->view(kWidth, kHeight);
@@ -90,11 +93,13 @@ TEST_P(CheckerBoard, StaysCrispAndStillFromTwoMetres) {
 // With a 20 degree field of view a cell below the eye is 7 pixels across. Looking straight down, and
 // tilted 30 degrees, where cells at the top of the frame shrink to 4 pixels.
 INSTANTIATE_TEST_SUITE_P(GeneratorsAndTilts, CheckerBoard,
-                         ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm",
+                                                              "geometry.healpix"),
                                             ::testing::Values(0.0, 30.0)),
                          [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& param) {
                            const std::string& type = std::get<0>(param.param);
-                           return type.substr(type.find('.') + 1) + "_tilt" + std::to_string(int(std::get<1>(param.param)));
+                           return type.substr(type.find('.') + 1) + "_tilt" +
+                                  std::to_string(int(std::get<1>(param.param)));
                          });
 
 }  // namespace

@@ -58,11 +58,11 @@ namespace strata::test {
 namespace {
 
 constexpr int kSize = 240;
-constexpr int kTexels = 2048;      // the image's and the luminance layer's, a side
-constexpr int kReduction = 4;      // a colour layer texel spans 4 x 4 of them
+constexpr int kTexels = 2048;        // the image's and the luminance layer's, a side
+constexpr int kReduction = 4;        // a colour layer texel spans 4 x 4 of them
 constexpr double kHalfExtent = 1.2;  // deg
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr int kReach = 96;        // texels from the middle to the frame's edge, 16 km up: 95.4
+constexpr int kReach = 96;  // texels from the middle to the frame's edge, 16 km up: 95.4
 // Levels beyond the predicted error that rendering may add: see the header.
 constexpr double kMeanMargin = 0.5;
 constexpr double kLargestMargin = 1.0;
@@ -182,10 +182,9 @@ class ChromaFusion : public ::testing::Test {
     writeColourRaster(file("colour.tif"), kTexels / kReduction, kTexels / kReduction, kExtent,
                       [](int column, int row) { return colour_[std::size_t(row) * (kTexels / kReduction) + column]; });
     for (const double gain : {1.0, 0.7})
-      writeFloatRaster(file(gain == 1.0 ? "luminance.tif" : "dim.tif"), kTexels, kTexels, kExtent,
-                       [&](int column, int row) {
-                         return float(gain * relativeLuminance(decode(texel(column, row))));
-                       });
+      writeFloatRaster(
+          file(gain == 1.0 ? "luminance.tif" : "dim.tif"), kTexels, kTexels, kExtent,
+          [&](int column, int row) { return float(gain * relativeLuminance(decode(texel(column, row)))); });
     writeHalves();
   }
 
@@ -209,12 +208,14 @@ class ChromaFusion : public ::testing::Test {
 
   // The frame of `nodes` with `shown` as its one surface, straight down from 16 km over the image's middle.
   Image render(const std::string& nodes, const std::string& shown) {
-    const std::string text = "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-                             "camera: {lon: 0, lat: 0, altitude: 16000, fov: 45}\n"
-                             "nodes:\n" + nodes +
-                             "  globe: {type: geometry.icosahedral}\n"
-                             "  frame: {type: output.image, geometry: globe, surface: [" + shown +
-                             "], shading: none}\n";
+    const std::string text =
+        "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
+        "camera: {lon: 0, lat: 0, altitude: 16000, fov: 45}\n"
+        "nodes:\n" +
+        nodes +
+        "  globe: {type: geometry.icosahedral}\n"
+        "  frame: {type: output.image, geometry: globe, surface: [" +
+        shown + "], shading: none}\n";
     return renderFrame(*engine_, directory_->write("chroma_fusion.yaml", text), kSize, kSize);
   }
 
@@ -254,7 +255,6 @@ class ChromaFusion : public ::testing::Test {
 
 std::unique_ptr<TemporaryDirectory> ChromaFusion::directory_;
 std::vector<Rgb8> ChromaFusion::image_, ChromaFusion::colour_;
-
 
 TEST_F(ChromaFusion, ReproducesTheImageInEitherSpace) {
   const Image reference = image();
@@ -304,9 +304,9 @@ TEST_F(ChromaFusion, MatchingKeepsTheColourLayersBrightness) {
 
 // An 8-bit frame's grey of the relative luminance of its pixel's colour.
 double greyLevel(const std::array<int, 4>& pixel) {
-  return 255.0 * srgbEncode(relativeLuminance(decode(Rgb8{static_cast<unsigned char>(pixel[0]),
-                                                          static_cast<unsigned char>(pixel[1]),
-                                                          static_cast<unsigned char>(pixel[2])})));
+  return 255.0 * srgbEncode(relativeLuminance(
+                     decode(Rgb8{static_cast<unsigned char>(pixel[0]), static_cast<unsigned char>(pixel[1]),
+                                 static_cast<unsigned char>(pixel[2])})));
 }
 
 // Where the luminance layer has no data the colour layer shows alone; where the colour layer has none, the
@@ -351,9 +351,8 @@ TEST_F(ChromaFusion, RefusesWhatItCannotFuse) {
               source("heights", "luminance.tif", "height") + colour +
                   "  fused: {type: composite.chroma_fusion, luminance: heights, colour: colour}\n");
   EXPECT_NE(heights.find("input 'luminance' takes a luminance or color layer"), std::string::npos) << heights;
-  const std::string same =
-      refusal(*engine_, *directory_,
-              colour + "  fused: {type: composite.chroma_fusion, luminance: colour, colour: colour}\n");
+  const std::string same = refusal(
+      *engine_, *directory_, colour + "  fused: {type: composite.chroma_fusion, luminance: colour, colour: colour}\n");
   EXPECT_NE(same.find("the same node"), std::string::npos) << same;
   const std::string procedural =
       refusal(*engine_, *directory_,

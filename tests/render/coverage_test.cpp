@@ -41,11 +41,11 @@ constexpr int kWidth = 320, kHeight = 240;
 
 // Procedural relief within +-amplitude of the radius, of a wavelength that the view resolves.
 struct Scene {
-  const char* name;  // the test's
-  double altitude;    // m above the body's radius
-  double amplitude;   // m
-  double wavelength;  // m
-  double lat;         // deg: the point below the eye
+  const char* name;             // the test's
+  double altitude;              // m above the body's radius
+  double amplitude;             // m
+  double wavelength;            // m
+  double lat;                   // deg: the point below the eye
   std::array<double, 4> tilts;  // deg from straight down
 };
 
@@ -57,10 +57,12 @@ std::string pipelineFor(const Scene& scene, const std::string& type) {
   const std::string amplitude = std::to_string(scene.amplitude);
   return "strata: 1\nbody: {name: Earth, radius: " + std::to_string(kEarth) +
          "}\nnodes:\n"
-         "  relief: {type: source.procedural, kind: height, amplitude: " + amplitude +
-         ", wavelength: " + std::to_string(scene.wavelength) +
+         "  relief: {type: source.procedural, kind: height, amplitude: " +
+         amplitude + ", wavelength: " + std::to_string(scene.wavelength) +
          "}\n"
-         "  terrain: {type: " + terrainOf(type) + ", height: relief}\n"
+         "  terrain: {type: " +
+         terrainOf(type) +
+         ", height: relief}\n"
          "  frame: {type: output.image, geometry: terrain, shading: none}\n";
 }
 
@@ -105,13 +107,12 @@ TEST_P(Coverage, EveryPixelOfThePlanetIsDrawnAndNoOther) {
   engine->load(directory.write("coverage.yaml", pipelineFor(scene, type)));
   for (const double tilt : scene.tilts) {
     for (const int frames : {1, 3}) {
-      const Camera camera{.lon = 12.0, .lat = scene.lat, .altitude = scene.altitude, .heading = 30.0,
-                          .tilt = tilt, .fov = 50.0};
+      const Camera camera{
+          .lon = 12.0, .lat = scene.lat, .altitude = scene.altitude, .heading = 30.0, .tilt = tilt, .fov = 50.0};
       const Image image = renderFrames(*engine, camera, kWidth, kHeight, frames);
       const PixelCounts coverage = measure(image, makeView(engine->pipeline().body, camera, kWidth, kHeight), scene);
-      std::printf("%s %s, tilt %3.0f, frame %d: %d holes, %d strays, %d pixels of ground, %d of sky\n",
-                  type.c_str(), scene.name, tilt, frames, coverage.holes, coverage.strays, coverage.ground,
-                  coverage.sky);
+      std::printf("%s %s, tilt %3.0f, frame %d: %d holes, %d strays, %d pixels of ground, %d of sky\n", type.c_str(),
+                  scene.name, tilt, frames, coverage.holes, coverage.strays, coverage.ground, coverage.sky);
       EXPECT_EQ(coverage.holes, 0) << "tilt " << tilt << ", frame " << frames;
       EXPECT_EQ(coverage.strays, 0) << "tilt " << tilt << ", frame " << frames;
       EXPECT_GT(coverage.ground + coverage.sky, kWidth * kHeight / 2);  // most pixels are judged
@@ -119,24 +120,23 @@ TEST_P(Coverage, EveryPixelOfThePlanetIsDrawnAndNoOther) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Altitudes, Coverage,
-                         // From orbit the disc (14 degrees in radius) moves off-centre and, at 30 degrees,
-                         // across the bottom edge; from 100,000 km (a disc of 3.4 degrees) it leaves the
-                         // view. Near the ground the horizon and the sky come into view at 80 and 88
-                         // degrees, and at 180 the view looks at the sky alone. Over the north pole the
-                         // frame's reference latitude is 90 degrees.
-                         ::testing::Combine(
-                             ::testing::Values(
-                                 Scene{"FromOrbit", 2.0e7, 12000.0, 3.0e6, 47.0, {0.0, 12.0, 20.0, 30.0}},
-                                 Scene{"FromFarAway", 1.0e8, 12000.0, 3.0e6, 47.0, {0.0, 20.0, 25.0, 40.0}},
-                                 Scene{"FromOneKilometre", 1000.0, 300.0, 2.0e4, 47.0, {0.0, 50.0, 80.0, 88.0}},
-                                 Scene{"OverThePole", 1000.0, 300.0, 2.0e4, 90.0, {0.0, 50.0, 80.0, 88.0}},
-                                 Scene{"FromTwoMetres", 2.0, 1.0, 200.0, 47.0, {0.0, 50.0, 88.0, 180.0}}),
-                             ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
-                         [](const ::testing::TestParamInfo<std::tuple<Scene, std::string>>& test) {
-                           const std::string& type = std::get<1>(test.param);
-                           return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Altitudes, Coverage,
+    // From orbit the disc (14 degrees in radius) moves off-centre and, at 30 degrees,
+    // across the bottom edge; from 100,000 km (a disc of 3.4 degrees) it leaves the
+    // view. Near the ground the horizon and the sky come into view at 80 and 88
+    // degrees, and at 180 the view looks at the sky alone. Over the north pole the
+    // frame's reference latitude is 90 degrees.
+    ::testing::Combine(::testing::Values(Scene{"FromOrbit", 2.0e7, 12000.0, 3.0e6, 47.0, {0.0, 12.0, 20.0, 30.0}},
+                                         Scene{"FromFarAway", 1.0e8, 12000.0, 3.0e6, 47.0, {0.0, 20.0, 25.0, 40.0}},
+                                         Scene{"FromOneKilometre", 1000.0, 300.0, 2.0e4, 47.0, {0.0, 50.0, 80.0, 88.0}},
+                                         Scene{"OverThePole", 1000.0, 300.0, 2.0e4, 90.0, {0.0, 50.0, 80.0, 88.0}},
+                                         Scene{"FromTwoMetres", 2.0, 1.0, 200.0, 47.0, {0.0, 50.0, 88.0, 180.0}}),
+                       ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
+    [](const ::testing::TestParamInfo<std::tuple<Scene, std::string>>& test) {
+      const std::string& type = std::get<1>(test.param);
+      return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);
+    });
 
 }  // namespace
 }  // namespace strata::test

@@ -8,10 +8,10 @@ namespace {
 using Matrix = std::array<LinearColour, 3>;
 
 // IEC 61966-2-1: linear Rec. 709 to CIE XYZ, and its inverse; D65 as the matrix's row sums.
-constexpr Matrix kToXyz{{{0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750},
-                         {0.0193339, 0.1191920, 0.9503041}}};
-constexpr Matrix kFromXyz{{{3.2404542, -1.5371385, -0.4985314}, {-0.9692660, 1.8760108, 0.0415560},
-                           {0.0556434, -0.2040259, 1.0572252}}};
+constexpr Matrix kToXyz{
+    {{0.4124564, 0.3575761, 0.1804375}, {0.2126729, 0.7151522, 0.0721750}, {0.0193339, 0.1191920, 0.9503041}}};
+constexpr Matrix kFromXyz{
+    {{3.2404542, -1.5371385, -0.4985314}, {-0.9692660, 1.8760108, 0.0415560}, {0.0556434, -0.2040259, 1.0572252}}};
 constexpr LinearColour kWhite{0.9504700, 1.0, 1.0888300};
 
 LinearColour times(const Matrix& m, const LinearColour& v) {

@@ -1,9 +1,9 @@
 // The same pipeline drawn by geometry.pgm or geometry.healpix and by geometry.icosahedral agrees where both
 // sample the surface well (issues 5 and 6): procedural.yaml's Mars-sized planet, its relief exaggerated 20
-// times, lit, seen whole from orbit, tilted from 300 km and from 5 km. The colour layer's contour lines (every 1000 m of the
-// exaggerated height, sharp, one or two pixels wide) are computed per pixel where the mesh puts the
-// ground, so a shift of the ground shows at their edges: the comparison measures where the two meshes
-// put the surface as well as how they light it.
+// times, lit, seen whole from orbit, tilted from 300 km and from 5 km. The colour layer's contour lines (every 1000 m
+// of the exaggerated height, sharp, one or two pixels wide) are computed per pixel where the mesh puts the ground, so a
+// shift of the ground shows at their edges: the comparison measures where the two meshes put the surface as well as how
+// they light it.
 //
 // Left out: pixels within two pixels of either image's silhouette, where the two meshes' edges (chords of
 // different spacing over different grids) may fall either side of a pixel's centre. Measured on llvmpipe,
@@ -45,7 +45,8 @@ std::string pipelineWith(const std::string& geometry) {
   return "strata: 1\nbody: {name: Mars, radius: 3396190}\nnodes:\n"
          "  colours: {type: source.procedural, kind: color, scale: 20}\n"
          "  relief: {type: source.procedural, kind: height, scale: 20}\n"
-         "  terrain: {type: " + geometry +
+         "  terrain: {type: " +
+         geometry +
          ", height: relief, lowest: -240000, highest: 240000}\n"
          "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
 }
@@ -63,8 +64,8 @@ bool awayFromSilhouettes(const Image& a, const Image& b, int x, int y) {
 struct Agreement {
   int compared = 0;
   int darkest = 255, brightest = 0;  // of the tested image's compared pixels: the shading's range
-  double meanDifference = 0.0;  // levels
-  double largeShare = 0.0;      // of the compared pixels
+  double meanDifference = 0.0;       // levels
+  double largeShare = 0.0;           // of the compared pixels
 };
 
 Agreement compare(const Image& a, const Image& b) {
@@ -104,10 +105,11 @@ TEST_P(GeneratorAgreement, DrawsTheSamePlanetAsTheIcosahedralGenerator) {
     const Image icosahedral = renderFrames(*engine, camera, kWidth, kHeight, 3);
     const Agreement agreement = compare(tested, icosahedral);
 
-    std::printf("%s, %8.0f m up, tilt %2.0f: %d pixels compared, shades %d to %d, mean difference %.2f levels, %.2f%% "
-                "differ by more than %d\n",
-                GetParam().c_str(), camera.altitude, camera.tilt, agreement.compared, agreement.darkest, agreement.brightest,
-                agreement.meanDifference, 100.0 * agreement.largeShare, kLargeDifference);
+    std::printf(
+        "%s, %8.0f m up, tilt %2.0f: %d pixels compared, shades %d to %d, mean difference %.2f levels, %.2f%% "
+        "differ by more than %d\n",
+        GetParam().c_str(), camera.altitude, camera.tilt, agreement.compared, agreement.darkest, agreement.brightest,
+        agreement.meanDifference, 100.0 * agreement.largeShare, kLargeDifference);
     EXPECT_GT(agreement.compared, kWidth * kHeight / 10);
     EXPECT_LT(agreement.meanDifference, kMeanTolerance);
     EXPECT_LT(agreement.largeShare, kLargeTolerance);

@@ -38,14 +38,15 @@ namespace {
 
 constexpr int kWidth = 320, kHeight = 240;
 constexpr int kNside = 512;
-constexpr double kMeanTolerance = 1.0;    // levels
-constexpr int kLargeDifference = 16;      // levels
+constexpr double kMeanTolerance = 1.0;     // levels
+constexpr int kLargeDifference = 16;       // levels
 constexpr double kLargeTolerance = 0.015;  // of the pixels compared
 constexpr int kOutlineTolerance = 10;      // pixels
 
 // Metres, at longitude and latitude in radians.
 double field(double lon, double lat) {
-  return 4000.0 * std::sin(3.0 * lon + 1.0) * std::cos(2.0 * lat) + 1500.0 * std::sin(7.0 * lon) * std::sin(5.0 * lat + 0.3);
+  return 4000.0 * std::sin(3.0 * lon + 1.0) * std::cos(2.0 * lat) +
+         1500.0 * std::sin(7.0 * lon) * std::sin(5.0 * lat + 0.3);
 }
 
 // The pyramid `strata tile --to healpix` makes of the raster, with its pages' true ranges.
@@ -58,15 +59,22 @@ void writeLongitudeLatitude(const std::filesystem::path& file) {
   constexpr int width = 4096, height = 2048;
   writeFloatRaster(file, width, height, {-180.0, -90.0, 180.0, 90.0}, [](int column, int row) {
     const double degree = std::numbers::pi / 180.0;
-    return float(field((-180.0 + (column + 0.5) * 360.0 / width) * degree, (90.0 - (row + 0.5) * 180.0 / height) * degree));
+    return float(
+        field((-180.0 + (column + 0.5) * 360.0 / width) * degree, (90.0 - (row + 0.5) * 180.0 / height) * degree));
   });
 }
 
 std::string pipeline(const std::string& geometry, const std::filesystem::path& heights) {
   return "strata: 1\nbody: {name: Mars, radius: 3396190}\nnodes:\n"
-         "  colours: {type: source.gdal, path: " + (heights.parent_path() / "checkerboard.tif").string() + "}\n"
-         "  relief: {type: source.gdal, kind: height, path: " + heights.string() + ", scale: 20}\n"
-         "  terrain: {type: " + geometry + ", height: relief, lowest: -120000, highest: 120000}\n"
+         "  colours: {type: source.gdal, path: " +
+         (heights.parent_path() / "checkerboard.tif").string() +
+         "}\n"
+         "  relief: {type: source.gdal, kind: height, path: " +
+         heights.string() +
+         ", scale: 20}\n"
+         "  terrain: {type: " +
+         geometry +
+         ", height: relief, lowest: -120000, highest: 120000}\n"
          "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
 }
 
@@ -117,10 +125,11 @@ TEST_P(HealpixPyramidHeights, GiveThePlanetTheLongitudeLatitudeRasterGives) {
   writeCheckerboard(directory.path() / "checkerboard.tif");
   auto engine = makeEngine();
   const double corner = std::asin(2.0 / 3.0) * 180.0 / std::numbers::pi;
-  for (const Camera& camera : {Camera{.lon = 30, .lat = 25, .altitude = 8.0e6, .tilt = 0, .fov = 45},
-                               Camera{.lon = 0, .lat = corner, .altitude = 3.0e5, .heading = 40, .tilt = 50, .fov = 45},
-                               Camera{.lon = 20, .lat = 90, .altitude = 3.0e5, .heading = 0, .tilt = 30, .fov = 45},
-                               Camera{.lon = 0, .lat = corner, .altitude = 2.0e4, .heading = 130, .tilt = 60, .fov = 45}}) {
+  for (const Camera& camera :
+       {Camera{.lon = 30, .lat = 25, .altitude = 8.0e6, .tilt = 0, .fov = 45},
+        Camera{.lon = 0, .lat = corner, .altitude = 3.0e5, .heading = 40, .tilt = 50, .fov = 45},
+        Camera{.lon = 20, .lat = 90, .altitude = 3.0e5, .heading = 0, .tilt = 30, .fov = 45},
+        Camera{.lon = 0, .lat = corner, .altitude = 2.0e4, .heading = 130, .tilt = 60, .fov = 45}}) {
     engine->load(directory.write("pyramid.yaml", pipeline(GetParam(), directory.path() / "pyramid.tif")));
     // pgm's third frame has its primary sphere from the least visible height; the others need one frame.
     const int frames = GetParam() == "geometry.pgm" ? 3 : 1;
@@ -130,11 +139,12 @@ TEST_P(HealpixPyramidHeights, GiveThePlanetTheLongitudeLatitudeRasterGives) {
     const Image raster = renderFrames(*engine, camera, kWidth, kHeight, frames);
     const int rasterNodes = engine->geometryStatistics().patches;
     const Comparison comparison = compare(pyramid, raster);
-    std::printf("%s at %.0f, %.1f, %8.0f m up: %d pixels compared, mean difference %.2f levels, %.2f%% differ by "
-                "more than %d, %d emptied, outline moved at %d; %d nodes or patches, %d from the raster\n",
-                GetParam().c_str(), camera.lon, camera.lat, camera.altitude, comparison.compared,
-                comparison.meanDifference, 100.0 * comparison.largeShare, kLargeDifference, comparison.emptied,
-                comparison.outlineMoved, pyramidNodes, rasterNodes);
+    std::printf(
+        "%s at %.0f, %.1f, %8.0f m up: %d pixels compared, mean difference %.2f levels, %.2f%% differ by "
+        "more than %d, %d emptied, outline moved at %d; %d nodes or patches, %d from the raster\n",
+        GetParam().c_str(), camera.lon, camera.lat, camera.altitude, comparison.compared, comparison.meanDifference,
+        100.0 * comparison.largeShare, kLargeDifference, comparison.emptied, comparison.outlineMoved, pyramidNodes,
+        rasterNodes);
     EXPECT_GT(comparison.compared, kWidth * kHeight / 10);
     EXPECT_LT(comparison.meanDifference, kMeanTolerance);
     EXPECT_LT(comparison.largeShare, kLargeTolerance);

@@ -42,13 +42,13 @@ namespace strata::test {
 namespace {
 
 constexpr int kSize = 192;
-constexpr double kMars = 3389500.0;              // m
-constexpr double kLon = 137.4, kLat = -4.6;      // deg: the strip's centre, Gale crater's place
-constexpr double kTexel = 0.25;                  // m
-constexpr int kColumns = 2048, kRows = 512;      // east, north
-constexpr double kAmplitude = 2.0;               // m: the sines' amplitudes sum to this
-constexpr double kMargin = 2.0;                  // m inside the strip's edges
-constexpr double kTolerance = 0.01;              // m along the ray
+constexpr double kMars = 3389500.0;          // m
+constexpr double kLon = 137.4, kLat = -4.6;  // deg: the strip's centre, Gale crater's place
+constexpr double kTexel = 0.25;              // m
+constexpr int kColumns = 2048, kRows = 512;  // east, north
+constexpr double kAmplitude = 2.0;           // m: the sines' amplitudes sum to this
+constexpr double kMargin = 2.0;              // m inside the strip's edges
+constexpr double kTolerance = 0.01;          // m along the ray
 constexpr float kNoData = -32768.0f;
 // Texels of no data around the strip in the large raster: 5,120 x 3,584, 18 million texels.
 constexpr int kAroundLargeStrip = 1536;
@@ -112,8 +112,8 @@ std::string writeTiledStrip(const TemporaryDirectory& directory, const PluginReg
 
 struct Errors {
   int judged = 0;
-  int holes = 0;      // the ray meets the strip, and nothing was drawn
-  double worst = 0.0; // m along the ray
+  int holes = 0;       // the ray meets the strip, and nothing was drawn
+  double worst = 0.0;  // m along the ray
 };
 
 Errors measure(const View& view, const std::vector<float>& depth, double plateau) {
@@ -149,14 +149,19 @@ TEST_P(HeightPrecision, QuarterMetreDemLiesWithinOneCentimetreFromTenMetres) {
   TemporaryDirectory directory;
   auto engine = makeEngine();
   const std::string strip = large ? writeTiledStrip(directory, engine->plugins()) : writeStrip(directory, 0);
-  const auto pipeline = directory.write(
-      "strip.yaml", "strata: 1\nbody: {name: Mars, radius: 3389500}\n"
-                    "camera: {lon: 137.40002, lat: -4.60001, altitude: " + std::to_string(plateau + 10.0) +
-                        ", heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
-                        "  strip: {type: source.gdal, path: " + strip + ", kind: height, offset: " +
-                        std::to_string(plateau) + "}\n"
-                        "  terrain: {type: " + geometry + ", height: strip}\n"
-                        "  frame: {type: output.image, geometry: terrain, shading: none}\n");
+  const auto pipeline =
+      directory.write("strip.yaml",
+                      "strata: 1\nbody: {name: Mars, radius: 3389500}\n"
+                      "camera: {lon: 137.40002, lat: -4.60001, altitude: " +
+                          std::to_string(plateau + 10.0) + ", heading: 30, tilt: " + std::to_string(tilt) +
+                          ", fov: 40}\nnodes:\n"
+                          "  strip: {type: source.gdal, path: " +
+                          strip + ", kind: height, offset: " + std::to_string(plateau) +
+                          "}\n"
+                          "  terrain: {type: " +
+                          geometry +
+                          ", height: strip}\n"
+                          "  frame: {type: output.image, geometry: terrain, shading: none}\n");
   engine->load(pipeline);
   const FrameOutput& output = engine->renderComplete(kSize, kSize);
   ASSERT_NE(output.surface(), nullptr);
@@ -181,10 +186,11 @@ INSTANTIATE_TEST_SUITE_P(GeneratorsAndTilts, HeightPrecision,
                                                               "geometry.healpix"),
                                             ::testing::Values(Setting(0.0, 0.0, false), Setting(45.0, 0.0, false))),
                          nameOf);
-INSTANTIATE_TEST_SUITE_P(GeneratorsOverAPlateau, HeightPrecision,
-                         ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
-                                            ::testing::Values(Setting(0.0, 3000.0, false), Setting(45.0, 3000.0, false))),
-                         nameOf);
+INSTANTIATE_TEST_SUITE_P(
+    GeneratorsOverAPlateau, HeightPrecision,
+    ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                       ::testing::Values(Setting(0.0, 3000.0, false), Setting(45.0, 3000.0, false))),
+    nameOf);
 // Heights region by region from the ranges `strata tile` stored: without them the icosahedral tree measured
 // the plateau's patches on the sphere, 3 km below, and the surface stood 82 cm off.
 INSTANTIATE_TEST_SUITE_P(GeneratorsOverAPlateauTiled, HeightPrecision,

@@ -56,7 +56,8 @@ TEST_P(HeightRange, AGdalRasterIsCountedWhenSmall) {
                    [](int column, int) { return float(column * 500); });  // up to 31500 m
   const std::string tall = "{type: source.gdal, kind: height, path: " + (directory.path() / "tall.tif").string() + "}";
   EXPECT_EQ(loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights}")), "");
-  const std::string error = loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights, highest: 30000}"));
+  const std::string error =
+      loadError(pipelineWith(tall, "{type: " + GetParam() + ", height: heights, highest: 30000}"));
   EXPECT_NE(error.find("reaches from 0 to 31500 m"), std::string::npos) << error;
 }
 
@@ -65,25 +66,31 @@ TEST_P(HeightRange, AGdalRasterIsCountedWhenSmall) {
 TEST_P(HeightRange, ALayerThatDoesNotKnowItsHeightsNeedsBoth) {
   TemporaryDirectory directory;
   const auto file = directory.path() / "large.tif";
-  writeRasterFile(file, {.crs = "EPSG:4326", .geotransform = {-180, 360.0 / 8192, 0, 90, 0, -180.0 / 4096},
-                         .width = 8192, .height = 4096, .nodata = -32768.0,
-                         .creationOptions = {"SPARSE_OK=TRUE", "TILED=YES"}, .values = false});
+  writeRasterFile(file, {.crs = "EPSG:4326",
+                         .geotransform = {-180, 360.0 / 8192, 0, 90, 0, -180.0 / 4096},
+                         .width = 8192,
+                         .height = 4096,
+                         .nodata = -32768.0,
+                         .creationOptions = {"SPARSE_OK=TRUE", "TILED=YES"},
+                         .values = false});
   const std::string large = "{type: source.gdal, kind: height, path: " + file.string() + "}";
   const std::string error = loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100}"));
   EXPECT_NE(error.find("does not know the least and greatest heights"), std::string::npos) << error;
   EXPECT_NE(error.find("gdalinfo -stats"), std::string::npos) << error;
   EXPECT_NE(error.find("strata tile"), std::string::npos) << error;
   EXPECT_NE(error.find("'globe'"), std::string::npos) << error;
-  EXPECT_EQ(loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100, highest: 9000}")), "");
+  EXPECT_EQ(loadError(pipelineWith(large, "{type: " + GetParam() + ", height: heights, lowest: -100, highest: 9000}")),
+            "");
 }
 
 TEST_P(HeightRange, LowestAboveHighestIsRefused) {
-  const std::string error = loadError(pipelineWith("{type: source.procedural, kind: height}",
-                                                   "{type: " + GetParam() + ", height: heights, lowest: 5, highest: 1}"));
+  const std::string error = loadError(pipelineWith(
+      "{type: source.procedural, kind: height}", "{type: " + GetParam() + ", height: heights, lowest: 5, highest: 1}"));
   EXPECT_NE(error.find("lowest (5 m) lies above highest (1 m)"), std::string::npos) << error;
 }
 
-INSTANTIATE_TEST_SUITE_P(Generators, HeightRange, ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+INSTANTIATE_TEST_SUITE_P(Generators, HeightRange,
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

@@ -36,10 +36,11 @@ HostBindings currentBindings() {
 TEST(HostGlState, RenderLeavesTheHostsFramebuffersViewportAndClipControl) {
   TemporaryDirectory directory;
   std::unique_ptr<Engine> engine = makeEngine();
-  engine->load(directory.write("sphere.yaml", "strata: 1\nnodes:\n"
-                                              "  colours: {type: source.procedural, kind: color}\n"
-                                              "  globe: {type: geometry.icosahedral}\n"
-                                              "  frame: {type: output.image, geometry: globe, surface: [colours]}\n"));
+  engine->load(directory.write("sphere.yaml",
+                               "strata: 1\nnodes:\n"
+                               "  colours: {type: source.procedural, kind: color}\n"
+                               "  globe: {type: geometry.icosahedral}\n"
+                               "  frame: {type: output.image, geometry: globe, surface: [colours]}\n"));
   const Framebuffer drawTarget(64, 48, {GL_RGBA8}), readTarget(32, 32, {GL_RGBA8});
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawTarget.id());
   glBindFramebuffer(GL_READ_FRAMEBUFFER, readTarget.id());

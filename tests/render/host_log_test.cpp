@@ -42,7 +42,9 @@ std::string globePipeline(const std::filesystem::path& imagery) {
          "body: {name: Earth, radius: 6371000}\n"
          "camera: {lon: 137.4, lat: -4.6, altitude: 2.0e7, fov: 45}\n"
          "nodes:\n"
-         "  imagery: {type: source.gdal, path: '" + imagery.string() + "', kind: color}\n"
+         "  imagery: {type: source.gdal, path: '" +
+         imagery.string() +
+         "', kind: color}\n"
          "  terrain: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: terrain, surface: [imagery]}\n";
 }

@@ -69,10 +69,14 @@ Rgb16 encodedCell(int column, int row, const std::string& space) {
 std::string globePipeline(const std::filesystem::path& raster, const std::string& space) {
   return "strata: 1\n"
          "body: {name: Earth, radius: 6371000}\n"
-         "camera: {lon: " + std::to_string(kGlobeCamera.lon) + ", lat: " + std::to_string(kGlobeCamera.lat) +
-         ", altitude: " + std::to_string(kGlobeCamera.altitude) + ", fov: " + std::to_string(kGlobeCamera.fov) + "}\n"
+         "camera: {lon: " +
+         std::to_string(kGlobeCamera.lon) + ", lat: " + std::to_string(kGlobeCamera.lat) +
+         ", altitude: " + std::to_string(kGlobeCamera.altitude) + ", fov: " + std::to_string(kGlobeCamera.fov) +
+         "}\n"
          "nodes:\n"
-         "  cells: {type: source.gdal, path: " + raster.string() + ", kind: color, colorspace: " + space + "}\n"
+         "  cells: {type: source.gdal, path: " +
+         raster.string() + ", kind: color, colorspace: " + space +
+         "}\n"
          "  globe: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n";
 }
@@ -109,8 +113,8 @@ int largestCellDifference(const Image& image) {
       const auto hit = raycastSphere(view, kRadius, x, y);
       if (!hit || hit->incidence < 0.3 || std::abs(hit->lat) > 80.0) continue;
       if (distanceToCellEdge(hit->lon) < 2.0 || distanceToCellEdge(hit->lat) < 2.0) continue;
-      const Rgb8 cell = cellColour(int(std::floor((hit->lon + 180.0) / 45.0)) % 8,
-                                   int(std::floor((90.0 - hit->lat) / 45.0)));
+      const Rgb8 cell =
+          cellColour(int(std::floor((hit->lon + 180.0) / 45.0)) % 8, int(std::floor((90.0 - hit->lat) / 45.0)));
       for (int c = 0; c < 3; ++c) largest = std::max(largest, std::abs(image.at(x, y)[c] - int(cell[std::size_t(c)])));
       ++judged;
     }
@@ -169,8 +173,9 @@ double mixedLevel(double weight, int c) {
 
 Image renderStripes(TemporaryDirectory& directory, const Camera& camera) {
   const auto raster = directory.path() / "stripes.tif";
-  writeColourRaster(raster, kStripes, 16, {-kStripeHalfWidth, -0.4, kStripeHalfWidth, 0.4},
-                    [](int x, int) { return x % 2 ? kLight : Rgb8{0, 0, 0}; });
+  writeColourRaster(raster, kStripes, 16, {-kStripeHalfWidth, -0.4, kStripeHalfWidth, 0.4}, [](int x, int) {
+    return x % 2 ? kLight : Rgb8{0, 0, 0};
+  });
   const std::string pipeline =
       "strata: 1\nbody: {name: Earth, radius: 6371000}\ncamera: {lon: " + std::to_string(camera.lon) +
       ", lat: " + std::to_string(camera.lat) + ", altitude: " + std::to_string(camera.altitude) +
@@ -249,12 +254,13 @@ TEST(LayerColourSpace, AnUnknownColourSpaceIsRefusedAtItsLineListingThoseThereAr
 }
 
 TEST(LayerColourSpace, TheSpacesAreThePipelinesConfigs) {
-  const std::string config = "ocio_profile_version: 2\n"
-                             "roles: {default: linear, scene_linear: linear, data: raw}\n"
-                             "displays: {sRGB: [!<View> {name: Raw, colorspace: raw}]}\n"
-                             "colorspaces:\n"
-                             "  - !<ColorSpace> {name: linear}\n"
-                             "  - !<ColorSpace> {name: raw, isdata: true}\n";
+  const std::string config =
+      "ocio_profile_version: 2\n"
+      "roles: {default: linear, scene_linear: linear, data: raw}\n"
+      "displays: {sRGB: [!<View> {name: Raw, colorspace: raw}]}\n"
+      "colorspaces:\n"
+      "  - !<ColorSpace> {name: linear}\n"
+      "  - !<ColorSpace> {name: raw, isdata: true}\n";
   const Error error = loadError(cellsPipeline("", "colour: {config: mine.ocio}\n"), "mine.ocio", config);
   EXPECT_EQ(error.where().line, 4) << "the node, whose `colorspace` is the default";
   EXPECT_NE(error.problem().find("the colour space 'srgb' is not in /"), std::string::npos) << error.problem();

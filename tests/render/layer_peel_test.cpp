@@ -71,7 +71,7 @@ struct Cut {
   double edge = 0.0;
   Colour floorColour = kBlue;
   std::string camera = "{lon: 0, lat: -3.3, altitude: 3.0e5, heading: 0, tilt: 40, fov: 45}";
-  int band = kBand;  // px not judged about where what is expected changes
+  int band = kBand;   // px not judged about where what is expected changes
   std::string frame;  // output.image's further inputs and parameters
 
   double heightAt(double lon, double lat) const {
@@ -126,22 +126,47 @@ class LayerPeel : public ::testing::TestWithParam<std::string> {
   std::string pipeline(const Cut& cut) const {
     const std::string globe = "{type: " + GetParam() + ", lowest: 0, highest: 40000, height: ";
     return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-           "camera: " + cut.camera + "\n"
+           "camera: " +
+           cut.camera +
+           "\n"
            "nodes:\n"
-           "  upper: {type: source.gdal, path: " + file("upper.tif").string() + ", kind: height}\n"
-           "  floor: {type: source.gdal, path: " + file("floor.tif").string() + ", kind: height}\n"
-           "  red: {type: source.gdal, path: " + file("red.tif").string() + "}\n"
-           "  blue: {type: source.gdal, path: " + file("blue.tif").string() + "}\n"
-           "  middle: {type: source.gdal, path: " + file("middle.tif").string() + ", kind: height}\n"
-           "  white: {type: source.gdal, path: " + file("white.tif").string() + "}\n"
-           "  green: {type: source.gdal, path: " + file("green.tif").string() + "}\n"
-           "  stack: {type: composite.layer_peel, layers: [upper, floor]" + cut.parameters + "}\n"
+           "  upper: {type: source.gdal, path: " +
+           file("upper.tif").string() +
+           ", kind: height}\n"
+           "  floor: {type: source.gdal, path: " +
+           file("floor.tif").string() +
+           ", kind: height}\n"
+           "  red: {type: source.gdal, path: " +
+           file("red.tif").string() +
+           "}\n"
+           "  blue: {type: source.gdal, path: " +
+           file("blue.tif").string() +
+           "}\n"
+           "  middle: {type: source.gdal, path: " +
+           file("middle.tif").string() +
+           ", kind: height}\n"
+           "  white: {type: source.gdal, path: " +
+           file("white.tif").string() +
+           "}\n"
+           "  green: {type: source.gdal, path: " +
+           file("green.tif").string() +
+           "}\n"
+           "  stack: {type: composite.layer_peel, layers: [upper, floor]" +
+           cut.parameters +
+           "}\n"
            "  coloured: {type: composite.peeled_surface, peel: stack, surfaces: [red, blue],\n"
            "             faces: [0, 0.8, 0, 0.9, 0.9, 0]}\n"
-           "  globe: " + globe + "stack}\n"
-           "  upper-globe: " + globe + "upper}\n"
-           "  middle-globe: " + globe + "middle}\n"
-           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none" + cut.frame + "}\n";
+           "  globe: " +
+           globe +
+           "stack}\n"
+           "  upper-globe: " +
+           globe +
+           "upper}\n"
+           "  middle-globe: " +
+           globe +
+           "middle}\n"
+           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none" +
+           cut.frame + "}\n";
   }
 
   // Renders `cut` and counts the judged pixels of each kind, and those showing another colour than expected.
@@ -156,7 +181,9 @@ class LayerPeel : public ::testing::TestWithParam<std::string> {
       for (int x = 0; x < kSize; ++x) {
         const std::optional<Colour>& colour = expected[std::size_t(y) * kSize + x];
         if (!colour || !awayFromEdges(expected, x, y, cut.band)) continue;
-        ++(*colour == kRed ? judged.upper : *colour == kGreen && cut.floorColour != kGreen ? judged.wall : judged.floor);
+        ++(*colour == kRed                                  ? judged.upper
+           : *colour == kGreen && cut.floorColour != kGreen ? judged.wall
+                                                            : judged.floor);
         const auto pixel = image.at(x, y);
         for (std::size_t c = 0; c < 3; ++c)
           if (std::abs(pixel[c] - (*colour)[c]) > 2) {
@@ -192,7 +219,8 @@ TEST_P(LayerPeel, AnEdgeSlopesTheWallThroughTheUpperLayersFaces) {
 // Peeling no layer but cutting 5 km into the upper one leaves its material 35 km up as the cut's floor, in
 // its cut faces' colour.
 TEST_P(LayerPeel, ADepthCutShowsTheUpperLayersFaceWithinIt) {
-  const Judged judged = judge({", peel: 0, depth: 5000, cut: radius, radius: 80000", kWithinRadius, 35000.0, 0.0, kGreen});
+  const Judged judged =
+      judge({", peel: 0, depth: 5000, cut: radius, radius: 80000", kWithinRadius, 35000.0, 0.0, kGreen});
   EXPECT_GT(judged.floor, 1000);
   EXPECT_EQ(judged.wrong, 0);
 }

@@ -56,7 +56,8 @@ std::unique_ptr<GDALDataset> createRaster(const std::filesystem::path& file, std
   OGRSpatialReference crs;
   crs.SetFromUserInput("+proj=longlat +R=3396190");
   dataset->SetSpatialRef(&crs);
-  std::array<double, 6> t{extent[0], (extent[2] - extent[0]) / width, 0.0, extent[3], 0.0, (extent[1] - extent[3]) / height};
+  std::array<double, 6> t{extent[0], (extent[2] - extent[0]) / width, 0.0, extent[3],
+                          0.0,       (extent[1] - extent[3]) / height};
   dataset->SetGeoTransform(t.data());
   return dataset;
 }
@@ -66,8 +67,8 @@ void writeHalves(GDALDataset& dataset, int band, int firstEast, unsigned char we
   const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
   std::vector<unsigned char> values(std::size_t(width) * height);
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = int(i % std::size_t(width)) < firstEast ? west : east;
-  ASSERT_EQ(dataset.GetRasterBand(band)->RasterIO(GF_Write, 0, 0, width, height, values.data(), width, height,
-                                                  GDT_Byte, 0, 0),
+  ASSERT_EQ(dataset.GetRasterBand(band)->RasterIO(GF_Write, 0, 0, width, height, values.data(), width, height, GDT_Byte,
+                                                  0, 0),
             CE_None);
 }
 
@@ -95,9 +96,13 @@ std::string source(const std::string& name, const std::filesystem::path& file, c
 std::string pipeline(const std::filesystem::path& directory, double altitude, const std::string& sources,
                      const std::string& laid) {
   return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-         "camera: {lon: 0, lat: 0, altitude: " + std::to_string(altitude) + ", fov: 45}\n"
-         "nodes:\n" + source("base", directory / "base.tif") + sources +
-         "  laid: {type: composite.overlay_mask, base: base, overlay: overlay" + laid + "}\n"
+         "camera: {lon: 0, lat: 0, altitude: " +
+         std::to_string(altitude) +
+         ", fov: 45}\n"
+         "nodes:\n" +
+         source("base", directory / "base.tif") + sources +
+         "  laid: {type: composite.overlay_mask, base: base, overlay: overlay" + laid +
+         "}\n"
          "  globe: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: globe, surface: [laid], shading: none}\n";
 }
@@ -124,9 +129,7 @@ Ramp rampAcross(const Image& image) {
 
 class OverlayMask : public ::testing::Test {
  protected:
-  void SetUp() override {
-    writeColour(directory_.path() / "base.tif", {-180.0, -90.0, 180.0, 90.0}, 360, 180, kBlue);
-  }
+  void SetUp() override { writeColour(directory_.path() / "base.tif", {-180.0, -90.0, 180.0, 90.0}, 360, 180, kBlue); }
 
   Ramp rampOf(const std::string& what, double altitude, const std::string& sources, const std::string& laid) {
     const std::string text = pipeline(directory_.path(), altitude, sources, laid);
@@ -168,7 +171,7 @@ constexpr double kTexel = 40.0 / kWide;
 // Longitude 0 at column 2051 of these, so that the edge there lies inside the texels of every coarser level
 // (GDAL's averages of a nodata mask or of 0/1 bytes would make steps of it, ramps only where it is aligned).
 constexpr int kMiddleColumn = 2051;
-constexpr std::array<double, 4> kAcrossTheMiddle{-kMiddleColumn * kTexel, -5.0, 40.0 - kMiddleColumn * kTexel, 5.0};
+constexpr std::array<double, 4> kAcrossTheMiddle{-kMiddleColumn * kTexel, -5.0, 40.0 - kMiddleColumn* kTexel, 5.0};
 constexpr const char* kFeather = ", feather: 8";
 
 Ramp OverlayMask::extentRamp() {

@@ -32,7 +32,8 @@ class Mercator : public Projection {
   std::string projString() const override { return "+proj=merc +R=" + std::to_string(radius_); }
   std::optional<glm::dvec2> forward(glm::dvec2 lonlat) const override {
     if (std::abs(lonlat.y) >= kPi / 2) return std::nullopt;
-    return glm::dvec2(radius_ * std::remainder(lonlat.x, 2 * kPi), radius_ * std::log(std::tan(kPi / 4 + lonlat.y / 2)));
+    return glm::dvec2(radius_ * std::remainder(lonlat.x, 2 * kPi),
+                      radius_ * std::log(std::tan(kPi / 4 + lonlat.y / 2)));
   }
   std::optional<glm::dvec2> inverse(glm::dvec2 xy) const override {
     return glm::dvec2(xy.x / radius_, kPi / 2 - 2 * std::atan(std::exp(-xy.y / radius_)));
@@ -48,15 +49,18 @@ class Mercator : public Projection {
 };
 
 ProjectionDeclaration mercatorDeclaration() {
-  return {"test-mercator", "spherical Mercator, registered by a test as a plugin would", {"merc"},
+  return {"test-mercator",
+          "spherical Mercator, registered by a test as a plugin would",
+          {"merc"},
           [](const ProjParameters&, const Ellipsoid& ellipsoid) -> std::unique_ptr<Projection> {
             return std::make_unique<Mercator>(ellipsoid.semiMajorAxis);
           },
-          {{"test/mercator.glsl", "#include \"strata/constants.glsl\"\n"
-                                  "vec3 testMercator(vec2 lonlat, vec4 a, vec4 b) {\n"
-                                  "  float lon = lonlat.x - TWO_PI * floor((lonlat.x + PI) / TWO_PI);\n"
-                                  "  return vec3(lon, log(tan(0.25 * PI + 0.5 * lonlat.y)), 1.0);\n"
-                                  "}\n"}}};
+          {{"test/mercator.glsl",
+            "#include \"strata/constants.glsl\"\n"
+            "vec3 testMercator(vec2 lonlat, vec4 a, vec4 b) {\n"
+            "  float lon = lonlat.x - TWO_PI * floor((lonlat.x + PI) / TWO_PI);\n"
+            "  return vec3(lon, log(tan(0.25 * PI + 0.5 * lonlat.y)), 1.0);\n"
+            "}\n"}}};
 }
 
 // Writes an RGB GeoTIFF in the test's spherical Mercator, `size` texels a side placed by `transform`, with
@@ -88,7 +92,8 @@ void writeMercatorCheckerboard(const std::filesystem::path& file) {
   const std::array<double, 6> transform{-kPi * kRadius, 2 * kPi * kRadius / size, 0, top, 0, -2 * top / size};
   const Mercator mercator(kRadius);
   writeMercatorRaster(file, size, transform, [&](int x, int y) {
-    const glm::dvec2 lonlat = *mercator.inverse({transform[0] + (x + 0.5) * transform[1], top + (y + 0.5) * transform[5]});
+    const glm::dvec2 lonlat =
+        *mercator.inverse({transform[0] + (x + 0.5) * transform[1], top + (y + 0.5) * transform[5]});
     return cellColour(int(std::floor((lonlat.x * 180 / kPi + 180.0) / 45.0)) % 8,
                       int(std::floor((90.0 - lonlat.y * 180 / kPi) / 45.0)));
   });
@@ -101,12 +106,14 @@ TEST(PluginProjection, ARasterInAPluginsProjectionLandsWhereItBelongs) {
   writeMercatorCheckerboard(directory.path() / "cells.tif");
   auto engine = makeEngine();
   engine->plugins().addProjection(mercatorDeclaration());
-  auto pipeline = directory.write("mercator.yaml",
-                                  "strata: 1\ncamera: {lon: 20, lat: 30, altitude: 1.2e7}\nnodes:\n"
-                                  "  cells: {type: source.gdal, path: " + (directory.path() / "cells.tif").string() +
-                                      ", kind: color}\n"
-                                  "  globe: {type: geometry.icosahedral}\n"
-                                  "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n");
+  auto pipeline =
+      directory.write("mercator.yaml",
+                      "strata: 1\ncamera: {lon: 20, lat: 30, altitude: 1.2e7}\nnodes:\n"
+                      "  cells: {type: source.gdal, path: " +
+                          (directory.path() / "cells.tif").string() +
+                          ", kind: color}\n"
+                          "  globe: {type: geometry.icosahedral}\n"
+                          "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n");
   const Image image = renderFrame(*engine, pipeline, 320, 240);
   const View view = engine->view(320, 240);
   int judged = 0;
@@ -117,7 +124,8 @@ TEST(PluginProjection, ARasterInAPluginsProjectionLandsWhereItBelongs) {
       // stretched far north and south.
       if (!hit || hit->incidence < 0.3 || std::abs(hit->lat) > 70.0) continue;
       if (distanceToCellEdge(hit->lon) < 2.0 || distanceToCellEdge(hit->lat) < 2.0) continue;
-      const Rgb8 expected = cellColour(int(std::floor((hit->lon + 180.0) / 45.0)) % 8, int(std::floor((90.0 - hit->lat) / 45.0)));
+      const Rgb8 expected =
+          cellColour(int(std::floor((hit->lon + 180.0) / 45.0)) % 8, int(std::floor((90.0 - hit->lat) / 45.0)));
       const auto pixel = image.at(x, y);
       ++judged;
       // 2 levels: the sRGB decode to half floats and the re-encode to 8 bits each round by under one.
@@ -139,7 +147,8 @@ TEST_P(PluginProjectionPrecision, OneCentimetreTexelsInAPluginsProjectionAreCris
   constexpr double kTexel = 0.01;  // m of Mercator x and y: 0.997 cm on the ground at 4.6 S
   const Mercator mercator(kRadius);
   const glm::dvec2 centre = *mercator.forward({137.4 * kPi / 180.0, -4.6 * kPi / 180.0});
-  const std::array<double, 6> t{centre.x - kTexel * kTexels / 2, kTexel, 0, centre.y + kTexel * kTexels / 2, 0, -kTexel};
+  const std::array<double, 6> t{centre.x - kTexel * kTexels / 2, kTexel, 0,
+                                centre.y + kTexel * kTexels / 2, 0,      -kTexel};
   TemporaryDirectory directory;
   writeMercatorRaster(directory.path() / "board.tif", kTexels, t, [](int x, int y) {
     const auto grey = static_cast<unsigned char>((x / kCell + y / kCell) % 2 == 0 ? kLight : kDark);
@@ -149,7 +158,8 @@ TEST_P(PluginProjectionPrecision, OneCentimetreTexelsInAPluginsProjectionAreCris
   engine->plugins().addProjection(mercatorDeclaration());
   const auto pipeline = directory.write(
       "board.yaml", "strata: 1\ncamera: {lon: 137.4000123, lat: -4.6000045, altitude: 2, heading: 30, tilt: " +
-                        std::to_string(GetParam()) + ", fov: 40}\nnodes:\n"
+                        std::to_string(GetParam()) +
+                        ", fov: 40}\nnodes:\n"
                         "  board: {type: source.gdal, path: board.tif}\n"
                         "  globe: {type: geometry.icosahedral}\n"
                         "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");

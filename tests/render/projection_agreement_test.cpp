@@ -28,13 +28,16 @@ struct Camera {
 std::string observationPipeline(const std::string& observation, const Camera& camera) {
   return "strata: 1\n"
          "body: {name: Mars, radius: 3396190}\n"
-         "camera: {lon: " + std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
-         ", altitude: " + std::to_string(camera.altitude) + ", fov: 45}\n"
+         "camera: {lon: " +
+         std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
+         ", altitude: " + std::to_string(camera.altitude) +
+         ", fov: 45}\n"
          "nodes:\n"
          // Heights as grey levels, +-12 km (the planet's amplitude) to [0, 1]: a smooth field, so that what
          // differs between renderings is where the projections put it, not how each observation aliased
          // the colour map's one-texel contour lines.
-         "  data: {type: source.gdal, path: " + (kData / (observation + "-height.tif")).string() +
+         "  data: {type: source.gdal, path: " +
+         (kData / (observation + "-height.tif")).string() +
          ", kind: luminance, scale: 4.1666666666666665e-05, offset: 0.5}\n"
          "  globe: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: globe, surface: [data], shading: none}\n";
@@ -128,8 +131,10 @@ TEST_P(ProjectionAgreement, SamePictureWhereBothSampleWell) {
   TemporaryDirectory directory;
   auto engine = makeEngine();
   const int size = 240;
-  const Image first = renderFrame(*engine, directory.write("a.yaml", observationPipeline(pair.first, pair.camera)), size, size);
-  const Image second = renderFrame(*engine, directory.write("b.yaml", observationPipeline(pair.second, pair.camera)), size, size);
+  const Image first =
+      renderFrame(*engine, directory.write("a.yaml", observationPipeline(pair.first, pair.camera)), size, size);
+  const Image second =
+      renderFrame(*engine, directory.write("b.yaml", observationPipeline(pair.second, pair.camera)), size, size);
   const View view = engine->view(size, size);
   const Agreement agreement = compare(first, second, view, engine->pipeline().body.radius, pair.wellSampled);
   std::cout << pair.first << " vs " << pair.second << ": " << agreement.judged << " pixels, mean difference "
@@ -156,11 +161,25 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         PairCase{"GlobalAndHealpix", "global", "healpix", {40.0, 10.0, 6e6}, lowLatitude},
         PairCase{"GlobalAndHealpixAcrossTheAntimeridian", "global", "healpix", {180.0, -20.0, 6e6}, lowLatitude},
-        PairCase{"NorthCapAndHealpix", "north", "healpix", {-60.0, 75.0, 6e6}, [](const SurfaceHit& h) { return h.lat >= 50.0; }},
-        PairCase{"SouthCapAndHealpix", "south", "healpix", {120.0, -75.0, 6e6}, [](const SurfaceHit& h) { return h.lat <= -50.0; }},
-        PairCase{"GlobalAndNorthCap", "global", "north", {0.0, 55.0, 4e6},
+        PairCase{"NorthCapAndHealpix",
+                 "north",
+                 "healpix",
+                 {-60.0, 75.0, 6e6},
+                 [](const SurfaceHit& h) { return h.lat >= 50.0; }},
+        PairCase{"SouthCapAndHealpix",
+                 "south",
+                 "healpix",
+                 {120.0, -75.0, 6e6},
+                 [](const SurfaceHit& h) { return h.lat <= -50.0; }},
+        PairCase{"GlobalAndNorthCap",
+                 "global",
+                 "north",
+                 {0.0, 55.0, 4e6},
                  [](const SurfaceHit& h) { return h.lat >= 50.0 && h.lat <= 60.0; }},
-        PairCase{"StripAndGlobal", "strip", "global", {25.0, 20.0, 3e6},
+        PairCase{"StripAndGlobal",
+                 "strip",
+                 "global",
+                 {25.0, 20.0, 3e6},
                  [](const SurfaceHit& h) { return lowLatitude(h) && strip().wellInside(h.lon, h.lat); }}),
     [](const auto& test) { return std::string(test.param.name); });
 

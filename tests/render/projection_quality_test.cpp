@@ -33,11 +33,15 @@ constexpr int kSize = 240;
 
 std::string pipelineOf(const std::string& nodes, const std::string& surface, const Camera& camera) {
   return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-         "camera: {lon: " + std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
-         ", altitude: " + std::to_string(camera.altitude) + ", tilt: " + std::to_string(camera.tilt) + ", fov: 45}\n"
-         "nodes:\n" + nodes +
+         "camera: {lon: " +
+         std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
+         ", altitude: " + std::to_string(camera.altitude) + ", tilt: " + std::to_string(camera.tilt) +
+         ", fov: 45}\n"
+         "nodes:\n" +
+         nodes +
          "  globe: {type: geometry.icosahedral}\n"
-         "  frame: {type: output.image, geometry: globe, surface: [" + surface + "], shading: none}\n";
+         "  frame: {type: output.image, geometry: globe, surface: [" +
+         surface + "], shading: none}\n";
 }
 
 std::string observation(const std::string& name) {
@@ -164,19 +168,23 @@ TEST(ProjectionQualityHeights, DisplaceTheGeometryAsWellAsTheBestObservation) {
   auto engine = makeEngine();
   const auto pipeline = [](const std::string& nodes, const std::string& relief, const Camera& camera) {
     return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
-           "camera: {lon: " + std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
-           ", altitude: " + std::to_string(camera.altitude) + ", tilt: 30, fov: 45}\n"
-           "nodes:\n  colours: {type: source.procedural, kind: color}\n" + nodes +
-           "  globe: {type: geometry.icosahedral, height: " + relief + ", lowest: -250000, highest: 250000}\n"
+           "camera: {lon: " +
+           std::to_string(camera.lon) + ", lat: " + std::to_string(camera.lat) +
+           ", altitude: " + std::to_string(camera.altitude) +
+           ", tilt: 30, fov: 45}\n"
+           "nodes:\n  colours: {type: source.procedural, kind: color}\n" +
+           nodes + "  globe: {type: geometry.icosahedral, height: " + relief +
+           ", lowest: -250000, highest: 250000}\n"
            "  frame: {type: output.image, geometry: globe, surface: [colours]}\n";
   };
   std::string observed;
   for (const std::string name : {"global", "north", "south"})
-    observed += "  " + name + ": {type: source.gdal, kind: height, scale: 20, path: " +
-                (kData / (name + "-height.tif")).string() + "}\n";
+    observed += "  " + name +
+                ": {type: source.gdal, kind: height, scale: 20, path: " + (kData / (name + "-height.tif")).string() +
+                "}\n";
   for (const std::string method : {"isotropy", "latitude"})
-    observed += "  " + method + ": {type: composite.projection_quality, layers: [global, north, south], method: " +
-                method + "}\n";
+    observed += "  " + method +
+                ": {type: composite.projection_quality, layers: [global, north, south], method: " + method + "}\n";
   for (const Camera camera : {Camera{.lon = 0, .lat = 88, .altitude = 1.5e6}}) {
     const auto render = [&](const std::string& nodes, const std::string& relief) {
       return renderFrame(*engine, directory.write("heights.yaml", pipeline(nodes, relief, camera)), kSize, kSize);
@@ -187,7 +195,8 @@ TEST(ProjectionQualityHeights, DisplaceTheGeometryAsWellAsTheBestObservation) {
     double best = 1e9;
     for (const std::string name : {"global", "north"}) {
       const double difference = meanDifference(render(observed, name), reference, view, radius);
-      std::printf("heights at %.0f degrees, %s alone: %.2f levels from the planet's\n", camera.lat, name.c_str(), difference);
+      std::printf("heights at %.0f degrees, %s alone: %.2f levels from the planet's\n", camera.lat, name.c_str(),
+                  difference);
       best = std::min(best, difference);
     }
     for (const std::string method : {"isotropy", "latitude"}) {

@@ -27,8 +27,8 @@ namespace strata::test {
 namespace {
 
 constexpr int kSize = 256;
-constexpr double kRadius = 6371000.0;            // m: the pipeline's body
-constexpr double kTexel = 0.01;                  // m
+constexpr double kRadius = 6371000.0;  // m: the pipeline's body
+constexpr double kTexel = 0.01;        // m
 constexpr int kTexels = 1024;
 // 16 texels a cell: mip levels 1 to 4 stay inside cells. 32 for a board warped into another projection,
 // whose filtering blurs more of each cell's edge (judgeBoard).
@@ -81,22 +81,25 @@ void expectCrisp(const Place& place, const std::string& geometry, double tilt, c
   }
   std::string ground;
   if (plateau != 0.0) {
-    writeFloatRaster(directory.path() / "plateau.tif", 8, 4, {-180, -90, 180, 90}, [plateau](int, int) { return float(plateau); });
+    writeFloatRaster(directory.path() / "plateau.tif", 8, 4, {-180, -90, 180, 90},
+                     [plateau](int, int) { return float(plateau); });
     ground = "  plateau: {type: source.gdal, kind: height, path: plateau.tif}\n";
   }
   const auto pipeline = directory.write(
-      "board.yaml", "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
-                    "camera: {lon: " + pipelineDegrees(place.cameraLon) + ", lat: " + pipelineDegrees(place.cameraLat) +
-                    ", altitude: " + std::to_string(plateau + 2.0) + ", heading: 30, tilt: " + std::to_string(tilt) +
-                    ", fov: 40}\nnodes:\n"
-                    "  board: {type: source.gdal, path: " + raster + "}\n" + ground +
-                    "  globe: {type: " + geometry + (plateau != 0.0 ? ", height: plateau" : "") + "}\n"
-                    "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
+      "board.yaml",
+      "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
+      "camera: {lon: " +
+          pipelineDegrees(place.cameraLon) + ", lat: " + pipelineDegrees(place.cameraLat) +
+          ", altitude: " + std::to_string(plateau + 2.0) + ", heading: 30, tilt: " + std::to_string(tilt) +
+          ", fov: 40}\nnodes:\n"
+          "  board: {type: source.gdal, path: " +
+          raster + "}\n" + ground + "  globe: {type: " + geometry + (plateau != 0.0 ? ", height: plateau" : "") +
+          "}\n"
+          "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
   auto engine = makeEngine();
   const Image image = renderFrame(*engine, pipeline, kSize, kSize);
   const View view = engine->view(kSize, kSize);
-  const Judgement judgement =
-      judgeBoard(image, view, kRadius + plateau, board, !projection.empty(), kLight, kDark);
+  const Judgement judgement = judgeBoard(image, view, kRadius + plateau, board, !projection.empty(), kLight, kDark);
   EXPECT_GT(judgement.judged, kSize * kSize / 5);
   EXPECT_EQ(judgement.wrong, 0) << "of " << judgement.judged << " pixels";
 }
@@ -124,12 +127,12 @@ std::string placeGeneratorAndTilt(const ::testing::TestParamInfo<std::tuple<Plac
          std::to_string(int(std::get<2>(param.param)));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    PlacesGeneratorsAndTilts, RasterPrecision,
-    ::testing::Combine(::testing::ValuesIn(kPlaces),
-                       ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
-                       ::testing::Values(0.0, 60.0)),
-    placeGeneratorAndTilt);
+INSTANTIATE_TEST_SUITE_P(PlacesGeneratorsAndTilts, RasterPrecision,
+                         ::testing::Combine(::testing::ValuesIn(kPlaces),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm",
+                                                              "geometry.healpix"),
+                                            ::testing::Values(0.0, 60.0)),
+                         placeGeneratorAndTilt);
 
 }  // namespace
 }  // namespace strata::test

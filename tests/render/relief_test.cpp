@@ -18,8 +18,8 @@
 // 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.52
 // levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.77 for exaggeration 2 under a
 // light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone; 0.50 multidirectional (Mark's four lights);
-// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); normalised 0.51; tinted by elevation 0.50, by slope
-// 0.51; the same tolerance.
+// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); normalised 0.51; tinted by elevation 0.50, by
+// slope 0.51; the same tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -59,11 +59,10 @@ double coneHeight(Offset o) { return kConeHeight * std::max(0.0, 1.0 - o.length(
 
 void writeCone(const std::filesystem::path& file) {
   const double texel = 2.0 * kHalfExtent / kTexels;
-  writeFloatRaster(file, kTexels, kTexels, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent},
-                   [&](int column, int row) {
-                     return float(coneHeight(offsetOf(-kHalfExtent + (column + 0.5) * texel,
-                                                      kHalfExtent - (row + 0.5) * texel)));
-                   });
+  writeFloatRaster(
+      file, kTexels, kTexels, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent}, [&](int column, int row) {
+        return float(coneHeight(offsetOf(-kHalfExtent + (column + 0.5) * texel, kHalfExtent - (row + 0.5) * texel)));
+      });
 }
 
 // Lambert's cosine of the flank's exact normal at `o`, its slope H / R times `exaggeration`, with the light
@@ -88,8 +87,9 @@ std::string pipeline(const std::filesystem::path& cone, const std::string& relie
   return "strata: 1\nbody: {name: Mars, radius: 3396190}\n"
          "camera: {lon: 0, lat: 0, altitude: 1.6e5, fov: 45}\n"
          "nodes:\n"
-         "  cone: {type: source.gdal, path: " + cone.string() + ", kind: height}\n" + more +
-         "  relief: {type: composite.relief, height: cone" + relief + "}\n"
+         "  cone: {type: source.gdal, path: " +
+         cone.string() + ", kind: height}\n" + more + "  relief: {type: composite.relief, height: cone" + relief +
+         "}\n"
          "  globe: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: globe, surface: [relief], shading: none}\n";
 }
@@ -156,9 +156,9 @@ TEST_F(Relief, ExaggerationAndAltitudeShadeAsASteeperConeUnderALowerLight) {
 // Normalised, the shade is Lambert's over flat ground's, sin(altitude): brighter than 1 on the flank facing
 // the light (white, once encoded) and the surface's own colour on flat ground.
 TEST_F(Relief, NormalisedTheShadeIsOverFlatGrounds) {
-  const Agreement agreement =
-      compare("normalised", pipeline(file("cone.tif"), ", normalise: true"),
-              [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 45.0) / std::sin(45.0 * kDegree)); });
+  const Agreement agreement = compare("normalised", pipeline(file("cone.tif"), ", normalise: true"), [](Offset o) {
+    return srgbLevel(analyticShade(o, 315.0, 45.0) / std::sin(45.0 * kDegree));
+  });
   EXPECT_LE(agreement.largest, 1.0);
 }
 
@@ -186,8 +186,8 @@ TEST_F(Relief, MultidirectionalMatchesMarksWeightedLights) {
 // apex over 360 degrees, judged away from north, where it wraps from 1 to 0 within a pixel.
 TEST_F(Relief, SlopeAndAspectAreTheFlanks) {
   const double slope = std::atan(kConeHeight / kConeRadius) / (0.5 * std::numbers::pi);
-  const Agreement slopes = compare("slope", pipeline(file("cone.tif"), ", output: slope"),
-                                   [&](Offset) { return srgbLevel(slope); });
+  const Agreement slopes =
+      compare("slope", pipeline(file("cone.tif"), ", output: slope"), [&](Offset) { return srgbLevel(slope); });
   EXPECT_LE(slopes.largest, 1.0);
   const Agreement aspects = compare("aspect", pipeline(file("cone.tif"), ", output: aspect"), [](Offset o) {
     const double aspect = std::atan2(o.east, o.north) / kDegree;
@@ -201,13 +201,13 @@ TEST_F(Relief, SlopeAndAspectAreTheFlanks) {
 // shade whatever the surface.
 TEST_F(Relief, MultipliesASurfaceOrShadesAlone) {
   constexpr unsigned char kLevel = 200;  // sRGB; 0.578 linear
-  writeColourRaster(file("paint.tif"), 8, 8, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent},
-                    [](int, int) { return Rgb8{kLevel, kLevel, kLevel}; });
+  writeColourRaster(file("paint.tif"), 8, 8, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent}, [](int, int) {
+    return Rgb8{kLevel, kLevel, kLevel};
+  });
   const std::string paint = "  paint: {type: source.gdal, path: " + file("paint.tif").string() + ", kind: color}\n";
   const double linear = std::pow((kLevel / 255.0 + 0.055) / 1.055, 2.4);
-  const Agreement multiplied =
-      compare("multiply", pipeline(file("cone.tif"), ", surface: paint", paint),
-              [&](Offset o) { return srgbLevel(linear * analyticShade(o, 315.0, 45.0)); });
+  const Agreement multiplied = compare("multiply", pipeline(file("cone.tif"), ", surface: paint", paint),
+                                       [&](Offset o) { return srgbLevel(linear * analyticShade(o, 315.0, 45.0)); });
   EXPECT_LE(multiplied.largest, 1.0);
   const Agreement alone = compare("alone", pipeline(file("cone.tif"), ", surface: paint, blend: alone", paint),
                                   [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 45.0)); });
@@ -244,13 +244,17 @@ TEST_F(Relief, RefusesAMalformedRamp) {
 
 // The height port takes height layers only.
 TEST_F(Relief, RefusesAColourLayerAsHeight) {
-  writeColourRaster(file("paint.tif"), 8, 8, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent},
-                    [](int, int) { return Rgb8{1, 2, 3}; });
-  const std::string text = "strata: 1\nnodes:\n"
-                           "  paint: {type: source.gdal, path: " + file("paint.tif").string() + ", kind: color}\n"
-                           "  relief: {type: composite.relief, height: paint}\n"
-                           "  globe: {type: geometry.icosahedral}\n"
-                           "  frame: {type: output.image, geometry: globe, surface: [relief]}\n";
+  writeColourRaster(file("paint.tif"), 8, 8, {-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent}, [](int, int) {
+    return Rgb8{1, 2, 3};
+  });
+  const std::string text =
+      "strata: 1\nnodes:\n"
+      "  paint: {type: source.gdal, path: " +
+      file("paint.tif").string() +
+      ", kind: color}\n"
+      "  relief: {type: composite.relief, height: paint}\n"
+      "  globe: {type: geometry.icosahedral}\n"
+      "  frame: {type: output.image, geometry: globe, surface: [relief]}\n";
   try {
     engine_->load(directory_.write("refused.yaml", text));
     ADD_FAILURE() << "a colour layer was taken as heights";

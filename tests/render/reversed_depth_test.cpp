@@ -38,7 +38,8 @@ void main() { colour = vec4(shade, 0.0, 0.0, 1.0); }
 float drawnShade(const View& view, double first, double second) {
   headlessContext();
   const Framebuffer target(kSize, kSize, {GL_RGBA8}, GL_DEPTH_COMPONENT32F);
-  const ShaderProgram program({{GL_VERTEX_SHADER, "plane.vert", kVertex}, {GL_FRAGMENT_SHADER, "plane.frag", kFragment}});
+  const ShaderProgram program(
+      {{GL_VERTEX_SHADER, "plane.vert", kVertex}, {GL_FRAGMENT_SHADER, "plane.frag", kFragment}});
   GLuint vertexArray = 0;
   glCreateVertexArrays(1, &vertexArray);
   target.bind();

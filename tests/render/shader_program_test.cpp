@@ -32,7 +32,8 @@ TEST(ShaderLibrary, UnknownIncludeNamesTheIncludingSource) {
 TEST(ShaderProgram, CompileErrorQuotesTheLogAndTheSource) {
   headlessContext();
   try {
-    ShaderProgram program({{GL_FRAGMENT_SHADER, "broken.frag", "#version 450 core\nout vec4 c;\nvoid main() { c = nope; }\n"}});
+    ShaderProgram program(
+        {{GL_FRAGMENT_SHADER, "broken.frag", "#version 450 core\nout vec4 c;\nvoid main() { c = nope; }\n"}});
     FAIL() << "no error";
   } catch (const std::runtime_error& error) {
     const std::string message = error.what();

@@ -24,8 +24,12 @@ double measuredDiscRadius(const Image& image) {
 
 std::string raisedGlobePipeline(const std::filesystem::path& heights, double height, const std::string& geometry) {
   return "strata: 1\nbody: {name: Test, radius: 6371000}\ncamera: {lon: 0, lat: 0, altitude: 2.0e7, fov: 45}\nnodes:\n"
-         "  heights: {type: source.gdal, path: " + heights.string() + ", kind: height, scale: " + std::to_string(height) + "}\n"
-         "  globe: {type: " + geometry + ", height: heights, lowest: 0, highest: " + std::to_string(height) + "}\n"
+         "  heights: {type: source.gdal, path: " +
+         heights.string() + ", kind: height, scale: " + std::to_string(height) +
+         "}\n"
+         "  globe: {type: " +
+         geometry + ", height: heights, lowest: 0, highest: " + std::to_string(height) +
+         "}\n"
          "  frame: {type: output.image, geometry: globe}\n";
 }
 
@@ -49,10 +53,12 @@ TEST_P(Silhouette, DiscRadiusIsThatOfTheRaisedSphere) {
 // 0 m, then 300 km and 1000 km, which grow the disc by about 10 and 33 pixels.
 INSTANTIATE_TEST_SUITE_P(Heights, Silhouette,
                          ::testing::Combine(::testing::Values(0.0, 3.0e5, 1.0e6),
-                                            ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm",
+                                                              "geometry.healpix")),
                          [](const ::testing::TestParamInfo<std::tuple<double, std::string>>& test) {
                            const std::string& type = std::get<1>(test.param);
-                           return type.substr(type.find('.') + 1) + "_" + std::to_string(int(std::get<0>(test.param) / 1000)) + "km";
+                           return type.substr(type.find('.') + 1) + "_" +
+                                  std::to_string(int(std::get<0>(test.param) / 1000)) + "km";
                          });
 
 }  // namespace

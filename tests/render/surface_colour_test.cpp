@@ -20,14 +20,21 @@ struct CameraCase {
   double lon, lat, heading, tilt;
 };
 
-std::string checkerboardPipeline(const std::filesystem::path& raster, const CameraCase& c, const std::string& geometry) {
+std::string checkerboardPipeline(const std::filesystem::path& raster, const CameraCase& c,
+                                 const std::string& geometry) {
   return "strata: 1\n"
          "body: {name: Earth, radius: 6371000}\n"
-         "camera: {lon: " + std::to_string(c.lon) + ", lat: " + std::to_string(c.lat) + ", altitude: 1.2e7, heading: " +
-         std::to_string(c.heading) + ", tilt: " + std::to_string(c.tilt) + ", fov: 45}\n"
+         "camera: {lon: " +
+         std::to_string(c.lon) + ", lat: " + std::to_string(c.lat) +
+         ", altitude: 1.2e7, heading: " + std::to_string(c.heading) + ", tilt: " + std::to_string(c.tilt) +
+         ", fov: 45}\n"
          "nodes:\n"
-         "  cells: {type: source.gdal, path: " + raster.string() + ", kind: color}\n"
-         "  globe: {type: " + geometry + "}\n"
+         "  cells: {type: source.gdal, path: " +
+         raster.string() +
+         ", kind: color}\n"
+         "  globe: {type: " +
+         geometry +
+         "}\n"
          "  frame: {type: output.image, geometry: globe, surface: [cells], shading: none}\n";
 }
 
@@ -41,8 +48,7 @@ TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
   TemporaryDirectory directory;
   writeCheckerboard(directory.path() / "cells.tif");
   const auto& [camera, geometry] = GetParam();
-  auto pipeline =
-      directory.write("globe.yaml", checkerboardPipeline(directory.path() / "cells.tif", camera, geometry));
+  auto pipeline = directory.write("globe.yaml", checkerboardPipeline(directory.path() / "cells.tif", camera, geometry));
   auto engine = makeEngine();
   const int width = 320, height = 240;
   Image image = renderFrame(*engine, pipeline, width, height);
@@ -66,15 +72,16 @@ TEST_P(SurfaceColour, EveryJudgedPixelShowsTheCellUnderIt) {
       // and blur across cell edges (the polar blur of [Kooima 2008, §4.1.1] that polar data will fix).
       if (hit->incidence < 0.3 || std::abs(hit->lat) > 80.0) continue;
       if (distanceToCellEdge(hit->lon) < 2.0 || distanceToCellEdge(hit->lat) < 2.0) continue;
-      const int column = int(std::floor((hit->lon + 180.0) / 45.0)) % 8, row = int(std::floor((90.0 - hit->lat) / 45.0));
+      const int column = int(std::floor((hit->lon + 180.0) / 45.0)) % 8,
+                row = int(std::floor((90.0 - hit->lat) / 45.0));
       const Rgb8 expected = cellColour(column, row);
       ++judged;
       // 2 levels: sRGB decode to half floats and re-encode to 8 bits round by under one level each way.
       bool matches = true;
       for (int c = 0; c < 3; ++c) matches &= std::abs(pixel[c] - int(expected[c])) <= 2;
       if (!matches && ++wrong <= 5)
-        ADD_FAILURE() << "pixel " << x << "," << y << " at lon " << hit->lon << " lat " << hit->lat << " is (" << pixel[0]
-                      << "," << pixel[1] << "," << pixel[2] << "), cell " << column << "," << row << " is ("
+        ADD_FAILURE() << "pixel " << x << "," << y << " at lon " << hit->lon << " lat " << hit->lat << " is ("
+                      << pixel[0] << "," << pixel[1] << "," << pixel[2] << "), cell " << column << "," << row << " is ("
                       << int(expected[0]) << "," << int(expected[1]) << "," << int(expected[2]) << ")";
     }
   EXPECT_EQ(wrong, 0);
@@ -86,7 +93,8 @@ INSTANTIATE_TEST_SUITE_P(Cameras, SurfaceColour,
                                                               CameraCase{"Antimeridian", 180, 10, 0, 0},
                                                               CameraCase{"NearTheNorthPole", 30, 70, 0, 0},
                                                               CameraCase{"TiltedAndTurned", -100, -30, 45, 25}),
-                                            ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
+                                            ::testing::Values("geometry.icosahedral", "geometry.pgm",
+                                                              "geometry.healpix")),
                          [](const ::testing::TestParamInfo<std::tuple<CameraCase, std::string>>& test) {
                            const std::string& type = std::get<1>(test.param);
                            return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);
@@ -95,12 +103,14 @@ INSTANTIATE_TEST_SUITE_P(Cameras, SurfaceColour,
 TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
   TemporaryDirectory directory;
   writeFloatRaster(directory.path() / "patch.tif", 60, 40, {-30, -20, 30, 20}, [](int, int) { return 200.0f; });
-  auto pipeline = directory.write("patch.yaml",
-                                  "strata: 1\ncamera: {lon: 0, lat: 0, altitude: 1.2e7}\nnodes:\n"
-                                  "  patch: {type: source.gdal, path: " + (directory.path() / "patch.tif").string() +
-                                      ", kind: luminance, scale: 0.00392156862745098}\n"  // 200/255 in linear light
-                                  "  globe: {type: geometry.icosahedral}\n"
-                                  "  frame: {type: output.image, geometry: globe, surface: [patch], shading: none}\n");
+  auto pipeline =
+      directory.write("patch.yaml",
+                      "strata: 1\ncamera: {lon: 0, lat: 0, altitude: 1.2e7}\nnodes:\n"
+                      "  patch: {type: source.gdal, path: " +
+                          (directory.path() / "patch.tif").string() +
+                          ", kind: luminance, scale: 0.00392156862745098}\n"  // 200/255 in linear light
+                          "  globe: {type: geometry.icosahedral}\n"
+                          "  frame: {type: output.image, geometry: globe, surface: [patch], shading: none}\n");
   auto engine = makeEngine();
   Image image = renderFrame(*engine, pipeline, 320, 240);
   const View view = engine->view(320, 240);

@@ -5,8 +5,8 @@
 // and of a place beside the antimeridian, and once around the body 1 degree from the south pole (2^26 texels)
 // and 0.1 degree from it (2^24), is seen from 2 m straight down and tilted 60 degrees, and judged as
 // raster_precision_test.cpp judges its boards. Through float addresses 8 to 827 judged pixels of each view at
-// Gale, the antimeridian and the polar cap were wrong. 0.1 degree from the pole the texels are 4 mm by 1 cm: there a hundredth
-// of a texel is a far smaller share of the board's width than of its height, and checked against the one
+// Gale, the antimeridian and the polar cap were wrong. 0.1 degree from the pole the texels are 4 mm by 1 cm: there a
+// hundredth of a texel is a far smaller share of the board's width than of its height, and checked against the one
 // share, the fit about the eye (LocalTextureFrame) shrank to 0.6 m, beyond which the board was grey (11,868 of
 // 28,059 judged pixels wrong straight down, all tilted).
 // Its pages come from a page source of the test's own, which makes any window of any level (each level texel
@@ -66,8 +66,8 @@ BoardGrid boardAt(const Place& place) {
   board.cellTexels = kCellTexels;
   board.latStep = glm::degrees(kTexel / kRadius);
   board.north = place.lat + board.latStep * kRows * 0.5;
-  board.lonStep = place.aroundBody ? 360.0 / place.columns
-                                   : glm::degrees(kTexel / (kRadius * std::cos(glm::radians(place.lat))));
+  board.lonStep =
+      place.aroundBody ? 360.0 / place.columns : glm::degrees(kTexel / (kRadius * std::cos(glm::radians(place.lat))));
   board.west = place.aroundBody ? -180.0 : place.lon - board.lonStep * place.columns * place.along;
   if (board.west < -180.0) board.west += 360.0;  // its east edge then lies beyond 180
   return board;
@@ -101,8 +101,8 @@ class BoardSource : public PageSource {
       for (int x = 0; x < window.width; ++x) {
         const std::int64_t left = (window.x + x) * side, right = std::min(left + side, std::int64_t(pyramid_.width()));
         const std::int64_t evenColumns = evenCellTexels(left, right), columns = right - left;
-        const double light = double(evenColumns * evenRows + (columns - evenColumns) * (rows - evenRows)) /
-                             double(columns * rows);
+        const double light =
+            double(evenColumns * evenRows + (columns - evenColumns) * (rows - evenRows)) / double(columns * rows);
         const float grey = float(light * kLinearLight + (1.0 - light) * kLinearDark);
         std::uint16_t* texel = halves + 4 * (std::size_t(y) * window.width + x);
         texel[0] = texel[1] = texel[2] = glm::packHalf1x16(grey);
@@ -154,13 +154,16 @@ TEST_P(WideRasterPrecision, OneCentimetreTexelsOfARasterWiderThanFloatAddressesA
   const auto& [place, tilt] = GetParam();
   const BoardGrid board = boardAt(place);
   TemporaryDirectory directory;
-  const auto pipeline = directory.write(
-      "board.yaml", "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
-                    "camera: {lon: " + pipelineDegrees(place.lon) + ", lat: " + pipelineDegrees(place.lat) +
-                        ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) + ", fov: 40}\nnodes:\n"
-                        "  board: {type: test.wide_board}\n"
-                        "  globe: {type: geometry.icosahedral}\n"
-                        "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
+  const auto pipeline =
+      directory.write("board.yaml",
+                      "strata: 1\nbody: {name: sphere, radius: 6371000}\n"
+                      "camera: {lon: " +
+                          pipelineDegrees(place.lon) + ", lat: " + pipelineDegrees(place.lat) +
+                          ", altitude: 2, heading: 30, tilt: " + std::to_string(tilt) +
+                          ", fov: 40}\nnodes:\n"
+                          "  board: {type: test.wide_board}\n"
+                          "  globe: {type: geometry.icosahedral}\n"
+                          "  frame: {type: output.image, geometry: globe, surface: [board], shading: none}\n");
   auto engine = makeEngine();
   engine->plugins().add(boardType(board));
   const Image image = renderFrame(*engine, pipeline, kSize, kSize);

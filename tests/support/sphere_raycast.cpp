@@ -18,7 +18,9 @@ glm::dvec3 eyeRay(const View& view, double x, double y) {
 }
 
 // The same in planet-fixed axes.
-glm::dvec3 pixelRay(const View& view, double x, double y) { return glm::transpose(view.planetToEye) * eyeRay(view, x, y); }
+glm::dvec3 pixelRay(const View& view, double x, double y) {
+  return glm::transpose(view.planetToEye) * eyeRay(view, x, y);
+}
 
 // How far along the ray from the eye along `d` it enters the sphere of `radius`, and leaves it.
 std::optional<std::pair<double, double>> sphereCrossings(const View& view, const glm::dvec3& d, double radius) {

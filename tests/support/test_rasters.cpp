@@ -15,7 +15,8 @@ std::unique_ptr<GDALDataset> createGeoTiff(const std::filesystem::path& file, in
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GTiff");
   std::unique_ptr<GDALDataset> dataset(driver->Create(file.c_str(), width, height, bands, type, nullptr));
   if (!dataset) throw std::runtime_error("cannot create " + file.string());
-  double transform[6] = {extent[0], (extent[2] - extent[0]) / width, 0, extent[3], 0, -(extent[3] - extent[1]) / height};
+  double transform[6] = {extent[0], (extent[2] - extent[0]) / width,  0, extent[3],
+                         0,         -(extent[3] - extent[1]) / height};
   dataset->SetGeoTransform(transform);
   OGRSpatialReference wgs84;
   wgs84.importFromEPSG(4326);
@@ -24,15 +25,15 @@ std::unique_ptr<GDALDataset> createGeoTiff(const std::filesystem::path& file, in
 }
 
 template <typename Sample>
-void writeRgb(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent,
-              GDALDataType type, const std::function<std::array<Sample, 3>(int, int)>& colour) {
+void writeRgb(const std::filesystem::path& file, int width, int height, std::array<double, 4> extent, GDALDataType type,
+              const std::function<std::array<Sample, 3>(int, int)>& colour) {
   auto dataset = createGeoTiff(file, width, height, 3, type, extent);
   std::vector<Sample> band(std::size_t(width) * height);
   for (int channel = 0; channel < 3; ++channel) {
     for (int y = 0; y < height; ++y)
       for (int x = 0; x < width; ++x) band[std::size_t(y) * width + x] = colour(x, y)[std::size_t(channel)];
-    if (dataset->GetRasterBand(channel + 1)->RasterIO(GF_Write, 0, 0, width, height, band.data(), width, height,
-                                                      type, 0, 0) != CE_None)
+    if (dataset->GetRasterBand(channel + 1)
+            ->RasterIO(GF_Write, 0, 0, width, height, band.data(), width, height, type, 0, 0) != CE_None)
       throw std::runtime_error("cannot write " + file.string());
   }
 }

@@ -61,8 +61,10 @@ TEST_F(DatedFiles, PatternsThatFindNoSeriesAreErrorsAtTheParameter) {
   touch("cover_2010_366.tif");
   EXPECT_EQ(problemOf("world.jpg"), "the file-name pattern 'world.jpg' has no date field");
   EXPECT_EQ(problemOf("world.%Y%m.a.png").substr(0, 11), "no file in ");
-  EXPECT_EQ(problemOf("world.%Y%m.c.jpg"), "the file 'world.200413.c.jpg' matches the pattern but its name gives no real day");
-  EXPECT_EQ(problemOf("cover_%Y_%j.tif"), "the file 'cover_2010_366.tif' matches the pattern but its name gives no real day");
+  EXPECT_EQ(problemOf("world.%Y%m.c.jpg"),
+            "the file 'world.200413.c.jpg' matches the pattern but its name gives no real day");
+  EXPECT_EQ(problemOf("cover_%Y_%j.tif"),
+            "the file 'cover_2010_366.tif' matches the pattern but its name gives no real day");
   EXPECT_EQ(problemOf("world.%Y%m.[ab].jpg").substr(0, 11), "no file in ");  // brackets are plain text
   EXPECT_EQ(problemOf("world.%Y%m.%m.jpg"), "the file-name pattern has %m twice");
   EXPECT_NE(problemOf("missing/world.%Y%m.jpg").find("does not exist"), std::string::npos);
@@ -71,7 +73,8 @@ TEST_F(DatedFiles, PatternsThatFindNoSeriesAreErrorsAtTheParameter) {
   EXPECT_EQ(problemOf("world.%Y%m.?.jpg").substr(0, 11), "no file in ");  // ? is plain text too
   touch("world.200401.z.png");
   touch("world.200401.y.png");
-  EXPECT_EQ(problemOf("world.%Y%m.*.png"), "'world.200401.y.png' and 'world.200401.z.png' give the same date, 2004-01-01");
+  EXPECT_EQ(problemOf("world.%Y%m.*.png"),
+            "'world.200401.y.png' and 'world.200401.z.png' give the same date, 2004-01-01");
 }
 
 }  // namespace

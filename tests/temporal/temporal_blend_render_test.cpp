@@ -67,8 +67,9 @@ std::filesystem::path writeSeries(const std::filesystem::path& directory, const 
   for (const std::string& date : dates) list += (list.empty() ? "" : ", ") + date;
   const std::filesystem::path pipeline = directory / "series.yaml";
   std::ofstream(pipeline) << "strata: 1\nbody: {name: Mars, radius: 3396190}\ndate: " << dates.front()
-                          << "\ncamera: " << camera << "\nnodes:\n" << nodes
-                          << "  series: {type: composite.temporal_blend, steps: [" << steps << "], dates: [" << list
+                          << "\ncamera: " << camera << "\nnodes:\n"
+                          << nodes << "  series: {type: composite.temporal_blend, steps: [" << steps << "], dates: ["
+                          << list
                           << "]}\n  globe: {type: geometry.icosahedral}\n"
                              "  frame: {type: output.image, geometry: globe, surface: [series], shading: none}\n";
   return pipeline;
@@ -99,7 +100,8 @@ TEST(TemporalBlend, MeanColourFollowsTheDateContinuously) {
   const DayNumber first = *parseIsoDate("2004-01-01"), last = *parseIsoDate("2004-05-01");
   for (DayNumber date = first; date <= last; date += 1.0) {
     engine->date() = date;
-    const std::array<double, 3> mean = meanColour(Image{kSize, kSize, readPixels(engine->renderComplete(kSize, kSize).frame())});
+    const std::array<double, 3> mean =
+        meanColour(Image{kSize, kSize, readPixels(engine->renderComplete(kSize, kSize).frame())});
     const std::array<double, 3> expected = expectedColour(date);
     for (std::size_t c = 0; c < 3; ++c) {
       worst = std::max(worst, std::abs(mean[c] - expected[c]));
@@ -131,7 +133,8 @@ TEST(TemporalBlend, PagesOnlyTheBracketingStepsAndOneBeyondEachSide) {
 
   engine->load(writeSeries(directory.path(), colours, months, 1024, near));
   // Within the year two months show and one beyond each is prefetched; at its end there is no month beyond.
-  for (const auto& [date, steps] : {std::pair{"2004-06-01", 4}, {"2004-06-20", 4}, {"2004-11-30", 3}, {"2004-12-20", 2}}) {
+  for (const auto& [date, steps] :
+       {std::pair{"2004-06-01", 4}, {"2004-06-20", 4}, {"2004-11-30", 3}, {"2004-12-20", 2}}) {
     engine->date() = *parseIsoDate(date);
     engine->renderComplete(kSize, kSize);
     const PageCacheStatistics series = engine->pageCacheStatistics();
@@ -152,7 +155,8 @@ TEST(TemporalBlend, HeightsBlendInTheGeometry) {
   }
   const Camera camera{.lon = 0, .lat = 0, .altitude = 1.2e7, .heading = 0, .tilt = 0, .fov = 30};
   std::ofstream(directory.path() / "heights.yaml")
-      << "strata: 1\nbody: {name: Mars, radius: 3396190}\ndate: 2004-01-01\nnodes:\n" << nodes
+      << "strata: 1\nbody: {name: Mars, radius: 3396190}\ndate: 2004-01-01\nnodes:\n"
+      << nodes
       << "  series: {type: composite.temporal_blend, steps: [low, high], dates: [2004-01-01, 2004-01-11]}\n"
          "  globe: {type: geometry.icosahedral, height: series, lowest: 0, highest: 300000}\n"
          "  frame: {type: output.image, geometry: globe, shading: none}\n";
@@ -166,7 +170,8 @@ TEST(TemporalBlend, HeightsBlendInTheGeometry) {
     const double radius = body.radius + 30000.0 * day;
     int differing = 0;
     for (int y = 0; y < kSize; ++y)
-      for (int x = 0; x < kSize; ++x) differing += covered(image, x, y) != raycastSphere(view, radius, x, y).has_value();
+      for (int x = 0; x < kSize; ++x)
+        differing += covered(image, x, y) != raycastSphere(view, radius, x, y).has_value();
     const double outline = 2.0 * 3.14159265 * discRadiusPixels(view, radius, body.radius + camera.altitude);
     std::printf("day %.1f: %d pixels differ from the sphere's outline of %.0f\n", day, differing, outline);
     EXPECT_LE(differing, 0.25 * outline) << "day " << day;

@@ -59,10 +59,12 @@ TEST(TemporalSeries, YearlySeriesWrapsFromDecemberToJanuaryOfAnyYear) {
 TEST(TemporalSeries, ShowsTheBracketAndPrefetchesTheStepBeyondEachSide) {
   using enum PageDemand;
   const TemporalSeries plain(kQuarters, false), yearly(kQuarters, true);
-  EXPECT_EQ(plain.demands(plain.at(day("2004-05-01"))), (std::vector<PageDemand>{Prefetched, Shown, Shown, Prefetched}));
+  EXPECT_EQ(plain.demands(plain.at(day("2004-05-01"))),
+            (std::vector<PageDemand>{Prefetched, Shown, Shown, Prefetched}));
   EXPECT_EQ(plain.demands(plain.at(day("2004-02-01"))), (std::vector<PageDemand>{Shown, Shown, Prefetched, Idle}));
   EXPECT_EQ(plain.demands(plain.at(day("2005-01-01"))), (std::vector<PageDemand>{Idle, Idle, Prefetched, Shown}));
-  EXPECT_EQ(yearly.demands(yearly.at(day("2004-12-01"))), (std::vector<PageDemand>{Shown, Prefetched, Prefetched, Shown}));
+  EXPECT_EQ(yearly.demands(yearly.at(day("2004-12-01"))),
+            (std::vector<PageDemand>{Shown, Prefetched, Prefetched, Shown}));
   const TemporalSeries single({day("2004-01-01")}, true);
   EXPECT_EQ(single.demands(single.at(day("2004-06-01"))), (std::vector<PageDemand>{Shown}));
 }

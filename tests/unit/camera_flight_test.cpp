@@ -15,7 +15,9 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 
 glm::dvec3 groundPoint(const Camera& camera) { return unitNormal(camera.lon * kDegree, camera.lat * kDegree); }
-double arc(const glm::dvec3& a, const glm::dvec3& b) { return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b)); }
+double arc(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+}
 
 // From a mountain in the Alps to one in the Andes, 5 km up at both ends.
 CameraFlight alpsToAndes() {

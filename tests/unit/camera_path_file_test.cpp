@@ -59,33 +59,37 @@ TEST(CameraPathFileTest, ReadsAFlight) {
 }
 
 TEST(CameraPathFileTest, NamesKeyframeTimesThatDoNotIncrease) {
-  expectError("strata-path: 1\n"
-              "keyframes:\n"
-              "  - {time: 5, lon: 0, lat: 20, altitude: 2.0e7}\n"
-              "  - {time: 5, lon: 10, lat: 46, altitude: 5000}\n",
-              4, 12, "keyframe 2's time, 5 s, is not later than the keyframe before's, 5 s");
+  expectError(
+      "strata-path: 1\n"
+      "keyframes:\n"
+      "  - {time: 5, lon: 0, lat: 20, altitude: 2.0e7}\n"
+      "  - {time: 5, lon: 10, lat: 46, altitude: 5000}\n",
+      4, 12, "keyframe 2's time, 5 s, is not later than the keyframe before's, 5 s");
 }
 
 TEST(CameraPathFileTest, SuggestsTheNearestKeyForAnUnknownOne) {
-  expectError("strata-path: 1\n"
-              "keyframes:\n"
-              "  - {time: 0, lon: 0, lat: 20, altitude: 2.0e7}\n"
-              "  - {time: 1, lon: 10, lat: 46, altitdue: 5000}\n",
-              4, 33, "unknown key 'altitdue' in keyframe 2; did you mean 'altitude'?");
+  expectError(
+      "strata-path: 1\n"
+      "keyframes:\n"
+      "  - {time: 0, lon: 0, lat: 20, altitude: 2.0e7}\n"
+      "  - {time: 1, lon: 10, lat: 46, altitdue: 5000}\n",
+      4, 33, "unknown key 'altitdue' in keyframe 2; did you mean 'altitude'?");
   expectError("strata-path: 1\nkeyframe: []\n", 2, 1, "did you mean 'keyframes'?");
 }
 
 TEST(CameraPathFileTest, NamesAMissingField) {
-  expectError("strata-path: 1\n"
-              "keyframes:\n"
-              "  - {time: 0, lon: 0, altitude: 2.0e7}\n"
-              "  - {time: 1, lon: 10, lat: 46, altitude: 5000}\n",
-              3, 5, "keyframe 1 has no 'lat'");
-  expectError("strata-path: 1\n"
-              "keyframes:\n"
-              "  - {lon: 0, lat: 0, altitude: 2.0e7}\n"
-              "  - {time: 1, lon: 10, lat: 46, altitude: 5000}\n",
-              3, 5, "keyframe 1 has no 'time'");
+  expectError(
+      "strata-path: 1\n"
+      "keyframes:\n"
+      "  - {time: 0, lon: 0, altitude: 2.0e7}\n"
+      "  - {time: 1, lon: 10, lat: 46, altitude: 5000}\n",
+      3, 5, "keyframe 1 has no 'lat'");
+  expectError(
+      "strata-path: 1\n"
+      "keyframes:\n"
+      "  - {lon: 0, lat: 0, altitude: 2.0e7}\n"
+      "  - {time: 1, lon: 10, lat: 46, altitude: 5000}\n",
+      3, 5, "keyframe 1 has no 'time'");
   expectError("strata-path: 1\nfly_to: {from: {lon: 0, lat: 0, altitude: 1e6}, duration: 3}\n", 2, 9,
               "'fly_to' has no 'to'");
   expectError("keyframes: []\n", 1, 1, "no 'strata-path' format version");
@@ -102,9 +106,10 @@ TEST(CameraPathFileTest, NamesValuesOutOfRange) {
               "keyframe 1 'tilt'");
   expectError("strata-path: 1\nkeyframes:\n  - {time: 0, lon: 0, lat: 9, altitude: high}\n" + second, 3, 41,
               "keyframe 1 'altitude' expects a number");
-  expectError("strata-path: 1\nfly_to: {from: {lon: 0, lat: 0, altitude: 1e6}, to: {lon: 1, lat: 0, altitude: 1},"
-              " duration: -3}\n",
-              2, 94, "'fly_to' 'duration' must be > 0 s");
+  expectError(
+      "strata-path: 1\nfly_to: {from: {lon: 0, lat: 0, altitude: 1e6}, to: {lon: 1, lat: 0, altitude: 1},"
+      " duration: -3}\n",
+      2, 94, "'fly_to' 'duration' must be > 0 s");
 }
 
 TEST(CameraPathFileTest, NamesWhatMakesNoPath) {
@@ -113,9 +118,10 @@ TEST(CameraPathFileTest, NamesWhatMakesNoPath) {
               "'keyframes' has 1; a path needs at least two");
   expectError("strata-path: 1\nkeyframes: {time: 0}\n", 2, 12, "'keyframes' must be a list of cameras");
   expectError("strata-path: 1\n", 1, 1, "neither 'keyframes' nor 'fly_to'");
-  expectError("strata-path: 1\nkeyframes:\n  - {time: 0, lon: 0, lat: 10, altitude: 1}\n"
-              "  - {time: 1, lon: 180, lat: -10, altitude: 1}\n",
-              4, 5, "antipodal");
+  expectError(
+      "strata-path: 1\nkeyframes:\n  - {time: 0, lon: 0, lat: 10, altitude: 1}\n"
+      "  - {time: 1, lon: 180, lat: -10, altitude: 1}\n",
+      4, 5, "antipodal");
   expectError("strata-path: 1\nkeyframes: [\n", 3, 1, "invalid YAML");
   expectError("", 0, 0, "the path file is empty");
 }

@@ -77,8 +77,8 @@ TEST(CameraPathTest, IsContinuousWithContinuousVelocityAcrossKeyframes) {
   constexpr double step = 1e-4;  // s
   for (const double knot : {4.0, 10.0}) {
     const double jump = velocityJump(path, knot, step), finer = velocityJump(path, knot, step / 10.0);
-    std::printf("t = %g s: relative change of the track's velocity over 2 x %g s: %.2e, over 2 x %g s: %.2e\n",
-                knot, step, jump, step / 10.0, finer);
+    std::printf("t = %g s: relative change of the track's velocity over 2 x %g s: %.2e, over 2 x %g s: %.2e\n", knot,
+                step, jump, step / 10.0, finer);
     EXPECT_LT(jump, 1e-3) << "t = " << knot;
     EXPECT_NEAR(finer / jump, 0.1, 0.01) << "t = " << knot;
     const Camera before = path.at(knot - step), at = path.at(knot), after = path.at(knot + step);
@@ -143,7 +143,8 @@ TEST(CameraPathTest, KeyframesOnOneGreatCircleKeepTheTrackOnIt) {
                           std::asin(middle.z) * 180.0 / std::numbers::pi, 1e5);
   const CameraPath path = CameraPath::throughKeyframes({{0.0, a}, {3.0, b}, {4.0, c}});
   double farthest = 0.0;
-  for (int i = 0; i <= 4000; ++i) farthest = std::max(farthest, std::abs(glm::dot(groundPoint(path.at(i * 1e-3)), normal)));
+  for (int i = 0; i <= 4000; ++i)
+    farthest = std::max(farthest, std::abs(glm::dot(groundPoint(path.at(i * 1e-3)), normal)));
   std::printf("farthest from the great circle: %.2e rad\n", farthest);
   EXPECT_LT(farthest, 1e-14);  // rad: 64 nm on the Earth
 }

@@ -71,7 +71,8 @@ TEST_F(PipelineBuilderTest, ItsYamlIsAPipelineFileOfTheSamePipeline) {
 }
 
 TEST_F(PipelineBuilderTest, OverridesApplyAsToAFile) {
-  const Pipeline built = exampleBuilder(directory_.path()).build(registry_, {"camera.altitude=5000", "nodes.relief.scale=20"});
+  const Pipeline built =
+      exampleBuilder(directory_.path()).build(registry_, {"camera.altitude=5000", "nodes.relief.scale=20"});
   EXPECT_DOUBLE_EQ(built.camera.altitude, 5000.0);
   EXPECT_DOUBLE_EQ(built.find("relief")->parameters.real("scale"), 20.0);
   EXPECT_EQ(built.find("relief")->parameters.where("scale").file, "--set");

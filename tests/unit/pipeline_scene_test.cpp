@@ -104,7 +104,8 @@ TEST_F(SceneTest, TiltOutOfRange) {
 TEST_F(SceneTest, FieldOfViewKeepsWithinWhatFloatDraws) {
   EXPECT_EQ(parseError(withSection("camera: {fov: 180}")).problem(),
             "camera 'fov' must be in [0.001, 179] deg, got 180 deg");
-  EXPECT_EQ(parseError(withSection("camera: {fov: 0}")).problem(), "camera 'fov' must be in [0.001, 179] deg, got 0 deg");
+  EXPECT_EQ(parseError(withSection("camera: {fov: 0}")).problem(),
+            "camera 'fov' must be in [0.001, 179] deg, got 0 deg");
   EXPECT_EQ(parseError(withSection("camera: {fov: 1e-8}")).problem(),
             "camera 'fov' must be in [0.001, 179] deg, got 1e-8 deg");
   EXPECT_EQ(parseError(withSection("camera: {fov: 1e-320}")).problem(),
@@ -146,7 +147,8 @@ TEST_F(SceneTest, BodyRadiusKeepsWithinWhatFloatDraws) {
   EXPECT_EQ(error.problem(), "body 'radius' must be in [1, 1e+09] m, got -1 m");
   EXPECT_EQ(error.where().line, 2);
   EXPECT_EQ(error.where().column, 28);
-  EXPECT_EQ(parseError(withSection("body: {radius: 1e14}")).problem(), "body 'radius' must be in [1, 1e+09] m, got 1e14 m");
+  EXPECT_EQ(parseError(withSection("body: {radius: 1e14}")).problem(),
+            "body 'radius' must be in [1, 1e+09] m, got 1e14 m");
   EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Sun, radius: 6.957e8}")).body.radius, 6.957e8);
 }
 

@@ -20,11 +20,12 @@
 namespace strata::test {
 namespace {
 
-const char* kRelief = "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
-                      "  heights: {type: source.procedural, kind: height}\n"
-                      "  shaded: {type: composite.relief, height: heights, exaggeration: 20, blend: alone}\n"
-                      "  globe: {type: geometry.icosahedral}\n"
-                      "  frame: {type: output.image, geometry: globe, surface: [shaded], shading: none}\n";
+const char* kRelief =
+    "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
+    "  heights: {type: source.procedural, kind: height}\n"
+    "  shaded: {type: composite.relief, height: heights, exaggeration: 20, blend: alone}\n"
+    "  globe: {type: geometry.icosahedral}\n"
+    "  frame: {type: output.image, geometry: globe, surface: [shaded], shading: none}\n";
 
 class ParameterPanelTest : public ::testing::Test {
  protected:

@@ -18,16 +18,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char* kGlobe = "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
-                     "  colours: {type: source.procedural, kind: color}\n"
-                     "  globe: {type: geometry.icosahedral}\n"
-                     "  frame: {type: output.image, geometry: globe, surface: [colours]}\n";
+const char* kGlobe =
+    "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
+    "  colours: {type: source.procedural, kind: color}\n"
+    "  globe: {type: geometry.icosahedral}\n"
+    "  frame: {type: output.image, geometry: globe, surface: [colours]}\n";
 
-const char* kFailingGlobe = "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
-                            "  colours: {type: source.procedural, kind: color}\n"
-                            "  faulty: {type: composite.faulty, layer: colours, fails: render}\n"
-                            "  globe: {type: geometry.icosahedral}\n"
-                            "  frame: {type: output.image, geometry: globe, surface: [faulty]}\n";
+const char* kFailingGlobe =
+    "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
+    "  colours: {type: source.procedural, kind: color}\n"
+    "  faulty: {type: composite.faulty, layer: colours, fails: render}\n"
+    "  globe: {type: geometry.icosahedral}\n"
+    "  frame: {type: output.image, geometry: globe, surface: [faulty]}\n";
 
 class ViewerFaults : public ::testing::Test {
  protected:
@@ -79,10 +81,11 @@ TEST_F(ViewerFaults, ANodeThatThrowsWhileRenderingIsSaidAndTheViewerGoesOn) {
 TEST_F(ViewerFaults, ARasterCutShortWhileShownCostsDetailNotTheViewer) {
   writeColourRaster(directory_.path() / "board.tif", 2048, 1024, {-180.0, -90.0, 180.0, 90.0},
                     [](int column, int row) { return cellColour(column / 256, row / 256); });
-  open("strata: 1\ncamera: {lon: 20, lat: -60, altitude: 3.0e6}\nnodes:\n"
-       "  board: {type: source.gdal, path: board.tif}\n"
-       "  globe: {type: geometry.icosahedral}\n"
-       "  frame: {type: output.image, geometry: globe, surface: [board]}\n");
+  open(
+      "strata: 1\ncamera: {lon: 20, lat: -60, altitude: 3.0e6}\nnodes:\n"
+      "  board: {type: source.gdal, path: board.tif}\n"
+      "  globe: {type: geometry.icosahedral}\n"
+      "  frame: {type: output.image, geometry: globe, surface: [board]}\n");
   const fs::path board = directory_.path() / "board.tif";
   fs::resize_file(board, fs::file_size(board) / 2);
   for (int i = 0; i < 40 && engine_->pageCacheStatistics().failed == 0; ++i) ASSERT_NE(viewer_->frame(), nullptr);

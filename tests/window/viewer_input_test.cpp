@@ -1,7 +1,7 @@
 // The viewer (issue 9) under Xvfb takes keyboard and mouse events sent to its window through the X server,
 // as a user's hands would send them (XTest): a left drag orbits, the wheel zooms toward the pointer, the
-// arrows orbit and + zooms, Home brings the pipeline's camera back; and the frame it shows is written as a screenshot that
-// reads back the same.
+// arrows orbit and + zooms, Home brings the pipeline's camera back; and the frame it shows is written as a screenshot
+// that reads back the same.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,10 +21,11 @@
 namespace strata::test {
 namespace {
 
-const char* kGlobe = "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
-                     "  colours: {type: source.procedural, kind: color}\n"
-                     "  globe: {type: geometry.icosahedral}\n"
-                     "  frame: {type: output.image, geometry: globe, surface: [colours]}\n";
+const char* kGlobe =
+    "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
+    "  colours: {type: source.procedural, kind: color}\n"
+    "  globe: {type: geometry.icosahedral}\n"
+    "  frame: {type: output.image, geometry: globe, surface: [colours]}\n";
 
 class ViewerInput : public ::testing::Test {
  protected:
@@ -128,7 +129,8 @@ TEST_F(ViewerInput, WritesTheFrameItShowsAsAScreenshot) {
   const Image shot = readImage(directory_.path() / "shot.png");
   EXPECT_EQ(shot.rgba, readPixels(frame->frame()));
   int planet = 0;
-  for (std::size_t i = 0; i < shot.rgba.size(); i += 4) planet += shot.rgba[i] + shot.rgba[i + 1] + shot.rgba[i + 2] > 0;
+  for (std::size_t i = 0; i < shot.rgba.size(); i += 4)
+    planet += shot.rgba[i] + shot.rgba[i + 1] + shot.rgba[i + 2] > 0;
   EXPECT_GT(planet, 1000) << "the globe in the shot";
 }
 

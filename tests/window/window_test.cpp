@@ -17,7 +17,8 @@ TEST(Window, ShowsTheRenderedFrame) {
   writeCheckerboard(directory.path() / "cells.tif");
   auto pipeline = directory.write("globe.yaml",
                                   "strata: 1\ncamera: {lon: 20, lat: 10, altitude: 1.2e7}\nnodes:\n"
-                                  "  cells: {type: source.gdal, path: " + (directory.path() / "cells.tif").string() +
+                                  "  cells: {type: source.gdal, path: " +
+                                      (directory.path() / "cells.tif").string() +
                                       "}\n  globe: {type: geometry.icosahedral}\n"
                                       "  frame: {type: output.image, geometry: globe, surface: [cells]}\n");
   GlfwWindow& window = sharedWindow();
@@ -29,7 +30,8 @@ TEST(Window, ShowsTheRenderedFrame) {
   Engine engine(options);
   engine.load(pipeline);
   const FrameOutput& frame = engine.render(width, height);
-  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBlitNamedFramebuffer(frame.frame().id(), 0, 0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT,
+                         GL_NEAREST);
 
   std::vector<unsigned char> shown(static_cast<std::size_t>(width) * height * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -37,7 +39,9 @@ TEST(Window, ShowsTheRenderedFrame) {
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, shown.data());
   std::vector<unsigned char> rendered = readPixels(frame.frame());  // top row first; shown is bottom-up
-  const auto at = [&](const std::vector<unsigned char>& pixels, int x, int row) { return pixels[(row * width + x) * 4]; };
+  const auto at = [&](const std::vector<unsigned char>& pixels, int x, int row) {
+    return pixels[(row * width + x) * 4];
+  };
   int planet = 0;
   for (int y = 0; y < height; y += 7)
     for (int x = 0; x < width; x += 7) {

@@ -46,13 +46,13 @@ class GreatCircleFlight final : public CameraPath::Motion {
   Camera at(double time) const override {
     const double fraction = time / flight_.duration;
     const double s = curve_.length() * fraction;
-    const glm::dvec2 lonLat = lonLatDegrees(
-        curve_.pans() ? slerp(from_, to_, std::clamp(curve_.ground(s) / distance_, 0.0, 1.0)) : from_);
+    const glm::dvec2 lonLat =
+        lonLatDegrees(curve_.pans() ? slerp(from_, to_, std::clamp(curve_.ground(s) / distance_, 0.0, 1.0)) : from_);
     Camera camera;
     camera.lon = lonLat.x;
     camera.lat = lonLat.y;
-    camera.heading = wrapHeading(ease(flight_.from.heading, nearestHeading(flight_.from.heading, flight_.to.heading),
-                                      fraction));
+    camera.heading =
+        wrapHeading(ease(flight_.from.heading, nearestHeading(flight_.from.heading, flight_.to.heading), fraction));
     camera.tilt = ease(flight_.from.tilt, flight_.to.tilt, fraction) * nadirFactor(fraction, curve_.width(s));
     camera.fov = ease(flight_.from.fov, flight_.to.fov, fraction);
     camera.altitude = curve_.width(s) / (2.0 * std::tan(camera.fov * std::numbers::pi / 360.0));

@@ -18,16 +18,15 @@ double interiorSlope(double hBefore, double secantBefore, double hAfter, double 
 
 double hermite(double y0, double m0, double y1, double m1, double u) {
   const double u2 = u * u, u3 = u2 * u;
-  return (2.0 * u3 - 3.0 * u2 + 1.0) * y0 + (u3 - 2.0 * u2 + u) * m0 + (-2.0 * u3 + 3.0 * u2) * y1 +
-         (u3 - u2) * m1;
+  return (2.0 * u3 - 3.0 * u2 + 1.0) * y0 + (u3 - 2.0 * u2 + u) * m0 + (-2.0 * u3 + 3.0 * u2) * y1 + (u3 - u2) * m1;
 }
 
 MonotoneCubic::MonotoneCubic(std::vector<double> times, std::vector<double> values)
     : times_(std::move(times)), values_(std::move(values)), slopes_(times_.size(), 0.0) {
   for (std::size_t k = 1; k + 1 < times_.size(); ++k) {
     const double hBefore = times_[k] - times_[k - 1], hAfter = times_[k + 1] - times_[k];
-    slopes_[k] = interiorSlope(hBefore, (values_[k] - values_[k - 1]) / hBefore, hAfter,
-                               (values_[k + 1] - values_[k]) / hAfter);
+    slopes_[k] =
+        interiorSlope(hBefore, (values_[k] - values_[k - 1]) / hBefore, hAfter, (values_[k + 1] - values_[k]) / hAfter);
   }
 }
 

@@ -37,8 +37,8 @@ void requireVersion(const YAML::Node& root, const SourceMap& source) {
   loader::requireKnownKeys(root, kTopLevelKeys, source, "a path file");
   const std::int64_t version = loader::readInteger(value, {source, "'strata-path' (the format version)", {}});
   if (version != kFormatVersion)
-    throw source.error(value, {}, "unsupported path format version " + std::to_string(version) +
-                                      "; this Strata reads version 1",
+    throw source.error(value, {},
+                       "unsupported path format version " + std::to_string(version) + "; this Strata reads version 1",
                        "write `strata-path: 1` and the rest of the file in format 1");
 }
 
@@ -52,7 +52,6 @@ CameraPath readBody(const YAML::Node& root, const SourceMap& source, const Body&
   throw source.error(root, {}, "the path has neither 'keyframes' nor 'fly_to'",
                      std::string("add a `keyframes:` list of cameras or a `fly_to:` map; ") + kExample);
 }
-
 
 }  // namespace
 

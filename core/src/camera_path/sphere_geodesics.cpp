@@ -41,7 +41,9 @@ glm::dvec3 exponential(const glm::dvec3& p, const glm::dvec3& v) {
   return std::cos(angle) * p + std::sin(angle) * (v / angle);
 }
 
-bool antipodal(const glm::dvec3& a, const glm::dvec3& b) { return arcAngle(a, b) > std::numbers::pi - kAntipodalMargin; }
+bool antipodal(const glm::dvec3& a, const glm::dvec3& b) {
+  return arcAngle(a, b) > std::numbers::pi - kAntipodalMargin;
+}
 
 glm::dvec2 lonLatDegrees(const glm::dvec3& unit) {
   double lon = degrees(std::atan2(unit.y, unit.x));

@@ -13,9 +13,9 @@ class ZoomPanCurve {
   ZoomPanCurve(double u1, double w0, double w1, double rho);
 
   double length() const { return length_; }  // S
-  bool pans() const { return pans_; }         // false over one point: a pure zoom, u = 0 throughout
-  double ground(double s) const;              // u(s), from 0 to u1
-  double width(double s) const;               // w(s), from w0 to w1
+  bool pans() const { return pans_; }        // false over one point: a pure zoom, u = 0 throughout
+  double ground(double s) const;             // u(s), from 0 to u1
+  double width(double s) const;              // w(s), from w0 to w1
 
  private:
   double w0_, w1_, rho_;

@@ -24,8 +24,8 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 // OCIO's GLSL for `processor`, as `vec4 functionName(vec4)`; refused where it needs textures (LUTs).
-std::string glslOf(const OCIO::ConstProcessorRcPtr& processor, const std::string& functionName,
-                   const std::string& what, const SourceLocation& where) {
+std::string glslOf(const OCIO::ConstProcessorRcPtr& processor, const std::string& functionName, const std::string& what,
+                   const SourceLocation& where) {
   OCIO::GpuShaderDescRcPtr shader = OCIO::GpuShaderDesc::CreateShaderDesc();
   shader->setLanguage(OCIO::GPU_LANGUAGE_GLSL_4_0);
   shader->setFunctionName(functionName.c_str());
@@ -56,15 +56,17 @@ ColourConfig ColourConfig::load(const std::filesystem::path& file, const SourceL
     impl->config->validate();
     return ColourConfig(std::move(impl), chosen.empty() ? "Strata's built-in config" : chosen.string());
   } catch (const OCIO::Exception& exception) {
-    throw Error(where, "OpenColorIO cannot use the config " + (chosen.empty() ? "built in" : "'" + chosen.string() + "'") +
-                           (file.empty() && !chosen.empty() ? " ($OCIO)" : "") + ": " + exception.what(),
+    throw Error(where,
+                "OpenColorIO cannot use the config " + (chosen.empty() ? "built in" : "'" + chosen.string() + "'") +
+                    (file.empty() && !chosen.empty() ? " ($OCIO)" : "") + ": " + exception.what(),
                 "check the config with `ociocheck --iconfig FILE`, or unset OCIO to use Strata's own");
   }
 }
 
 std::vector<std::string> ColourConfig::colourSpaces() const {
   std::vector<std::string> names;
-  for (int i = 0; i < impl_->config->getNumColorSpaces(); ++i) names.emplace_back(impl_->config->getColorSpaceNameByIndex(i));
+  for (int i = 0; i < impl_->config->getNumColorSpaces(); ++i)
+    names.emplace_back(impl_->config->getColorSpaceNameByIndex(i));
   return names;
 }
 

@@ -7,9 +7,9 @@
 
 #include <strata/engine.hpp>
 #include <strata/gl.hpp>
-#include <strata/output.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/log.hpp>
+#include <strata/output.hpp>
 #include <strata/page_cache.hpp>
 #include <strata/pipeline_builder.hpp>
 
@@ -29,10 +29,10 @@ struct Engine::Impl {
   ShaderLibrary shaders;
   std::unique_ptr<Pipeline> pipeline;
   std::optional<PipelineBuilder> builder;  // the pipeline's when it was built in code; none: read from its file
-  std::vector<std::string> overrides;  // the pipeline's, as load() and set() were given them
+  std::vector<std::string> overrides;      // the pipeline's, as load() and set() were given them
   std::unique_ptr<PageCache> pages;
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
-  HeightRange terrain;  // the graph's geometries' heights, settled when their nodes opened
+  HeightRange terrain;               // the graph's geometries' heights, settled when their nodes opened
   Camera camera;
   std::optional<DayNumber> date;
   FrameStatistics statistics;
@@ -50,11 +50,11 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 void reportPageFailure(const PageFailure& failure, std::set<std::string>& sourcesAdvised) {
   const std::string page = "level " + std::to_string(failure.key.level) + ", page " +
                            std::to_string(failure.key.column) + ", " + std::to_string(failure.key.row);
-  logWarning("cannot read '" + failure.source + "' (" + page + "): " + failure.reason +
-                 "; the coarser level stands in there",
-             sourcesAdvised.insert(failure.source).second
-                 ? "check that the file is complete and readable: gdalinfo -checksum '" + failure.source + "'"
-                 : "");
+  logWarning(
+      "cannot read '" + failure.source + "' (" + page + "): " + failure.reason + "; the coarser level stands in there",
+      sourcesAdvised.insert(failure.source).second
+          ? "check that the file is complete and readable: gdalinfo -checksum '" + failure.source + "'"
+          : "");
 }
 
 NodeDescription* findNode(Pipeline& pipeline, const std::string& id) {
@@ -162,8 +162,7 @@ const FrameOutput& Engine::render(int width, int height) { return renderFrame(wi
 
 const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
-  FrameState frame{&impl_->pipeline->body, view(width, height),
-                   impl_->statistics.frame, impl_->date, still};
+  FrameState frame{&impl_->pipeline->body, view(width, height), impl_->statistics.frame, impl_->date, still};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);

@@ -19,8 +19,9 @@ auto guardNode(const NodeDescription& node, const std::string& doing, Work&& wor
   } catch (const std::exception& failure) {
     throw Error(node.where, "node '" + node.id + "' (" + node.type + ") " + doing + ": " + failure.what());
   } catch (...) {
-    throw Error(node.where, "node '" + node.id + "' (" + node.type + ") " + doing +
-                                ": its plugin threw something that is no std::exception",
+    throw Error(node.where,
+                "node '" + node.id + "' (" + node.type + ") " + doing +
+                    ": its plugin threw something that is no std::exception",
                 "report it to the plugin's authors");
   }
 }

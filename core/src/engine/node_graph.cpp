@@ -61,8 +61,7 @@ void checkInputKinds(const NodeDescription& node, const NodeTypeDeclaration& typ
 
 }  // namespace
 
-NodeGraph::NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, WorkerPool& workers,
-                     GpuContext& gpu) {
+NodeGraph::NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, WorkerPool& workers, GpuContext& gpu) {
   make(pipeline, registry);
   open(workers);
   createResources(gpu);
@@ -72,8 +71,8 @@ void NodeGraph::make(const Pipeline& pipeline, const PluginRegistry& registry) {
   std::map<std::string, std::size_t> index;
   for (const NodeDescription& description : pipeline.nodes) {
     const NodeTypeDeclaration& type = *registry.find(description.type);
-    NodeSetup setup{description.id, description.where, description.parameters, {}, &pipeline.body,
-                    pipeline.directory, &registry, pipeline.date, pipeline.colour};
+    NodeSetup setup{description.id, description.where, description.parameters, {}, &pipeline.body, pipeline.directory,
+                    &registry,      pipeline.date,     pipeline.colour};
     int depth = 0;
     for (const auto& [port, ids] : description.inputs)
       for (const std::string& id : ids) {
@@ -96,7 +95,8 @@ void NodeGraph::open(WorkerPool& workers) {
     std::vector<std::function<void()>> tasks;
     for (Entry& entry : entries_)
       if (entry.depth == depth)
-        tasks.push_back([&entry] { guardNode(*entry.description, "could not read its data", [&] { entry.node->open(); }); });
+        tasks.push_back(
+            [&entry] { guardNode(*entry.description, "could not read its data", [&] { entry.node->open(); }); });
     workers.runAll(std::move(tasks));
   }
 }
@@ -109,7 +109,9 @@ void NodeGraph::createResources(GpuContext& gpu) {
 void NodeGraph::prepare(const FrameState& frame, WorkerPool& workers) {
   std::vector<std::function<void()>> tasks;
   for (Entry& entry : entries_)
-    tasks.push_back([&entry, &frame] { guardNode(*entry.description, "failed to prepare a frame", [&] { entry.node->prepare(frame); }); });
+    tasks.push_back([&entry, &frame] {
+      guardNode(*entry.description, "failed to prepare a frame", [&] { entry.node->prepare(frame); });
+    });
   workers.runAll(std::move(tasks));
 }
 

@@ -32,8 +32,11 @@ Framebuffer::~Framebuffer() {
 }
 
 Framebuffer::Framebuffer(Framebuffer&& other) noexcept
-    : id_(std::exchange(other.id_, 0)), width_(other.width_), height_(other.height_),
-      colors_(std::move(other.colors_)), depth_(std::move(other.depth_)) {}
+    : id_(std::exchange(other.id_, 0)),
+      width_(other.width_),
+      height_(other.height_),
+      colors_(std::move(other.colors_)),
+      depth_(std::move(other.depth_)) {}
 
 Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
   std::swap(id_, other.id_);

@@ -18,8 +18,9 @@ void GLAPIENTRY logGlMessage(GLenum, GLenum type, GLuint id, GLenum severity, GL
                              const void*) {
   bool important = type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH;
   if (!important && !verboseDebug) return;
-  logMessage({type == GL_DEBUG_TYPE_ERROR ? LogLevel::Error : LogLevel::Info,
-              "GL " + std::string(type == GL_DEBUG_TYPE_ERROR ? "error " : "message ") + std::to_string(id) + ": " + message});
+  logMessage(
+      {type == GL_DEBUG_TYPE_ERROR ? LogLevel::Error : LogLevel::Info,
+       "GL " + std::string(type == GL_DEBUG_TYPE_ERROR ? "error " : "message ") + std::to_string(id) + ": " + message});
 }
 
 }  // namespace

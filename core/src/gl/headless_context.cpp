@@ -34,9 +34,7 @@ class HeadlessContext : public GlContext {
   std::string description_;
 };
 
-bool hasClientExtension(const char* name) {
-  return epoxy_has_egl_extension(EGL_NO_DISPLAY, name);
-}
+bool hasClientExtension(const char* name) { return epoxy_has_egl_extension(EGL_NO_DISPLAY, name); }
 
 // Devices in the order to try them: hardware first, Mesa's software device last.
 std::vector<EGLDeviceEXT> eglDevices() {
@@ -62,9 +60,15 @@ EGLContext createCoreContext(EGLDisplay display, bool debug) {
   EGLConfig config = nullptr;
   EGLint configs = 0;
   if (!eglChooseConfig(display, configAttributes, &config, 1, &configs) || configs < 1) config = nullptr;
-  const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                      EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                      EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE, EGL_NONE};
+  const EGLint contextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                      4,
+                                      EGL_CONTEXT_MINOR_VERSION,
+                                      5,
+                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                      EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                      EGL_CONTEXT_OPENGL_DEBUG,
+                                      debug ? EGL_TRUE : EGL_FALSE,
+                                      EGL_NONE};
   return eglCreateContext(display, config, EGL_NO_CONTEXT, contextAttributes);
 }
 
@@ -77,14 +81,12 @@ std::unique_ptr<GlContext> tryDisplay(EGLDisplay display, const std::string& pla
   }
   EGLContext context = createCoreContext(display, debug);
   if (context == EGL_NO_CONTEXT) {
-    attempts += "\n  " + platform + ": no OpenGL 4.5 core context (EGL error " +
-                std::to_string(eglGetError()) + ")";
+    attempts += "\n  " + platform + ": no OpenGL 4.5 core context (EGL error " + std::to_string(eglGetError()) + ")";
     eglTerminate(display);
     return nullptr;
   }
   const char* vendor = eglQueryString(display, EGL_VENDOR);
-  auto result = std::make_unique<HeadlessContext>(display, context,
-                                                  platform + " (" + (vendor ? vendor : "?") + ")");
+  auto result = std::make_unique<HeadlessContext>(display, context, platform + " (" + (vendor ? vendor : "?") + ")");
   result->makeCurrent();
   keepLoadedLibrariesResident();
   return result;

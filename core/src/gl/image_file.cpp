@@ -69,14 +69,14 @@ void writeImage(const std::filesystem::path& file, int width, int height, const 
   if (!memory || !driver)
     throw Error(where, std::string("this GDAL has no ") + driverName + " driver", "install Debian's libgdal");
   std::unique_ptr<GDALDataset> image(memory->Create("", width, height, 4, GDT_Byte, nullptr));
-  CPLErr status = image->RasterIO(GF_Write, 0, 0, width, height, const_cast<unsigned char*>(rgba.data()), width,
-                                  height, GDT_Byte, 4, nullptr, 4, 4 * width, 1);
+  CPLErr status = image->RasterIO(GF_Write, 0, 0, width, height, const_cast<unsigned char*>(rgba.data()), width, height,
+                                  GDT_Byte, 4, nullptr, 4, 4 * width, 1);
   if (status != CE_None) throw Error(where, "could not stage the image for writing: " + lastGdalError());
   std::error_code ignored;
   if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ignored);
   CPLErrorReset();
   CPLSetThreadLocalConfigOption("GDAL_PAM_ENABLED", "NO");  // no .aux.xml side-car beside the image
-  CPLPushErrorHandler(CPLQuietErrorHandler);                 // the failure is reported once, below
+  CPLPushErrorHandler(CPLQuietErrorHandler);                // the failure is reported once, below
   std::unique_ptr<GDALDataset> written(driver->CreateCopy(file.c_str(), image.get(), FALSE, nullptr, nullptr, nullptr));
   written.reset();  // closing flushes the file
   CPLPopErrorHandler();

@@ -21,7 +21,8 @@ const std::string& ShaderLibrary::source(const std::string& name) const {
   return found->second;
 }
 
-std::string ShaderLibrary::expand(const std::string& name, const std::map<std::string, std::string>& substitutions) const {
+std::string ShaderLibrary::expand(const std::string& name,
+                                  const std::map<std::string, std::string>& substitutions) const {
   std::string text = source(name);
   for (const auto& [token, replacement] : substitutions)
     for (auto at = text.find(token); at != std::string::npos; at = text.find(token, at + replacement.size()))

@@ -29,8 +29,6 @@ Texture& Texture::operator=(Texture&& other) noexcept {
   return *this;
 }
 
-int mipLevels(int width, int height) {
-  return std::bit_width(static_cast<unsigned>(std::max(width, height)));
-}
+int mipLevels(int width, int height) { return std::bit_width(static_cast<unsigned>(std::max(width, height))); }
 
 }  // namespace strata

@@ -47,8 +47,8 @@ glm::dvec3 rimPoint(const SphericalCap& cap, double angle, double turn) {
 
 }  // namespace
 
-BlockCaps::BlockCaps(BlockLayout layout, std::vector<BlockValues> values, RasterGeoreference georeference,
-                     bool repeatX, bool coversBody)
+BlockCaps::BlockCaps(BlockLayout layout, std::vector<BlockValues> values, RasterGeoreference georeference, bool repeatX,
+                     bool coversBody)
     : layout_(layout), georeference_(std::move(georeference)), repeatX_(repeatX), coversBody_(coversBody) {
   Level blocks;
   for (int row = 0; row < layout_.rows(); ++row)
@@ -116,7 +116,8 @@ void BlockCaps::gather(std::size_t level, int column, int row, const SphericalCa
     return;
   }
   for (int y = 2 * row; y < std::min(2 * row + 2, rowsAt(level - 1)); ++y)
-    for (int x = 2 * column; x < std::min(2 * column + 2, columnsAt(level - 1)); ++x) gather(level - 1, x, y, cap, found);
+    for (int x = 2 * column; x < std::min(2 * column + 2, columnsAt(level - 1)); ++x)
+      gather(level - 1, x, y, cap, found);
 }
 
 BlockValues BlockCaps::within(const SphericalCap& cap) const {
@@ -143,7 +144,8 @@ bool BlockCaps::holdsWhole(const SphericalCap& cap) const {
   };
   if (!inside(cap.centre)) return false;
   for (int i = 0; i < kRimSamples; ++i)
-    if (!inside(rimPoint(cap, std::min(cap.angle * kRimMargin, std::numbers::pi), 2.0 * std::numbers::pi * i / kRimSamples)))
+    if (!inside(rimPoint(cap, std::min(cap.angle * kRimMargin, std::numbers::pi),
+                         2.0 * std::numbers::pi * i / kRimSamples)))
       return false;
   return true;
 }

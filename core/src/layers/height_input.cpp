@@ -28,7 +28,10 @@ std::optional<double> given(const NodeSetup& setup, const std::string& name) {
 }  // namespace
 
 PortDeclaration HeightInput::port() {
-  return {.name = "height", .type = PortType::Layer, .kinds = {LayerKind::Height}, .optional = true,
+  return {.name = "height",
+          .type = PortType::Layer,
+          .kinds = {LayerKind::Height},
+          .optional = true,
           .doc = "heights in metres above the body's radius; none: the bare sphere"};
 }
 
@@ -37,11 +40,15 @@ PortDeclaration HeightInput::port() {
 // terrain only costs culling.
 std::vector<ParameterDeclaration> HeightInput::parameters() {
   return {
-      {.name = "lowest", .type = ParameterType::Real, .units = "m",
+      {.name = "lowest",
+       .type = ParameterType::Real,
+       .units = "m",
        .doc = "no height lies below this; culling and reference spheres trust it (unset: the height layer's least, "
               "or 0 if that is higher)",
        .optional = true},
-      {.name = "highest", .type = ParameterType::Real, .units = "m",
+      {.name = "highest",
+       .type = ParameterType::Real,
+       .units = "m",
        .doc = "no height lies above this; culling and reference spheres trust it (unset: the height layer's "
               "greatest, or 0 if that is lower)",
        .optional = true},
@@ -100,9 +107,9 @@ void HeightInput::checkGivenHold(const ValueRange& known) const {
 std::map<std::string, std::string> HeightInput::substitutions() const {
   if (!layer_) return {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}};
   const std::string byFace = layer_->faceSamplingFunction();
-  return {{"STRATA_PROGRAM_DEFINES",
-           "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + layer_->samplingFunction() +
-               (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace)},
+  return {{"STRATA_PROGRAM_DEFINES", "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " +
+                                         layer_->samplingFunction() +
+                                         (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace)},
           {"STRATA_HEIGHT_LAYER_GLSL", layer_->glslOnce()}};
 }
 

@@ -10,8 +10,9 @@ std::vector<const Layer*> layersOfOneKind(const std::vector<Node*>& nodes, const
   for (Node* node : nodes) layers.push_back(node->layer());
   for (const Layer* layer : layers)
     if (layer->kind() != layers.front()->kind())
-      throw Error(where, "the " + what + " are of different kinds (" + toString(layers.front()->kind()) + " and " +
-                             toString(layer->kind()) + "), which cannot be blended",
+      throw Error(where,
+                  "the " + what + " are of different kinds (" + toString(layers.front()->kind()) + " and " +
+                      toString(layer->kind()) + "), which cannot be blended",
                   "give " + what + " of one kind: heights with heights, colours with colours");
   return layers;
 }

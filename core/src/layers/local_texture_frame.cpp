@@ -48,10 +48,12 @@ bool differentiate(Samples& f, LocalTextureFrame& frame, bool periodicU) {
   const double h = kFirstStep, k = kSecondStep;
   const glm::dvec2 lon = difference(f(h, 0.0), f(-h, 0.0), periodicU) / (2.0 * h);
   const glm::dvec2 lat = difference(f(0.0, h), f(0.0, -h), periodicU) / (2.0 * h);
-  const glm::dvec2 lonLon = (difference(f(k, 0.0), centre, periodicU) + difference(f(-k, 0.0), centre, periodicU)) / (k * k);
-  const glm::dvec2 latLat = (difference(f(0.0, k), centre, periodicU) + difference(f(0.0, -k), centre, periodicU)) / (k * k);
-  const glm::dvec2 lonLat = (difference(f(k, k), f(k, -k), periodicU) - difference(f(-k, k), f(-k, -k), periodicU)) /
-                            (4.0 * k * k);
+  const glm::dvec2 lonLon =
+      (difference(f(k, 0.0), centre, periodicU) + difference(f(-k, 0.0), centre, periodicU)) / (k * k);
+  const glm::dvec2 latLat =
+      (difference(f(0.0, k), centre, periodicU) + difference(f(0.0, -k), centre, periodicU)) / (k * k);
+  const glm::dvec2 lonLat =
+      (difference(f(k, k), f(k, -k), periodicU) - difference(f(-k, k), f(-k, -k), periodicU)) / (4.0 * k * k);
   frame.uv = centre;
   frame.jacobian = glm::dmat2(lon, lat);
   frame.hessianU = glm::dmat2(lonLon.x, lonLat.x, lonLat.x, latLat.x);
@@ -79,7 +81,8 @@ bool agrees(const LocalTextureFrame& frame, Samples& f, double reach, glm::dvec2
 }  // namespace
 
 glm::dvec2 LocalTextureFrame::at(glm::dvec2 offset) const {
-  return uv + jacobian * offset + 0.5 * glm::dvec2(glm::dot(offset, hessianU * offset), glm::dot(offset, hessianV * offset));
+  return uv + jacobian * offset +
+         0.5 * glm::dvec2(glm::dot(offset, hessianU * offset), glm::dot(offset, hessianV * offset));
 }
 
 glm::dvec2 lonlatOfTangentOffset(glm::dvec2 reference, glm::dvec2 eastNorth) {

@@ -21,12 +21,18 @@ void PagedRasterLayer::attach(PageCache& cache, std::shared_ptr<const PageSource
 
 std::string PagedRasterLayer::glsl() const {
   const std::string& p = prefix();
-  return samplingGlsl("#include \"strata/paged_texture.glsl\"\n"
-                      "#include \"" + pageAtlasInclude(placement_.format) + "\"\n"
-                      "uniform uint " + p + "_indexBase;\n"
-                      "uniform int " + p + "_levels;\n",
-                      "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p +
-                          "_levels, " + p + "_size, " + p + "_texel(at, p), stepX, stepY, repeatX)") +
+  return samplingGlsl(
+             "#include \"strata/paged_texture.glsl\"\n"
+             "#include \"" +
+                 pageAtlasInclude(placement_.format) +
+                 "\"\n"
+                 "uniform uint " +
+                 p +
+                 "_indexBase;\n"
+                 "uniform int " +
+                 p + "_levels;\n",
+             "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p + "_levels, " + p +
+                 "_size, " + p + "_texel(at, p), stepX, stepY, repeatX)") +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 
@@ -37,15 +43,21 @@ std::string PagedRasterLayer::faceSamplingFunction() const { return onHealpixFac
 // own face, filter the same texels with the same weights (its own edge texel and the border's, half and half).
 std::string PagedRasterLayer::faceSamplingGlsl() const {
   const std::string& p = prefix();
-  return "vec4 " + p + "_face(vec3 point, float footprint) {\n"
-         "  float nside = float(" + p + "_size.y);\n"
+  return "vec4 " + p +
+         "_face(vec3 point, float footprint) {\n"
+         "  float nside = float(" +
+         p +
+         "_size.y);\n"
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
-         "  return " + p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + p +
-         "_indexBase, " + p + "_levels, " + p + "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
+         "  return " +
+         p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p +
+         "_levels, " + p +
+         "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
          "}\n";
 }
 
-std::optional<ValueRange> PagedRasterLayer::faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const {
+std::optional<ValueRange> PagedRasterLayer::faceNodeValues(int face, int level, std::int64_t ix,
+                                                           std::int64_t iy) const {
   if (!pageRanges_) return std::nullopt;
   const healpix::PageRanges::Range raw = pageRanges_->overNode(face, level, ix, iy);
   if (raw.least > raw.greatest) return ValueRange{};  // no data at all: the sphere

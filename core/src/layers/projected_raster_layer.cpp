@@ -54,7 +54,8 @@ std::optional<ValueRange> ProjectedRasterLayer::valuesWithin(const SphericalCap&
   const BlockValues found = blockCaps_->within(cap);
   std::optional<ValueRange> values;
   if (found.counted()) values = transformed(found.least, found.greatest);
-  if (found.gaps) values = values ? ValueRange{std::min(values->least, 0.0), std::max(values->greatest, 0.0)} : ValueRange{};
+  if (found.gaps)
+    values = values ? ValueRange{std::min(values->least, 0.0), std::max(values->greatest, 0.0)} : ValueRange{};
   return values.value_or(ValueRange{});
 }
 
@@ -102,33 +103,67 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
   const std::string& p = prefix_;
   const Projection& projection = *georeference_.projection;
   const bool colour = isColour(kind_);
-  const std::string value = colour ? "vec4(t.rgb / t.a, t.a)"
-                                   : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
+  const std::string value = colour
+                                ? "vec4(t.rgb / t.a, t.a)"
+                                : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
   const std::string coverage = colour ? "t.a" : "t.g";
   return "#include \"strata/projected_raster.glsl\"\n"
-         "#include \"" + projection.glslInclude() + "\"\n"
-         "uniform vec4 " + p + "_projectionA;\n"
-         "uniform vec4 " + p + "_projectionB;\n"
-         "uniform vec4 " + p + "_mapToTexture;\n"
-         "uniform vec2 " + p + "_scaleOffset;\n"
-         "uniform bool " + p + "_repeatX;\n"
-         "uniform ivec2 " + p + "_size;\n" +
-         declarations +
-         "vec3 " + p + "_coordinates(vec2 lonlat) {\n"
-         "  vec3 m = " + projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p + "_projectionB);\n"
-         "  return vec3(m.xy * " + p + "_mapToTexture.xz + " + p + "_mapToTexture.yw, m.z);\n"
+         "#include \"" +
+         projection.glslInclude() +
+         "\"\n"
+         "uniform vec4 " +
+         p +
+         "_projectionA;\n"
+         "uniform vec4 " +
+         p +
+         "_projectionB;\n"
+         "uniform vec4 " +
+         p +
+         "_mapToTexture;\n"
+         "uniform vec2 " +
+         p +
+         "_scaleOffset;\n"
+         "uniform bool " +
+         p +
+         "_repeatX;\n"
+         "uniform ivec2 " +
+         p + "_size;\n" + declarations + "vec3 " + p +
+         "_coordinates(vec2 lonlat) {\n"
+         "  vec3 m = " +
+         projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p +
+         "_projectionB);\n"
+         "  return vec3(m.xy * " +
+         p + "_mapToTexture.xz + " + p +
+         "_mapToTexture.yw, m.z);\n"
          "}\n"
-         "vec2 " + p + "_absoluteStep(vec3 at, vec2 lonlat, vec2 step) {\n"
-         "  return footprintStep(at, " + p + "_coordinates(steppedLonlat(lonlat, step)),\n"
-         "                       " + p + "_coordinates(steppedLonlat(lonlat, -step)), " + p + "_repeatX);\n"
-         "}\n" + relativeGlsl() + texelGlsl() +
-         "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n"
-         "vec4 " + p + "(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_at(p);\n"
-         "  bool repeatX = " + p + "_repeatX;\n"
+         "vec2 " +
+         p +
+         "_absoluteStep(vec3 at, vec2 lonlat, vec2 step) {\n"
+         "  return footprintStep(at, " +
+         p +
+         "_coordinates(steppedLonlat(lonlat, step)),\n"
+         "                       " +
+         p + "_coordinates(steppedLonlat(lonlat, -step)), " + p +
+         "_repeatX);\n"
+         "}\n" +
+         relativeGlsl() + texelGlsl() + "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
+         " : vec4(0.0); }\n"
+         "vec4 " +
+         p +
+         "(SurfacePoint p) {\n"
+         "  vec3 at = " +
+         p +
+         "_at(p);\n"
+         "  bool repeatX = " +
+         p +
+         "_repeatX;\n"
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
-         "  vec2 uv = at.xy, stepX = " + p + "_step(at, p, p.lonlatDx), stepY = " + p + "_step(at, p, p.lonlatDy);\n"
-         "  return " + p + "_value(" + filtered + ");\n"
+         "  vec2 uv = at.xy, stepX = " +
+         p + "_step(at, p, p.lonlatDx), stepY = " + p +
+         "_step(at, p, p.lonlatDy);\n"
+         "  return " +
+         p + "_value(" + filtered +
+         ");\n"
          "}\n";
 }
 
@@ -140,59 +175,131 @@ std::string ProjectedRasterLayer::relativeGlsl() const {
   const std::string& p = prefix_;
   return "#include \"strata/local_offsets.glsl\"\n"
          "#include \"strata/texel_address.glsl\"\n"
-         "uniform vec2 " + p + "_referenceUv;\n"
-         "uniform ivec2 " + p + "_referenceTexel;\n"
-         "uniform vec2 " + p + "_referenceFraction;\n"
-         "uniform bool " + p + "_tangent;\n"
-         "uniform vec2 " + p + "_referenceLatitude;\n"
-         "uniform vec4 " + p + "_jacobian;\n"
-         "uniform vec4 " + p + "_hessianU;\n"
-         "uniform vec4 " + p + "_hessianV;\n"
-         "uniform float " + p + "_reach;\n"
-         "vec2 " + p + "_offset(SurfacePoint p) {\n"
-         "  return " + p + "_tangent ? tangentOffset(p.fromReference, " + p + "_referenceLatitude) : p.fromReference;\n"
+         "uniform vec2 " +
+         p +
+         "_referenceUv;\n"
+         "uniform ivec2 " +
+         p +
+         "_referenceTexel;\n"
+         "uniform vec2 " +
+         p +
+         "_referenceFraction;\n"
+         "uniform bool " +
+         p +
+         "_tangent;\n"
+         "uniform vec2 " +
+         p +
+         "_referenceLatitude;\n"
+         "uniform vec4 " +
+         p +
+         "_jacobian;\n"
+         "uniform vec4 " +
+         p +
+         "_hessianU;\n"
+         "uniform vec4 " +
+         p +
+         "_hessianV;\n"
+         "uniform float " +
+         p +
+         "_reach;\n"
+         "vec2 " +
+         p +
+         "_offset(SurfacePoint p) {\n"
+         "  return " +
+         p + "_tangent ? tangentOffset(p.fromReference, " + p +
+         "_referenceLatitude) : p.fromReference;\n"
          "}\n"
-         "bool " + p + "_near(SurfacePoint p) {\n"
-         "  vec2 d = " + p + "_offset(p);\n"
-         "  return dot(d, d) < " + p + "_reach * " + p + "_reach;\n"
+         "bool " +
+         p +
+         "_near(SurfacePoint p) {\n"
+         "  vec2 d = " +
+         p +
+         "_offset(p);\n"
+         "  return dot(d, d) < " +
+         p + "_reach * " + p +
+         "_reach;\n"
          "}\n"
-         "vec2 " + p + "_curvature(vec2 d, vec2 step) {\n"
-         "  return vec2(dot(mat2(" + p + "_hessianU) * d, step), dot(mat2(" + p + "_hessianV) * d, step));\n"
+         "vec2 " +
+         p +
+         "_curvature(vec2 d, vec2 step) {\n"
+         "  return vec2(dot(mat2(" +
+         p + "_hessianU) * d, step), dot(mat2(" + p +
+         "_hessianV) * d, step));\n"
          "}\n"
-         "vec2 " + p + "_fromReference(vec2 d) {\n"
-         "  return mat2(" + p + "_jacobian) * d + 0.5 * " + p + "_curvature(d, d);\n"
+         "vec2 " +
+         p +
+         "_fromReference(vec2 d) {\n"
+         "  return mat2(" +
+         p + "_jacobian) * d + 0.5 * " + p +
+         "_curvature(d, d);\n"
          "}\n"
-         "vec3 " + p + "_at(SurfacePoint p) {\n"
-         "  if (!" + p + "_near(p)) return " + p + "_coordinates(p.lonlat);\n"
-         "  return vec3(" + p + "_referenceUv + " + p + "_fromReference(" + p + "_offset(p)), 1.0);\n"
+         "vec3 " +
+         p +
+         "_at(SurfacePoint p) {\n"
+         "  if (!" +
+         p + "_near(p)) return " + p +
+         "_coordinates(p.lonlat);\n"
+         "  return vec3(" +
+         p + "_referenceUv + " + p + "_fromReference(" + p +
+         "_offset(p)), 1.0);\n"
          "}\n"
-         "TexelAddress " + p + "_texel(vec3 at, SurfacePoint p) {\n"
-         "  if (!" + p + "_near(p)) return texelAddressOf(at.xy * vec2(" + p + "_size));\n"
-         "  return TexelAddress(" + p + "_referenceTexel,\n"
-         "                      " + p + "_referenceFraction + " + p + "_fromReference(" + p + "_offset(p)) * vec2(" + p + "_size));\n"
+         "TexelAddress " +
+         p +
+         "_texel(vec3 at, SurfacePoint p) {\n"
+         "  if (!" +
+         p + "_near(p)) return texelAddressOf(at.xy * vec2(" + p +
+         "_size));\n"
+         "  return TexelAddress(" +
+         p +
+         "_referenceTexel,\n"
+         "                      " +
+         p + "_referenceFraction + " + p + "_fromReference(" + p + "_offset(p)) * vec2(" + p +
+         "_size));\n"
          "}\n"
-         "vec2 " + p + "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) {\n"
-         "  if (!" + p + "_near(p)) return " + p + "_absoluteStep(at, p.lonlat, lonlatStep);\n"
-         "  vec2 step = " + p + "_tangent ? tangentStep(p.fromReference, " + p + "_referenceLatitude, lonlatStep)\n"
+         "vec2 " +
+         p +
+         "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) {\n"
+         "  if (!" +
+         p + "_near(p)) return " + p +
+         "_absoluteStep(at, p.lonlat, lonlatStep);\n"
+         "  vec2 step = " +
+         p + "_tangent ? tangentStep(p.fromReference, " + p +
+         "_referenceLatitude, lonlatStep)\n"
          "                          : lonlatStep;\n"
-         "  return mat2(" + p + "_jacobian) * step + " + p + "_curvature(" + p + "_offset(p), step);\n"
+         "  return mat2(" +
+         p + "_jacobian) * step + " + p + "_curvature(" + p +
+         "_offset(p), step);\n"
          "}\n";
 }
 
 // Where the layer's texels land, for compositors: texelStepsFunction() and edgeDistanceFunction().
 std::string ProjectedRasterLayer::texelGlsl() const {
   const std::string& p = prefix_;
-  return "vec4 " + p + "_texelSteps(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_at(p);\n"
-         "  if (!insideTexture(at, " + p + "_repeatX)) return vec4(0.0);\n"
-         "  return vec4(" + p + "_step(at, p, p.lonlatDx) * vec2(" + p + "_size), " + p +
-         "_step(at, p, p.lonlatDy) * vec2(" + p + "_size));\n"
+  return "vec4 " + p +
+         "_texelSteps(SurfacePoint p) {\n"
+         "  vec3 at = " +
+         p +
+         "_at(p);\n"
+         "  if (!insideTexture(at, " +
+         p +
+         "_repeatX)) return vec4(0.0);\n"
+         "  return vec4(" +
+         p + "_step(at, p, p.lonlatDx) * vec2(" + p + "_size), " + p + "_step(at, p, p.lonlatDy) * vec2(" + p +
+         "_size));\n"
          "}\n"
-         "float " + p + "_edgeDistance(SurfacePoint p) {\n"
-         "  vec3 at = " + p + "_at(p);\n"
+         "float " +
+         p +
+         "_edgeDistance(SurfacePoint p) {\n"
+         "  vec3 at = " +
+         p +
+         "_at(p);\n"
          "  if (at.z <= 0.0) return -1.0;\n"
-         "  vec4 edges = edgeDistances(" + p + "_texel(at, p), " + p + "_size);\n"
-         "  float across = " + p + "_repeatX ? 1e30 : min(edges.x, edges.z);\n"
+         "  vec4 edges = edgeDistances(" +
+         p + "_texel(at, p), " + p +
+         "_size);\n"
+         "  float across = " +
+         p +
+         "_repeatX ? 1e30 : min(edges.x, edges.z);\n"
          "  return min(across, min(edges.y, edges.w));\n"
          "}\n";
 }

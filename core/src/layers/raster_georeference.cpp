@@ -15,7 +15,8 @@ RasterGeoreference makeGeoreference(std::unique_ptr<Projection> projection, cons
 }
 
 std::array<double, 6> geographicGeotransform(const GeographicExtent& extent, int width, int height) {
-  return {extent.west, (extent.east - extent.west) / width, 0.0, extent.north, 0.0, (extent.south - extent.north) / height};
+  return {extent.west, (extent.east - extent.west) / width,   0.0, extent.north,
+          0.0,         (extent.south - extent.north) / height};
 }
 
 RasterGeoreference geographicGeoreference(const PluginRegistry& plugins, const GeographicExtent& extent, int width,

@@ -42,7 +42,8 @@ SphericalCap joined(const SphericalCap& a, const SphericalCap& b) {
   if (apart + b.angle <= a.angle) return a;
   if (apart + a.angle <= b.angle) return b;
   const double angle = 0.5 * (apart + a.angle + b.angle);
-  if (angle >= std::numbers::pi || apart == 0.0) return {a.centre, std::min(std::max(angle, a.angle), std::numbers::pi)};
+  if (angle >= std::numbers::pi || apart == 0.0)
+    return {a.centre, std::min(std::max(angle, a.angle), std::numbers::pi)};
   // Turn a's centre toward b's by (angle - a.angle), in their common plane.
   const glm::dvec3 toward = glm::normalize(b.centre - glm::dot(a.centre, b.centre) * a.centre);
   const double turn = angle - a.angle;

@@ -42,8 +42,6 @@ void logMessage(const LogMessage& message) {
     std::fprintf(stderr, "%s\n", formatted(message).c_str());
 }
 
-void logWarning(std::string text, std::string fix) {
-  logMessage({LogLevel::Warning, std::move(text), std::move(fix)});
-}
+void logWarning(std::string text, std::string fix) { logMessage({LogLevel::Warning, std::move(text), std::move(fix)}); }
 
 }  // namespace strata

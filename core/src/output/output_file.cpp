@@ -44,7 +44,8 @@ fs::path directoryOf(const fs::path& target) {
   std::error_code error;
   fs::create_directories(directory, error);
   if (error)
-    throw Error(SourceLocation{target.string()}, "cannot create the folder " + quoted(directory) + ": " + error.message(),
+    throw Error(SourceLocation{target.string()},
+                "cannot create the folder " + quoted(directory) + ": " + error.message(),
                 "choose an output in a folder you can write to");
   return directory;
 }
@@ -54,7 +55,8 @@ void rename(const fs::path& from, const fs::path& to, bool replace) {
   const int status = replace ? std::rename(from.c_str(), to.c_str())
                              : renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE);
   if (status != 0)
-    throw Error(SourceLocation{to.string()}, "cannot move the finished file into place: " + std::string(std::strerror(errno)),
+    throw Error(SourceLocation{to.string()},
+                "cannot move the finished file into place: " + std::string(std::strerror(errno)),
                 errno == EEXIST ? "a file of that name appeared while it was written: choose another name, or pass "
                                   "--overwrite"
                                 : "check that the folder is writable");
@@ -83,10 +85,10 @@ ScratchDirectory::ScratchDirectory(const fs::path& target) {
   const std::string name = "." + target.filename().string().substr(0, 200) + ".strata-XXXXXX";
   std::string pattern = (directoryOf(target) / name).string();
   if (!mkdtemp(pattern.data()))
-    throw Error(SourceLocation{target.string()},
-                "cannot write " + quoted(target) + ": no scratch folder can be made beside it (" +
-                    std::strerror(errno) + ")",
-                "choose an output in a folder you can write to");
+    throw Error(
+        SourceLocation{target.string()},
+        "cannot write " + quoted(target) + ": no scratch folder can be made beside it (" + std::strerror(errno) + ")",
+        "choose an output in a folder you can write to");
   path_ = pattern;
   const std::lock_guard lock(scratchRegistry().mutex);
   scratchRegistry().directories.insert(path_);

@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstddef>
 #include <span>
+#include <strata/export.hpp>
 
 #include <strata/page_source.hpp>
 

@@ -15,7 +15,8 @@ namespace {
 // the debug output that reports GL errors is muted around the request.
 template <typename Request>
 bool outOfMemory(Request&& request) {
-  while (glGetError() != GL_NO_ERROR) {}
+  while (glGetError() != GL_NO_ERROR) {
+  }
   const bool debugging = glIsEnabled(GL_DEBUG_OUTPUT);
   glDisable(GL_DEBUG_OUTPUT);
   request();

@@ -1,9 +1,9 @@
 #include <algorithm>
-#include <string>
 #include <map>
 #include <mutex>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 
 #include <strata/gl/shader_program.hpp>
@@ -84,7 +84,7 @@ PagedLayerPlacement PageCache::attach(std::shared_ptr<const PageSource> source, 
   if (impl_->loader) throw std::logic_error("PageCache::attach() after the first update()");
   const PagePyramid& pyramid = source->pyramid();
   const PagedLayerPlacement placement{int(impl_->layers.size()), impl_->index.add(pyramid), pyramid.levels(),
-                                      pyramid.width(), pyramid.height(), source->format()};
+                                      pyramid.width(),           pyramid.height(),          source->format()};
   impl_->layers.push_back({std::move(source), georeference, wrapX, {}, {}});
   return placement;
 }
@@ -118,7 +118,8 @@ void PageCache::waitForLoads() const {
 void PageCache::bind(ShaderProgram& program, TextureUnits& units) const {
   units.bind(program, "strata_pageIndex", impl_->index.texture());
   for (const auto& [format, atlas] : impl_->atlases)
-    if (program.location(pageAtlasSampler(format)) >= 0) units.bind(program, pageAtlasSampler(format), atlas->texture());
+    if (program.location(pageAtlasSampler(format)) >= 0)
+      units.bind(program, pageAtlasSampler(format), atlas->texture());
 }
 
 const PageCacheStatistics& PageCache::statistics() const { return impl_->statistics; }
@@ -128,8 +129,7 @@ std::vector<PageFailure> PageCache::takeFailures() { return std::exchange(impl_-
 // Pages that fit each format's atlas once the upload ring, the pages held between read and upload and
 // the index are paid for; the rest of the budget is shared among the formats by their numbers of layers.
 std::map<PageFormat, int> PageCache::Impl::capacities() const {
-  const std::uint64_t fixed =
-      (std::uint64_t(settings.uploadsPerFrame) + pagesHeldOnCpu()) * kPageBytes + index.bytes();
+  const std::uint64_t fixed = (std::uint64_t(settings.uploadsPerFrame) + pagesHeldOnCpu()) * kPageBytes + index.bytes();
   const std::uint64_t pages = settings.budgetBytes > fixed ? (settings.budgetBytes - fixed) / kPageBytes : 0;
   std::map<PageFormat, int> layersOf;
   for (const AttachedLayer& layer : layers) ++layersOf[layer.source->format()];
@@ -168,7 +168,8 @@ void PageCache::Impl::allocate() {
   for (const auto& [format, capacity] : capacities()) {
     int coarsest = 0;
     for (const AttachedLayer& layer : layers)
-      if (layer.source->format() == format) coarsest += int(layer.source->pyramid().pageCount(layer.source->pyramid().levels() - 1));
+      if (layer.source->format() == format)
+        coarsest += int(layer.source->pyramid().pageCount(layer.source->pyramid().levels() - 1));
     if (capacity < coarsest)
       throw Error(settings.where,
                   "the page cache budget of " + std::to_string(settings.budgetBytes >> 20) + " MiB holds " +
@@ -180,13 +181,13 @@ void PageCache::Impl::allocate() {
   index.allocate();
   uploads = std::make_unique<paging::PageUploads>(settings.uploadsPerFrame);
   for (AttachedLayer& layer : layers) layer.toSceneLinear = sceneLinear.add(*layer.source);
-  loader = std::make_unique<paging::PageLoader>(
-      settings.loaderThreads, std::size_t(settings.uploadsPerFrame + settings.loaderThreads),
-      [this](const LayerPage& page, std::vector<std::byte>& texels) {
-        const AttachedLayer& layer = layers[std::size_t(page.layer)];
-        texels.resize(kPageBytes);
-        paging::assemblePage(*layer.source, page.key, layer.wrapX, texels);
-      });
+  loader = std::make_unique<paging::PageLoader>(settings.loaderThreads,
+                                                std::size_t(settings.uploadsPerFrame + settings.loaderThreads),
+                                                [this](const LayerPage& page, std::vector<std::byte>& texels) {
+                                                  const AttachedLayer& layer = layers[std::size_t(page.layer)];
+                                                  texels.resize(kPageBytes);
+                                                  paging::assemblePage(*layer.source, page.key, layer.wrapX, texels);
+                                                });
   loadCoarsest();
 }
 
@@ -197,7 +198,8 @@ void PageCache::Impl::loadCoarsest() {
     const PagePyramid& pyramid = layers[i].source->pyramid();
     const int top = pyramid.levels() - 1;
     for (int row = 0; row < pyramid.pagesDown(top); ++row)
-      for (int column = 0; column < pyramid.pagesAcross(top); ++column) coarsest.push_back({int(i), {top, column, row}});
+      for (int column = 0; column < pyramid.pagesAcross(top); ++column)
+        coarsest.push_back({int(i), {top, column, row}});
   }
   loader->replaceQueue(coarsest);
   while (loader->outstanding() > 0) {
@@ -208,7 +210,8 @@ void PageCache::Impl::loadCoarsest() {
 
 // The pages the view needs of the layers not idle, every shown layer's before any prefetched one's, so that
 // prefetching only fills the room the shown layers leave.
-std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view, const HeightRange& terrain) {
+std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view,
+                                                        const HeightRange& terrain) {
   std::vector<paging::SelectableLayer> selectable;
   std::vector<std::pair<int, bool>> attached;  // per selectable: its layer, and whether it is shown
   {

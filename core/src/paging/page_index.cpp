@@ -99,8 +99,8 @@ void PageIndex::upload() {
   if (dirtyBegin_ >= dirtyEnd_ || !texture_) return;
   const int firstRow = int(dirtyBegin_ / kIndexWidth), lastRow = int((dirtyEnd_ - 1) / kIndexWidth);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage2D(texture_, 0, 0, firstRow, kIndexWidth, lastRow - firstRow + 1, GL_RED_INTEGER,
-                      GL_UNSIGNED_INT, entries_.data() + std::size_t(firstRow) * kIndexWidth);
+  glTextureSubImage2D(texture_, 0, 0, firstRow, kIndexWidth, lastRow - firstRow + 1, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                      entries_.data() + std::size_t(firstRow) * kIndexWidth);
   dirtyBegin_ = dirtyEnd_ = 0;
 }
 

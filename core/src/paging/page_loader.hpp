@@ -58,7 +58,7 @@ class PageLoader {
   std::size_t maxHeld_;
   mutable std::mutex mutex_;
   mutable std::condition_variable_any changed_;
-  std::vector<LayerPage> queue_;       // most wanted first
+  std::vector<LayerPage> queue_;  // most wanted first
   std::set<LayerPage> reading_;
   std::vector<LoadedPage> finished_;
   std::size_t peakHeld_ = 0;

@@ -24,10 +24,10 @@ struct Viewing {
   const View& view;
   double tanHalfHeight;
   double tanHalfWidth;
-  double pixelAngle;   // rad per pixel, vertically
-  glm::dvec2 nadir;    // lon/lat (rad) below the eye
-  double altitude;     // m above the ground level distances are measured to
-  double groundRadius;  // m: that level's sphere
+  double pixelAngle;                   // rad per pixel, vertically
+  glm::dvec2 nadir;                    // lon/lat (rad) below the eye
+  double altitude;                     // m above the ground level distances are measured to
+  double groundRadius;                 // m: that level's sphere
   double lowestRadius, highestRadius;  // m: the spheres the terrain lies between
 };
 
@@ -35,9 +35,15 @@ Viewing viewingOf(const Body& body, const View& view, const HeightRange& terrain
   const double tanHalfHeight = std::tan(0.5 * view.verticalFov);
   const double aspect = double(view.width) / double(std::max(1, view.height));
   const double r = glm::length(view.eye), ground = groundLevelNear(terrain, r - body.radius);
-  return {body, view, tanHalfHeight, tanHalfHeight * aspect, view.verticalFov / double(std::max(1, view.height)),
+  return {body,
+          view,
+          tanHalfHeight,
+          tanHalfHeight * aspect,
+          view.verticalFov / double(std::max(1, view.height)),
           {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / r, -1.0, 1.0))},
-          std::abs(r - body.radius - ground), body.radius + ground, body.radius + terrain.lowest,
+          std::abs(r - body.radius - ground),
+          body.radius + ground,
+          body.radius + terrain.lowest,
           body.radius + terrain.highest};
 }
 

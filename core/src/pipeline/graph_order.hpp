@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstddef>
+#include <strata/export.hpp>
 #include <vector>
 
 // Ordering a pipeline's nodes so that every node comes after its inputs.

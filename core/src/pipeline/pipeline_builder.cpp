@@ -115,7 +115,8 @@ std::string PipelineBuilder::yaml() const {
 }
 
 Pipeline PipelineBuilder::build(const PluginRegistry& registry, const std::vector<std::string>& overrides) const {
-  return loader::readPipelineDocument(YAML::Clone(document_->root), {{}, name_, directory_, false}, overrides, registry);
+  return loader::readPipelineDocument(YAML::Clone(document_->root), {{}, name_, directory_, false}, overrides,
+                                      registry);
 }
 
 }  // namespace strata

@@ -111,7 +111,8 @@ Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fil
 
 Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                       const PluginRegistry& registry) {
-  return parsePipeline(loader::readTextFile(file, "pipeline", "pipelines/ holds ready-made pipelines"), file, overrides, registry);
+  return parsePipeline(loader::readTextFile(file, "pipeline", "pipelines/ holds ready-made pipelines"), file, overrides,
+                       registry);
 }
 
 const NodeDescription* Pipeline::find(const std::string& id) const {

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <string_view>
 #include <vector>

@@ -79,15 +79,15 @@ class Equirectangular final : public Projection {
 std::unique_ptr<Projection> createEquirectangular(const ProjParameters& terms, const Ellipsoid& ellipsoid) {
   checkEllipsoid(ellipsoid);
   if (!plainFrame(terms)) return nullptr;
-  EquirectangularForm form{.geographic = terms.name() != "eqc", .lon0 = terms.real("lon_0", 0.0),
-                           .ellipsoid = ellipsoid};
+  EquirectangularForm form{
+      .geographic = terms.name() != "eqc", .lon0 = terms.real("lon_0", 0.0), .ellipsoid = ellipsoid};
   if (form.geographic) return std::make_unique<Equirectangular>(form);
   form.lat0 = latitudeTerm(terms, "lat_0");
   form.latTs = latitudeTerm(terms, "lat_ts");
   if (std::abs(form.latTs) == 90.0)
-    throw projectionError("+proj=eqc with" + term("lat_ts", form.latTs) +
-                              " has no extent in x: it is true to scale at the pole",
-                          "give the latitude where the map is true to scale, |lat_ts| < 90, e.g. +lat_ts=0");
+    throw projectionError(
+        "+proj=eqc with" + term("lat_ts", form.latTs) + " has no extent in x: it is true to scale at the pole",
+        "give the latitude where the map is true to scale, |lat_ts| < 90, e.g. +lat_ts=0");
   form.origin = falseOrigin(terms);
   return std::make_unique<Equirectangular>(form);
 }

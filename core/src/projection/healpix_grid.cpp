@@ -146,8 +146,8 @@ std::uint64_t gatherBits(std::uint64_t value) {
 }
 
 std::int64_t toNested(std::int64_t nside, const FacePixel& pixel) {
-  const auto bits = spreadBits(static_cast<std::uint64_t>(pixel.ix)) |
-                    (spreadBits(static_cast<std::uint64_t>(pixel.iy)) << 1);
+  const auto bits =
+      spreadBits(static_cast<std::uint64_t>(pixel.ix)) | (spreadBits(static_cast<std::uint64_t>(pixel.iy)) << 1);
   return pixel.face * nside * nside + static_cast<std::int64_t>(bits);
 }
 
@@ -190,8 +190,8 @@ std::int64_t toRing(std::int64_t nside, const FacePixel& pixel) {
   const auto face = static_cast<std::size_t>(pixel.face);
   const Ring r = ring(nside, kSouthCornerRing[face] * nside - pixel.ix - pixel.iy - 1);
   const std::int64_t perTurn = 4 * r.perQuarter;
-  const std::int64_t halfSteps = kCentreLongitude[face] * r.perQuarter + pixel.ix - pixel.iy -
-                                 (r.shifted ? 1 : 0) + 2 * perTurn;
+  const std::int64_t halfSteps =
+      kCentreLongitude[face] * r.perQuarter + pixel.ix - pixel.iy - (r.shifted ? 1 : 0) + 2 * perTurn;
   return r.first + (halfSteps / 2) % perTurn;
 }
 
@@ -326,11 +326,15 @@ std::optional<FacePoint> faceOfPlane(glm::dvec2 xy) {
   // A point on a polar triangle's edge, or rounded to just beside it, floors into the gap next to the
   // triangle; within kEdgeSlack it belongs to the face below (north) or above (south) the gap.
   if (descendingFloor - ascendingFloor == 2.0) {
-    if (descending - descendingFloor <= kEdgeSlack) descendingFloor -= 1.0;
-    else if (ascendingFloor + 1.0 - ascending <= kEdgeSlack) ascendingFloor += 1.0;
+    if (descending - descendingFloor <= kEdgeSlack)
+      descendingFloor -= 1.0;
+    else if (ascendingFloor + 1.0 - ascending <= kEdgeSlack)
+      ascendingFloor += 1.0;
   } else if (ascendingFloor - descendingFloor == 2.0) {
-    if (ascending - ascendingFloor <= kEdgeSlack) ascendingFloor -= 1.0;
-    else if (descendingFloor + 1.0 - descending <= kEdgeSlack) descendingFloor += 1.0;
+    if (ascending - ascendingFloor <= kEdgeSlack)
+      ascendingFloor -= 1.0;
+    else if (descendingFloor + 1.0 - descending <= kEdgeSlack)
+      descendingFloor += 1.0;
   }
   const int face = faceOfEdgeLines(static_cast<int>(ascendingFloor), static_cast<int>(descendingFloor));
   if (face < 0) return std::nullopt;

@@ -84,8 +84,10 @@ PageRanges::PageRanges(std::int64_t nside, const std::vector<Range>& finest)
   std::vector<Level> all;
   for (int level = 0; level < levels; ++level) {
     if (level > 0) undilated = coarser(undilated, pagesAcross(nside, level - 1));
-    if (undilated.size() <= kMostStoredPages) all.push_back(widened(undilated, pagesAcross(nside, level)));
-    else finestStored_ = level + 1;
+    if (undilated.size() <= kMostStoredPages)
+      all.push_back(widened(undilated, pagesAcross(nside, level)));
+    else
+      finestStored_ = level + 1;
   }
   levels_ = std::move(all);
 }
@@ -131,8 +133,8 @@ PageRanges::Range PageRanges::whole() const {
       continue;
     }
     const bool first = all.least > all.greatest;
-    all = {first ? page.least : std::min(all.least, page.least), first ? page.greatest : std::max(all.greatest, page.greatest),
-           all.uncovered || page.uncovered};
+    all = {first ? page.least : std::min(all.least, page.least),
+           first ? page.greatest : std::max(all.greatest, page.greatest), all.uncovered || page.uncovered};
   }
   return all;
 }

@@ -28,8 +28,8 @@ std::array<double, 6> stripGeotransform(std::int64_t nside) {
 
 std::array<double, 6> windowGeotransform(std::int64_t nside, const FaceWindow& window) {
   const double texel = 1.0 / double(nside);
-  return {double(window.face) + double(window.column) * texel, texel, 0.0, 1.0 - double(window.row) * texel, 0.0,
-          -texel};
+  return {
+      double(window.face) + double(window.column) * texel, texel, 0.0, 1.0 - double(window.row) * texel, 0.0, -texel};
 }
 
 std::string windowItem(const FaceWindow& window) {
@@ -59,12 +59,17 @@ glm::ivec2 texelAcross(int side, int face, glm::ivec2 texel) {
   const glm::ivec2 local(texel.x - face * side, texel.y);
   const glm::ivec2 inside = glm::clamp(local, glm::ivec2(0), glm::ivec2(side - 1));
   const glm::dvec2 centre((inside.x + 0.5) / side, 1.0 - (inside.y + 0.5) / side);
-  const glm::dvec2 edge(local.x < 0 ? 0.0 : local.x >= side ? 1.0 : centre.x,
-                        local.y < 0 ? 1.0 : local.y >= side ? 0.0 : centre.y);
+  const glm::dvec2 edge(local.x < 0       ? 0.0
+                        : local.x >= side ? 1.0
+                                          : centre.x,
+                        local.y < 0       ? 1.0
+                        : local.y >= side ? 0.0
+                                          : centre.y);
   constexpr double kNudge = 1e-3;
   const glm::dvec3 onEdge = unitVectorOf(face, edge);
   const glm::dvec3 beyond = onEdge + kNudge * (onEdge - unitVectorOf(face, centre));
-  const FacePoint beside = facePoint({std::atan2(beyond.y, beyond.x), std::atan2(beyond.z, std::hypot(beyond.x, beyond.y))});
+  const FacePoint beside =
+      facePoint({std::atan2(beyond.y, beyond.x), std::atan2(beyond.z, std::hypot(beyond.x, beyond.y))});
   const int column = std::clamp(int(std::floor(beside.x * side)), 0, side - 1);
   const int row = std::clamp(int(std::floor((1.0 - beside.y) * side)), 0, side - 1);
   return {beside.face * side + column, row};

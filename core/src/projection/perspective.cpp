@@ -21,8 +21,8 @@ struct PerspectiveForm {
   double height = 0.0;   // of the camera above the surface, m
   double lat0 = 0.0;
   double lon0 = 0.0;
-  double tilt = 0.0;     // away from the nadir
-  double azimuth = 0.0;  // of the tilt, clockwise from north
+  double tilt = 0.0;       // away from the nadir
+  double azimuth = 0.0;    // of the tilt, clockwise from north
   glm::dvec2 origin{0.0};  // false easting and northing, m
   Ellipsoid ellipsoid;
 };
@@ -47,9 +47,8 @@ class Perspective final : public Projection {
 
   std::string projString() const override {
     const std::string tilt = form_.projName == "tpers" ? term("tilt", form_.tilt) + term("azi", form_.azimuth) : "";
-    return "+proj=" + form_.projName + term("h", form_.height) + term("lat_0", form_.lat0) +
-           term("lon_0", form_.lon0) + tilt + term("x_0", form_.origin.x) + term("y_0", form_.origin.y) +
-           ellipsoidTerms(form_.ellipsoid);
+    return "+proj=" + form_.projName + term("h", form_.height) + term("lat_0", form_.lat0) + term("lon_0", form_.lon0) +
+           tilt + term("x_0", form_.origin.x) + term("y_0", form_.origin.y) + ellipsoidTerms(form_.ellipsoid);
   }
 
   std::optional<glm::dvec2> forward(glm::dvec2 lonlat) const override {
@@ -78,7 +77,7 @@ class Perspective final : public Projection {
     const double discriminant = height_ * height_ - glm::dot(*plane, *plane) * height_ * (height_ + 2.0);
     if (!(discriminant >= 0.0)) return std::nullopt;  // beyond the horizon
     const double t = height_ * (height_ + 2.0) / ((1.0 + height_) * height_ + std::sqrt(discriminant));
-    const glm::dvec3 local(t * *plane, 1.0 + height_ - t * height_);  // east, north, up
+    const glm::dvec3 local(t * *plane, 1.0 + height_ - t * height_);    // east, north, up
     const double meridional = local.z * cosLat0_ - local.y * sinLat0_;  // towards (0, lon0) on the equator
     const double lat = std::atan2(local.z * sinLat0_ + local.y * cosLat0_, std::hypot(local.x, meridional));
     return glm::dvec2(wrapLongitude(lon0_ + std::atan2(local.x, meridional), 0.0), lat);
@@ -101,7 +100,7 @@ class Perspective final : public Projection {
   // The tilted camera's view of a point of the vertical plane, empty behind the camera.
   std::optional<glm::dvec2> tilted(glm::dvec2 plane) const {
     const double along = plane.y * cosAzimuth_ + plane.x * sinAzimuth_;  // towards the azimuth
-    const double depth = along * sinTilt_ / height_ + cosTilt_;  // in front of the camera
+    const double depth = along * sinTilt_ / height_ + cosTilt_;          // in front of the camera
     if (!(depth > 0.0)) return std::nullopt;
     return glm::dvec2((plane.x * cosAzimuth_ - plane.y * sinAzimuth_) * cosTilt_, along) / depth;
   }
@@ -131,9 +130,12 @@ class Perspective final : public Projection {
 std::unique_ptr<Projection> createPerspective(const ProjParameters& terms, const Ellipsoid& ellipsoid) {
   checkEllipsoid(ellipsoid);
   if (!plainFrame(terms)) return nullptr;
-  PerspectiveForm form{.projName = terms.name(), .height = terms.real("h", 0.0),
-                       .lat0 = latitudeTerm(terms, "lat_0"), .lon0 = terms.real("lon_0", 0.0),
-                       .origin = falseOrigin(terms), .ellipsoid = ellipsoid};
+  PerspectiveForm form{.projName = terms.name(),
+                       .height = terms.real("h", 0.0),
+                       .lat0 = latitudeTerm(terms, "lat_0"),
+                       .lon0 = terms.real("lon_0", 0.0),
+                       .origin = falseOrigin(terms),
+                       .ellipsoid = ellipsoid};
   if (!(form.height > 0.0))
     throw projectionError("the camera height" + term("h", form.height) + " m is not above the surface",
                           "give +h, the camera's height above the surface in metres, e.g. +h=35786000");

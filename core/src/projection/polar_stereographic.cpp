@@ -13,11 +13,11 @@ namespace {
 
 // The mapping as the CRS defines it (angles in degrees, as PROJ writes them).
 struct PolarStereographicForm {
-  double pole = 1.0;             // +1: north polar aspect, -1: south
-  std::optional<double> latTs;   // true-scale latitude; absent: k0 is the scale at the pole
+  double pole = 1.0;            // +1: north polar aspect, -1: south
+  std::optional<double> latTs;  // true-scale latitude; absent: k0 is the scale at the pole
   double k0 = 1.0;
   double lon0 = 0.0;
-  glm::dvec2 origin{0.0};        // false easting and northing, m
+  glm::dvec2 origin{0.0};  // false easting and northing, m
   Ellipsoid ellipsoid;
 };
 
@@ -109,8 +109,11 @@ std::unique_ptr<Projection> createStereographic(const ProjParameters& terms, con
   if (!plainFrame(terms)) return nullptr;
   const double lat0 = latitudeTerm(terms, "lat_0");
   if (azimuthalAspect(lat0) == ProjectionAspect::Other) return nullptr;  // oblique and equatorial aspects
-  PolarStereographicForm form{.pole = lat0 > 0.0 ? 1.0 : -1.0, .k0 = scaleFactorTerm(terms),
-                              .lon0 = terms.real("lon_0", 0.0), .origin = falseOrigin(terms), .ellipsoid = ellipsoid};
+  PolarStereographicForm form{.pole = lat0 > 0.0 ? 1.0 : -1.0,
+                              .k0 = scaleFactorTerm(terms),
+                              .lon0 = terms.real("lon_0", 0.0),
+                              .origin = falseOrigin(terms),
+                              .ellipsoid = ellipsoid};
   if (terms.has("lat_ts")) {
     form.latTs = latitudeTerm(terms, "lat_ts");
     if (*form.latTs * form.pole < 0.0)

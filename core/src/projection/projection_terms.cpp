@@ -28,9 +28,9 @@ void checkEllipsoid(const Ellipsoid& ellipsoid) {
                           "give the body's radius in metres, e.g. +R=3396190 for Mars");
   const double f = ellipsoid.flattening();
   if (!(f >= 0.0 && f < 1.0))
-    throw projectionError("the inverse flattening " + decimal(ellipsoid.inverseFlattening) +
-                              " gives no oblate ellipsoid",
-                          "give 1/f above 1 (298.257223563 for WGS84), or 0 for a sphere");
+    throw projectionError(
+        "the inverse flattening " + decimal(ellipsoid.inverseFlattening) + " gives no oblate ellipsoid",
+        "give 1/f above 1 (298.257223563 for WGS84), or 0 for a sphere");
 }
 
 bool plainFrame(const ProjParameters& terms) {

@@ -8,13 +8,15 @@ namespace {
 
 // GDAL's command-line style options for the COG driver.
 std::vector<std::string> translateArguments(const std::string& targetCrs, const MetadataItems& metadata) {
-  std::vector<std::string> arguments{"-of", "COG",
-      "-co", "BLOCKSIZE=512",          // the page size of [Kooima 2008, §4.3.1]
-      "-co", "COMPRESS=DEFLATE",       // lossless: heights must come back bit for bit
+  std::vector<std::string> arguments{
+      "-of", "COG",
+      "-co", "BLOCKSIZE=512",     // the page size of [Kooima 2008, §4.3.1]
+      "-co", "COMPRESS=DEFLATE",  // lossless: heights must come back bit for bit
       "-co", "OVERVIEWS=IGNORE_EXISTING",
-      "-co", "RESAMPLING=AVERAGE",     // overviews are the mean of what they cover, as the GPU's mips are
-      "-co", "NUM_THREADS=ALL_CPUS",   // compression on every core
-      "-co", "BIGTIFF=IF_SAFER", "-co", "SPARSE_OK=TRUE"};
+      "-co", "RESAMPLING=AVERAGE",    // overviews are the mean of what they cover, as the GPU's mips are
+      "-co", "NUM_THREADS=ALL_CPUS",  // compression on every core
+      "-co", "BIGTIFF=IF_SAFER",
+      "-co", "SPARSE_OK=TRUE"};
   if (!targetCrs.empty()) {
     arguments.insert(arguments.end(), {"-co", "TARGET_SRS=" + targetCrs, "-co", "WARP_RESAMPLING=BILINEAR"});
   }
@@ -57,8 +59,8 @@ Dataset writeCog(GDALDataset& source, const std::filesystem::path& output, const
   if (progress) GDALTranslateOptionsSetProgress(options.get(), reportProgress, &progress);
   const AllCpusForWarping threads;  // the COG driver warps before it tiles
   CPLErrorReset();
-  Dataset written(GDALDataset::FromHandle(
-      GDALTranslate(output.c_str(), GDALDataset::ToHandle(&source), options.get(), nullptr)));
+  Dataset written(
+      GDALDataset::FromHandle(GDALTranslate(output.c_str(), GDALDataset::ToHandle(&source), options.get(), nullptr)));
   if (!written)
     throw Error(where, "GDAL could not write '" + output.string() + "': " + CPLGetLastErrorMsg(),
                 "check that the output's folder exists and is writable, and that the disk has room");

@@ -67,8 +67,9 @@ healpix::FaceWindow faceWindowCovering(GDALDataset& input, const Projection& str
   const std::string finer =
       "at nside " + std::to_string(nside) + ", finer than " + most + ", a HEALPix pyramid holds a part of one face";
   if (box.faces.size() > 1)
-    throw Error(where, finer + ", but '" + std::string(input.GetDescription()) + "' reaches faces " + facesNamed(box.faces),
-                "give --nside " + most + " or less for a pyramid of all twelve faces, or cut the input where the faces meet");
+    throw Error(
+        where, finer + ", but '" + std::string(input.GetDescription()) + "' reaches faces " + facesNamed(box.faces),
+        "give --nside " + most + " or less for a pyramid of all twelve faces, or cut the input where the faces meet");
   const double margin = kMarginTexels + kMarginShare * std::max(box.east - box.west, box.south - box.north);
   const auto bound = [nside](double texel) { return std::clamp(texel, 0.0, double(nside)); };
   const std::int64_t west = std::int64_t(std::floor(bound(box.west - margin)));
@@ -76,8 +77,9 @@ healpix::FaceWindow faceWindowCovering(GDALDataset& input, const Projection& str
   const std::int64_t north = std::int64_t(std::floor(bound(box.north - margin)));
   const std::int64_t south = std::int64_t(std::ceil(bound(box.south + margin)));
   if (east - west > INT_MAX || south - north > INT_MAX)
-    throw Error(where, finer + ", but '" + std::string(input.GetDescription()) + "' covers " +
-                           std::to_string(east - west) + "x" + std::to_string(south - north) + " of its texels, more than a GeoTIFF holds",
+    throw Error(where,
+                finer + ", but '" + std::string(input.GetDescription()) + "' covers " + std::to_string(east - west) +
+                    "x" + std::to_string(south - north) + " of its texels, more than a GeoTIFF holds",
                 "choose a coarser --nside, or cut the input into pieces");
   return {*box.faces.begin(), west, north, int(east - west), int(south - north)};
 }

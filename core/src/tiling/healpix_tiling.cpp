@@ -275,10 +275,10 @@ Dataset createFaces(const std::filesystem::path& file, const Pyramid& pyramid,
   if (pyramid.samples.alpha) options.SetNameValue("ALPHA", "YES");
   if (pyramid.samples.rgb) options.SetNameValue("PHOTOMETRIC", "RGB");
   CPLErrorReset();
-  const int width = window ? window->width : int(12 * pyramid.nside), height = window ? window->height : int(pyramid.nside);
-  Dataset strip(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(file.c_str(), width, height,
-                                                                         pyramid.samples.bands, pyramid.samples.type,
-                                                                         options.List()));
+  const int width = window ? window->width : int(12 * pyramid.nside),
+            height = window ? window->height : int(pyramid.nside);
+  Dataset strip(GetGDALDriverManager()->GetDriverByName("GTiff")->Create(
+      file.c_str(), width, height, pyramid.samples.bands, pyramid.samples.type, options.List()));
   if (!strip)
     throw Error(where, "GDAL could not create the temporary '" + file.string() + "': " + CPLGetLastErrorMsg(),
                 "check that the output's folder is writable and that the disk has room");
@@ -347,7 +347,8 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   const Pyramid pyramid{nside, figure, radius, inputTexel / faceTexelMetres(radius, nside), samplesOf(input)};
   std::optional<healpix::FaceWindow> window;
   if (nside > healpix::kMostNside)
-    window = faceWindowCovering(input, *healpix::stripProjection(projectionOfCrs(plugins, figure, where)), nside, where);
+    window =
+        faceWindowCovering(input, *healpix::stripProjection(projectionOfCrs(plugins, figure, where)), nside, where);
   // Beside the output, in the scratch folder tileRaster writes it in, which goes with everything it holds.
   Dataset faces = createFaces(request.output.parent_path() / "faces.strip.tif", pyramid, window, where);
   const Dataset wrapped = wrapAroundGlobe(input);
@@ -355,7 +356,8 @@ TilingResult tileHealpix(const PluginRegistry& plugins, GDALDataset& input, cons
   // One-channel strips (heights, scalars) carry their pages' true ranges, which bound geometry.healpix's nodes;
   // a window is paged as any raster, and carries its blocks' ranges as any raster does.
   MetadataItems ranges;
-  if (pyramid.samples.bands == 1) ranges = window ? blockRangeItems(*faces) : scanPageRanges(*faces, nside).metadataItems();
+  if (pyramid.samples.bands == 1)
+    ranges = window ? blockRangeItems(*faces) : scanPageRanges(*faces, nside).metadataItems();
   Dataset output = writeCog(*faces, request.output, "", progressShare(request.progress, kFacesShare, 1.0),
                             {request.output.string()}, ranges);
   return {figure,

@@ -22,8 +22,9 @@ void visitTexelWindows(GDALDataset& raster, const std::function<void(const Texel
                         window.height, GDT_Float64, 0, 0) != CE_None ||
           band.GetMaskBand()->RasterIO(GF_Read, window.x, window.y, window.width, window.height, window.mask.data(),
                                        window.width, window.height, GDT_Byte, 0, 0) != CE_None)
-        throw Error({raster.GetDescription()}, "GDAL could not read the texels at column " + std::to_string(window.x) +
-                                                   ", row " + std::to_string(window.y) + ": " + CPLGetLastErrorMsg(),
+        throw Error({raster.GetDescription()},
+                    "GDAL could not read the texels at column " + std::to_string(window.x) + ", row " +
+                        std::to_string(window.y) + ": " + CPLGetLastErrorMsg(),
                     "check that the file is whole (`gdalinfo -checksum` reads every block), and that the disk is "
                     "not failing");
       visit(window);

@@ -39,7 +39,8 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
                 "give 1 band (heights, scalars) or 3-4 (colour); pick them with gdal_translate -b");
   const GDALDataType type = dataset.GetRasterBand(1)->GetRasterDataType();
   if (GDALDataTypeIsComplex(type) || (GDALGetDataTypeSizeBits(type) > 32 && type != GDT_Float64))
-    throw Error(where, "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) + " samples",
+    throw Error(where,
+                "'" + std::string(dataset.GetDescription()) + "' holds " + GDALGetDataTypeName(type) + " samples",
                 "convert to 8/16/32-bit integers or floats: gdal_translate -ot Float32");
 }
 
@@ -74,8 +75,8 @@ TilingResult tileInto(const PluginRegistry& plugins, GDALDataset& input, TilingR
   const std::string target = tiling::tileTarget(plugins, *crs, geotransform.data(), input.GetRasterXSize(),
                                                 input.GetRasterYSize(), request.target, {"--to"});
   Dataset output = writePyramid(input, partial, target, request.progress, where);
-  return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(),
-          output->GetRasterYSize(), output->GetRasterBand(1)->GetOverviewCount()};
+  return {projStringOf(*output->GetSpatialRef()), !target.empty(), output->GetRasterXSize(), output->GetRasterYSize(),
+          output->GetRasterBand(1)->GetOverviewCount()};
 }
 
 }  // namespace

@@ -69,7 +69,8 @@ Transformation geographicTransformation(const OGRSpatialReference& crs) {
   geographic.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
   OGRSpatialReference source(crs);
   source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
-  return Transformation(OGRCreateCoordinateTransformation(&source, &geographic), OGRCoordinateTransformation::DestroyCT);
+  return Transformation(OGRCreateCoordinateTransformation(&source, &geographic),
+                        OGRCoordinateTransformation::DestroyCT);
 }
 
 std::string figureTerms(const OGRSpatialReference& crs) {

@@ -15,7 +15,8 @@ constexpr double kFlyingShare = 0.1;  // a key press flies a tenth of the altitu
 std::optional<glm::dvec2> groundAt(const View& view, double radius, double x, double y) {
   const double tanHalf = std::tan(view.verticalFov / 2.0), aspect = double(view.width) / view.height;
   const double ndcX = (x + 0.5) / view.width * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / view.height * 2.0;
-  const glm::dvec3 d = glm::transpose(view.planetToEye) * glm::normalize(glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0));
+  const glm::dvec3 d =
+      glm::transpose(view.planetToEye) * glm::normalize(glm::dvec3(ndcX * tanHalf * aspect, ndcY * tanHalf, -1.0));
   const double b = glm::dot(view.eye, d), c = glm::dot(view.eye, view.eye) - radius * radius;
   if (b * b - c < 0.0 || -b - std::sqrt(b * b - c) < 0.0) return std::nullopt;
   const glm::dvec3 n = glm::normalize(view.eye + (-b - std::sqrt(b * b - c)) * d);

@@ -1,8 +1,8 @@
 #include <strata/viewer/panel_overlay.hpp>
 
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 namespace strata::viewer {
 

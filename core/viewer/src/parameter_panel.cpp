@@ -68,10 +68,14 @@ void ParameterPanel::drawControl(Engine& engine, const ParameterControl& control
   const ParameterDeclaration& parameter = *control.declaration;
   ParameterValue value = control.value;
   bool changed = false;
-  if (auto* real = std::get_if<double>(&value)) changed = numberControl(parameter, ImGuiDataType_Double, *real);
-  else if (auto* whole = std::get_if<std::int64_t>(&value)) changed = numberControl(parameter, ImGuiDataType_S64, *whole);
-  else if (auto* flag = std::get_if<bool>(&value)) changed = ImGui::Checkbox(labelOf(parameter).c_str(), flag);
-  else if (parameter.type == ParameterType::Choice) changed = choiceControl(parameter, std::get<std::string>(value));
+  if (auto* real = std::get_if<double>(&value))
+    changed = numberControl(parameter, ImGuiDataType_Double, *real);
+  else if (auto* whole = std::get_if<std::int64_t>(&value))
+    changed = numberControl(parameter, ImGuiDataType_S64, *whole);
+  else if (auto* flag = std::get_if<bool>(&value))
+    changed = ImGui::Checkbox(labelOf(parameter).c_str(), flag);
+  else if (parameter.type == ParameterType::Choice)
+    changed = choiceControl(parameter, std::get<std::string>(value));
   else if (auto* text = std::get_if<std::string>(&value)) {
     std::string& edited = editedText_.try_emplace(control.node + "." + parameter.name, *text).first->second;
     edited.resize(std::max<std::size_t>(edited.size(), 256));

@@ -26,8 +26,10 @@ void Viewer::navigate() {
                              if (!overlay_.wantsPointer()) controls().scrollToward(steps, x, y, width_, height_);
                            },
                            [this, controls](NavigationKey key) {
-                             if (key == NavigationKey::Home) engine_.camera() = engine_.pipeline().camera;
-                             else controls().key(key, height_);
+                             if (key == NavigationKey::Home)
+                               engine_.camera() = engine_.pipeline().camera;
+                             else
+                               controls().key(key, height_);
                            }});
 }
 

@@ -22,8 +22,12 @@ std::optional<NavigationKey> navigationKeyOf(int key) {
     case GLFW_KEY_RIGHT: return NavigationKey::Right;
     case GLFW_KEY_UP: return NavigationKey::Up;
     case GLFW_KEY_DOWN: return NavigationKey::Down;
-    case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD: case GLFW_KEY_PAGE_UP: return NavigationKey::Closer;
-    case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: case GLFW_KEY_PAGE_DOWN: return NavigationKey::Farther;
+    case GLFW_KEY_EQUAL:
+    case GLFW_KEY_KP_ADD:
+    case GLFW_KEY_PAGE_UP: return NavigationKey::Closer;
+    case GLFW_KEY_MINUS:
+    case GLFW_KEY_KP_SUBTRACT:
+    case GLFW_KEY_PAGE_DOWN: return NavigationKey::Farther;
     case GLFW_KEY_W: return NavigationKey::Forward;
     case GLFW_KEY_S: return NavigationKey::Back;
     case GLFW_KEY_HOME: return NavigationKey::Home;
@@ -81,7 +85,8 @@ void GlfwWindow::onCursor(GLFWwindow* window, double x, double y) {
   int button = -1;
   for (int b : {GLFW_MOUSE_BUTTON_LEFT, GLFW_MOUSE_BUTTON_RIGHT, GLFW_MOUSE_BUTTON_MIDDLE})
     if (glfwGetMouseButton(window, b) == GLFW_PRESS) button = b;
-  if (button >= 0 && self->tracking_ && self->input_.drag) self->input_.drag(x - self->lastX_, y - self->lastY_, button);
+  if (button >= 0 && self->tracking_ && self->input_.drag)
+    self->input_.drag(x - self->lastX_, y - self->lastY_, button);
   self->tracking_ = true;
   self->lastX_ = x;
   self->lastY_ = y;

@@ -42,15 +42,24 @@ ExplorerOptions parseOptions(int argc, char** argv) {
   ExplorerOptions options;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
-    if (argument == "--size") readSize(valueOf(i, argc, argv), options);
-    else if (argument == "--hide") options.hidden.push_back(valueOf(i, argc, argv));
-    else if (argument == "--date") options.date = valueOf(i, argc, argv);
-    else if (argument == "--altitude") options.altitude = numberOf<double>(argument, valueOf(i, argc, argv));
-    else if (argument == "--screenshot") options.screenshot = valueOf(i, argc, argv);
-    else if (argument == "--frames") options.frames = numberOf<int>(argument, valueOf(i, argc, argv));
-    else if (argument.starts_with("-")) throw std::invalid_argument("unknown option " + argument);
-    else if (options.pipeline.empty()) options.pipeline = argument;
-    else throw std::invalid_argument("one pipeline only, not also " + argument);
+    if (argument == "--size")
+      readSize(valueOf(i, argc, argv), options);
+    else if (argument == "--hide")
+      options.hidden.push_back(valueOf(i, argc, argv));
+    else if (argument == "--date")
+      options.date = valueOf(i, argc, argv);
+    else if (argument == "--altitude")
+      options.altitude = numberOf<double>(argument, valueOf(i, argc, argv));
+    else if (argument == "--screenshot")
+      options.screenshot = valueOf(i, argc, argv);
+    else if (argument == "--frames")
+      options.frames = numberOf<int>(argument, valueOf(i, argc, argv));
+    else if (argument.starts_with("-"))
+      throw std::invalid_argument("unknown option " + argument);
+    else if (options.pipeline.empty())
+      options.pipeline = argument;
+    else
+      throw std::invalid_argument("one pipeline only, not also " + argument);
   }
   if (options.frames < 1) throw std::invalid_argument("--frames must be at least 1");
   return options;

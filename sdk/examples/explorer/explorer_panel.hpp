@@ -38,10 +38,10 @@ class ExplorerPanel {
   void applyLayers();
 
   strata::Engine& engine_;
-  std::string output_;               // the id of the node whose `surface` list the layers are
-  std::vector<LayerEntry> layers_;   // in the pipeline's order, which is the order they compose in
+  std::string output_;              // the id of the node whose `surface` list the layers are
+  std::vector<LayerEntry> layers_;  // in the pipeline's order, which is the order they compose in
   std::optional<strata::DayNumber> pipelineDate_;
-  std::string problem_;              // the last change the engine refused, shown in the panel
+  std::string problem_;  // the last change the engine refused, shown in the panel
 };
 
 }  // namespace explorer

@@ -8,9 +8,9 @@
 
 #define GLFW_INCLUDE_NONE  // epoxy declares OpenGL; GLFW must not include GL/gl.h as well
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 namespace explorer {
 namespace {

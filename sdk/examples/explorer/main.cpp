@@ -41,8 +41,10 @@ void drawFrame(strata::Engine& engine, ExplorerWindow& window, ExplorerPanel& pa
 int run(const ExplorerOptions& options) {
   ExplorerWindow window(options.width, options.height, "Mars explorer");
   strata::Engine engine;  // on the window's context, current on this thread: every call stays on it
-  if (options.pipeline.empty()) engine.load(sampleScene());
-  else engine.load(options.pipeline);
+  if (options.pipeline.empty())
+    engine.load(sampleScene());
+  else
+    engine.load(options.pipeline);
   ExplorerPanel panel(engine);
   applyOptions(options, panel);
   for (int frames = 1; window.open(); ++frames) {

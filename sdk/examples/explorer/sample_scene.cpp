@@ -24,7 +24,7 @@ void addDust(strata::PipelineBuilder& scene) {
 
 strata::PipelineBuilder sampleScene() {
   strata::PipelineBuilder scene("mars-explorer sample scene");
-  scene.set("body.name", "Mars").set("body.radius", 3396190.0);  // m; the mean radius of Mars
+  scene.set("body.name", "Mars").set("body.radius", 3396190.0);                     // m; the mean radius of Mars
   scene.set("camera.lon", 30).set("camera.lat", 25).set("camera.altitude", 8.0e6);  // the whole disc
   scene.set("date", "2030-04-15");  // between the dust series' two steps
   scene.node("colours", "source.procedural", {{"kind", "color"}, {"seed", 2008}});  // a height ramp with contours

@@ -18,9 +18,9 @@ namespace {
 
 // What to draw, read once from the node's validated parameters.
 struct GraticuleStyle {
-  double spacing = 0.0;            // degrees between neighbouring lines
-  int width = 0;                   // texels across a line
-  std::array<float, 3> colour{};   // linear RGB
+  double spacing = 0.0;           // degrees between neighbouring lines
+  int width = 0;                  // texels across a line
+  std::array<float, 3> colour{};  // linear RGB
   int texelsPerDegree = 0;
 };
 
@@ -128,21 +128,41 @@ strata::NodeTypeDeclaration declaration() {
   type.output = strata::PortType::Layer;
   type.parameters = {
       // 30: the customary interval of whole-globe maps; from orbit it frames continents without hiding them.
-      {.name = "spacing", .type = ParameterType::Real, .defaultValue = 30.0, .minimum = 0.0, .maximum = 90.0,
-       .units = "deg", .doc = "degrees between neighbouring meridians and between parallels; more than 0"},
+      {.name = "spacing",
+       .type = ParameterType::Real,
+       .defaultValue = 30.0,
+       .minimum = 0.0,
+       .maximum = 90.0,
+       .units = "deg",
+       .doc = "degrees between neighbouring meridians and between parallels; more than 0"},
       // 2: even widths centre a line on its meridian (which falls between two texels); at 8 texels per
       // degree that is a quarter of a degree, about 28 km on Earth.
-      {.name = "width", .type = ParameterType::Integer, .defaultValue = std::int64_t(2), .minimum = 1.0,
-       .maximum = 16.0, .units = "texel", .doc = "line width in texels of the layer's raster"},
+      {.name = "width",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(2),
+       .minimum = 1.0,
+       .maximum = 16.0,
+       .units = "texel",
+       .doc = "line width in texels of the layer's raster"},
       // A warm yellow: it stands apart from blue ocean, green and brown land and white cloud alike.
-      {.name = "color", .type = ParameterType::RealList, .defaultValue = std::vector<double>{1.0, 0.85, 0.2},
-       .minimum = 0.0, .maximum = 1.0, .doc = "line colour as linear RGB, each from 0 to 1", .count = 3},
+      {.name = "color",
+       .type = ParameterType::RealList,
+       .defaultValue = std::vector<double>{1.0, 0.85, 0.2},
+       .minimum = 0.0,
+       .maximum = 1.0,
+       .doc = "line colour as linear RGB, each from 0 to 1",
+       .count = 3},
       // 8: a 2880x1440 raster (32 MiB of half floats on the GPU, before mipmaps) with more texels per
       // degree than a whole-globe view like demo.yaml's has pixels even at 1920x1080 (under 4), so lines
       // stay sharp. At most 22: 360 x 22 = 7920 texels, within the 8192 that a RasterLayer's single
       // texture may safely span on every OpenGL 4.5 GPU.
-      {.name = "resolution", .type = ParameterType::Integer, .defaultValue = std::int64_t(8), .minimum = 1.0,
-       .maximum = 22.0, .units = "texel/deg", .doc = "texels per degree of the raster the lines are drawn into"},
+      {.name = "resolution",
+       .type = ParameterType::Integer,
+       .defaultValue = std::int64_t(8),
+       .minimum = 1.0,
+       .maximum = 22.0,
+       .units = "texel/deg",
+       .doc = "texels per degree of the raster the lines are drawn into"},
   };
   type.create = [](const strata::NodeSetup& setup) { return std::make_unique<GraticuleSource>(setup); };
   return type;

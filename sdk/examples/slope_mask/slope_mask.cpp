@@ -38,9 +38,12 @@ MaskStyle styleOf(const strata::ParameterSet& parameters) {
 // is steeper than the threshold, weighted by the heights' coverage (no data, no paint).
 class SlopeMaskLayer : public strata::Layer {
  public:
-  SlopeMaskLayer(const std::string& nodeId, const strata::Layer& height, const strata::Layer& surface,
-                 MaskStyle style, double radius)
-      : name_("layer_" + strata::glslIdentifier(nodeId)), height_(height), surface_(surface), style_(style),
+  SlopeMaskLayer(const std::string& nodeId, const strata::Layer& height, const strata::Layer& surface, MaskStyle style,
+                 double radius)
+      : name_("layer_" + strata::glslIdentifier(nodeId)),
+        height_(height),
+        surface_(surface),
+        style_(style),
         radius_(radius) {}
 
   strata::LayerKind kind() const override { return strata::LayerKind::Color; }
@@ -49,20 +52,34 @@ class SlopeMaskLayer : public strata::Layer {
   // Every name is prefixed by the node's, so that two slope masks in one program do not clash.
   std::string glsl() const override {
     const std::string& p = name_;
-    return height_.glslOnce() + surface_.glslOnce() +
-           "uniform float " + p + "_radius;\n"
-           "uniform float " + p + "_threshold;\n"
-           "uniform vec3 " + p + "_colour;\n"
-           "uniform float " + p + "_opacity;\n" +
-           strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius") +
-           "vec4 " + p + "(SurfacePoint p) {\n"
-           "  vec4 surface = " + surface_.samplingFunction() + "(p);\n"
-           "  vec4 height = " + height_.samplingFunction() + "(p);\n"
-           "  if (height.a <= 0.0 || slopeAngle(" + p + "_slopes(p, height.r), 1.0) <= " + p + "_threshold)\n"
+    return height_.glslOnce() + surface_.glslOnce() + "uniform float " + p +
+           "_radius;\n"
+           "uniform float " +
+           p +
+           "_threshold;\n"
+           "uniform vec3 " +
+           p +
+           "_colour;\n"
+           "uniform float " +
+           p + "_opacity;\n" + strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + "vec4 " + p +
+           "(SurfacePoint p) {\n"
+           "  vec4 surface = " +
+           surface_.samplingFunction() +
+           "(p);\n"
+           "  vec4 height = " +
+           height_.samplingFunction() +
+           "(p);\n"
+           "  if (height.a <= 0.0 || slopeAngle(" +
+           p + "_slopes(p, height.r), 1.0) <= " + p +
+           "_threshold)\n"
            "    return surface;\n"
-           "  float paint = " + p + "_opacity * height.a, rest = surface.a * (1.0 - paint);\n"
+           "  float paint = " +
+           p +
+           "_opacity * height.a, rest = surface.a * (1.0 - paint);\n"
            "  float coverage = paint + rest;  // the paint over the surface (values are not premultiplied)\n"
-           "  return coverage > 0.0 ? vec4((" + p + "_colour * paint + surface.rgb * rest) / coverage, coverage)\n"
+           "  return coverage > 0.0 ? vec4((" +
+           p +
+           "_colour * paint + surface.rgb * rest) / coverage, coverage)\n"
            "                        : vec4(0.0);\n"
            "}\n";
   }
@@ -96,8 +113,8 @@ class SlopeMaskLayer : public strata::Layer {
 class SlopeMask : public strata::Node {
  public:
   explicit SlopeMask(const strata::NodeSetup& setup)
-      : layer_(setup.id, *setup.input("height")->layer(), *setup.input("surface")->layer(),
-               styleOf(setup.parameters), setup.body->radius) {}
+      : layer_(setup.id, *setup.input("height")->layer(), *setup.input("surface")->layer(), styleOf(setup.parameters),
+               setup.body->radius) {}
 
   strata::Layer* layer() override { return &layer_; }
   void update(const strata::ParameterSet& parameters) override { layer_.restyle(styleOf(parameters)); }
@@ -113,23 +130,41 @@ strata::NodeTypeDeclaration declaration() {
   type.type = "composite.slope_mask";
   type.category = strata::NodeCategory::Compositor;
   type.summary = "Paints ground steeper than a threshold over a colour layer, from any height layer";
-  type.inputs = {{.name = "height", .type = PortType::Layer, .kinds = {LayerKind::Height},
+  type.inputs = {{.name = "height",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Height},
                   .doc = "the heights whose slopes are measured: any height layer, composed ones included"},
-                 {.name = "surface", .type = PortType::Layer, .kinds = {LayerKind::Color},
+                 {.name = "surface",
+                  .type = PortType::Layer,
+                  .kinds = {LayerKind::Color},
                   .doc = "the colour layer painted over; it shows unchanged where the ground is not steep"}};
   type.output = PortType::Layer;
   // Every parameter is a uniform (.live): changing one redraws the next frame with no program rebuilt.
   type.parameters = {
       // 15: the order of the limits Mars landing sites were chosen by (InSight's was 15), a first cut of a site map
-      {.name = "threshold", .type = ParameterType::Real, .defaultValue = 15.0, .minimum = 0.0, .maximum = 90.0,
-       .units = "deg", .doc = "ground steeper than this is painted; slopes are measured over a pixel's footprint",
+      {.name = "threshold",
+       .type = ParameterType::Real,
+       .defaultValue = 15.0,
+       .minimum = 0.0,
+       .maximum = 90.0,
+       .units = "deg",
+       .doc = "ground steeper than this is painted; slopes are measured over a pixel's footprint",
        .live = true},
       // A saturated magenta: no terrain or imagery has it, so painted ground reads at a glance
-      {.name = "colour", .type = ParameterType::RealList, .defaultValue = std::vector<double>{1.0, 0.0, 1.0},
-       .minimum = 0.0, .maximum = 1.0, .doc = "the paint, as sRGB red, green, blue, each from 0 to 1", .count = 3,
+      {.name = "colour",
+       .type = ParameterType::RealList,
+       .defaultValue = std::vector<double>{1.0, 0.0, 1.0},
+       .minimum = 0.0,
+       .maximum = 1.0,
+       .doc = "the paint, as sRGB red, green, blue, each from 0 to 1",
+       .count = 3,
        .live = true},
       // 0.6: the paint dominates, yet the imagery below still shows what makes the ground steep
-      {.name = "opacity", .type = ParameterType::Real, .defaultValue = 0.6, .minimum = 0.0, .maximum = 1.0,
+      {.name = "opacity",
+       .type = ParameterType::Real,
+       .defaultValue = 0.6,
+       .minimum = 0.0,
+       .maximum = 1.0,
        .doc = "the paint's share over the surface on steep ground: 0 shows the surface alone, 1 the paint alone",
        .live = true},
   };

@@ -1,9 +1,9 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <functional>
 #include <limits>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <utility>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <glm/glm.hpp>
+#include <strata/export.hpp>
 
 #include <strata/body.hpp>
 
@@ -9,12 +9,12 @@ namespace strata {
 
 // Where a view looks from, as a user says it: above a point of the surface, turned and tilted.
 struct Camera {
-  double lon = 0.0;          // deg, east positive: the point below the eye
-  double lat = 0.0;          // deg, north positive
-  double altitude = 2.0e7;   // m above the body's radius
-  double heading = 0.0;      // deg clockwise from north: the direction the view faces
-  double tilt = 0.0;         // deg: 0 looks straight down, 90 at the horizon
-  double fov = 45.0;         // deg, vertical field of view
+  double lon = 0.0;         // deg, east positive: the point below the eye
+  double lat = 0.0;         // deg, north positive
+  double altitude = 2.0e7;  // m above the body's radius
+  double heading = 0.0;     // deg clockwise from north: the direction the view faces
+  double tilt = 0.0;        // deg: 0 looks straight down, 90 at the horizon
+  double fov = 45.0;        // deg, vertical field of view
 
   bool operator==(const Camera&) const = default;
 };
@@ -24,11 +24,11 @@ struct Camera {
 struct View {
   int width = 0;
   int height = 0;
-  glm::dvec3 eye{0.0};             // planet-fixed position of the eye, m
-  glm::dmat3 planetToEye{1.0};     // rotation from planet-fixed axes to eye axes (x right, y up, -z forward)
-  glm::mat4 projection{1.0f};      // infinite far plane, reversed depth (1 at the near plane, 0 at infinity)
-  double near = 1.0;               // m
-  double verticalFov = 0.0;        // rad
+  glm::dvec3 eye{0.0};          // planet-fixed position of the eye, m
+  glm::dmat3 planetToEye{1.0};  // rotation from planet-fixed axes to eye axes (x right, y up, -z forward)
+  glm::mat4 projection{1.0f};   // infinite far plane, reversed depth (1 at the near plane, 0 at infinity)
+  double near = 1.0;            // m
+  double verticalFov = 0.0;     // rad
   // Longitude and latitude (rad) of the point below the eye. The GPU gets longitudes and latitudes
   // measured from it, which float resolves finely near the eye (docs/architecture.md, "Precision").
   glm::dvec2 reference{0.0};

@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
 #include <memory>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
 #include <memory>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -30,7 +30,8 @@ class ColourConfig {
   // scene-linear to what `display` shows through `view`. Alpha passes through. Throws strata::Error at `where`
   // for a space, display or view the config lacks (listing those it has), and for a transform that needs
   // LUT textures, which Strata does not bind yet.
-  std::string toSceneLinear(const std::string& space, const std::string& functionName, const SourceLocation& where) const;
+  std::string toSceneLinear(const std::string& space, const std::string& functionName,
+                            const SourceLocation& where) const;
   std::string toDisplay(const std::string& display, const std::string& view, const std::string& functionName,
                         const SourceLocation& where) const;
   // Whether `space` needs no conversion to scene-linear: the scene_linear role's own space, or data (`raw`).

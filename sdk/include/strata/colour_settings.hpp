@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
+#include <strata/export.hpp>
 
 #include <strata/error.hpp>
 

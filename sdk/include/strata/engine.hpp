@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <optional>
+#include <strata/export.hpp>
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
@@ -14,7 +14,7 @@ namespace strata {
 struct FrameState {
   const Body* body = nullptr;
   View view;
-  std::uint64_t index = 0;  // frames since the pipeline loaded
+  std::uint64_t index = 0;        // frames since the pipeline loaded
   std::optional<DayNumber> date;  // the scene's date (Engine::date()); none where the pipeline gives none
   // A frame drawn to be kept (Engine::renderSettled): generators whose detail follows a moving view over
   // several frames settle it at once, as they do on a pipeline's first frame, whatever that costs.

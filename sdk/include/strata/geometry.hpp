@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
+#include <strata/export.hpp>
 
 #include <strata/body.hpp>
 #include <strata/gl/framebuffer.hpp>

@@ -98,7 +98,7 @@ std::array<double, 6> facePlaneGeotransform(int face, std::int64_t nside, double
 class PageRanges {
  public:
   struct Range {
-    float least = 0.0f;     // raw values (before a layer's scale and offset); least > greatest: none held
+    float least = 0.0f;  // raw values (before a layer's scale and offset); least > greatest: none held
     float greatest = 0.0f;
     bool uncovered = false;  // some texel holds no data
   };

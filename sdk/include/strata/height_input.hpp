@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <map>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 

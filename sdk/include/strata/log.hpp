@@ -4,8 +4,8 @@
 // The library never writes to stderr itself: every message goes to one sink, which a host replaces to
 // route messages where its users look (a viewer's panel, a log file, Python's logging). The default sink
 // writes each message to stderr as "strata: warning: TEXT" and, when there is one, "  fix: FIX".
-#include <strata/export.hpp>
 #include <functional>
+#include <strata/export.hpp>
 #include <string>
 
 STRATA_EXPORTS_BEGIN

@@ -1,9 +1,9 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -34,11 +34,11 @@ struct NodeSetup {
   std::map<std::string, std::vector<Node*>> inputs;  // by port name; absent optional ports are missing
   const Body* body = nullptr;
   std::filesystem::path pipelineDirectory;  // relative paths in parameters resolve against this
-  const PluginRegistry* plugins = nullptr;   // node types and projections (see strata/crs.hpp)
+  const PluginRegistry* plugins = nullptr;  // node types and projections (see strata/crs.hpp)
   std::optional<DayNumber> date;  // the scene's date as the pipeline gives it (`date:`); frames carry the current one
   ColourSettings colour;          // the pipeline's `colour:` (its OpenColorIO config)
 
-  Node* input(const std::string& port) const;  // the single node on a port, or nullptr
+  Node* input(const std::string& port) const;                          // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected
 };
 

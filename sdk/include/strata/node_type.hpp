@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <functional>
 #include <memory>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
+#include <strata/export.hpp>
 #include <vector>
 
 #include <strata/gl/framebuffer.hpp>
@@ -36,8 +36,7 @@ ImageFormat imageFormatOf(const std::filesystem::path& file);
 // Writes RGBA8 rows (top row first) as an 8-bit image through GDAL, in the format its extension names
 // (imageFormatOf); throws strata::Error naming the file. It writes `file` as given: callers that must not
 // leave a partial image under a user's name write into a ScratchDirectory (strata/output_file.hpp).
-void writeImage(const std::filesystem::path& file, int width, int height,
-                const std::vector<unsigned char>& rgba);
+void writeImage(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba);
 
 }  // namespace strata
 STRATA_EXPORTS_END

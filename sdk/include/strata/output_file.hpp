@@ -2,8 +2,8 @@
 // The files Strata writes for its user (frames, videos, tables, plots, pyramids): nothing the user has is
 // replaced without asking, no file the work reads is replaced whatever is asked, no file is written through
 // a link, and nothing unfinished ever carries the final name (docs/robustness.md, "Outputs").
-#include <strata/export.hpp>
 #include <filesystem>
+#include <strata/export.hpp>
 #include <vector>
 
 #include <strata/error.hpp>

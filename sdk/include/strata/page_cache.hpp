@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <memory>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -20,16 +20,16 @@ class TextureUnits;
 
 // What the cache holds and did; `strata render --stats` and the benchmark print it.
 struct PageCacheStatistics {
-  int capacity = 0;               // pages the atlases hold
-  int resident = 0;               // pages in them now
-  int pinned = 0;                 // of those, the coarsest levels, never evicted
-  int wanted = 0;                 // pages the last frame asked for
-  int loading = 0;                // requested and not yet uploaded
-  std::uint64_t uploaded = 0;     // pages copied to the GPU since the pipeline loaded
+  int capacity = 0;            // pages the atlases hold
+  int resident = 0;            // pages in them now
+  int pinned = 0;              // of those, the coarsest levels, never evicted
+  int wanted = 0;              // pages the last frame asked for
+  int loading = 0;             // requested and not yet uploaded
+  std::uint64_t uploaded = 0;  // pages copied to the GPU since the pipeline loaded
   std::uint64_t evicted = 0;
-  std::uint64_t failed = 0;       // pages that could not be read (each reported once)
-  std::uint64_t gpuBytes = 0;     // atlases, index and upload buffers
-  std::uint64_t stagingBytes = 0; // the most page memory held on the CPU between read and upload
+  std::uint64_t failed = 0;        // pages that could not be read (each reported once)
+  std::uint64_t gpuBytes = 0;      // atlases, index and upload buffers
+  std::uint64_t stagingBytes = 0;  // the most page memory held on the CPU between read and upload
 };
 
 // A page that could not be read. The cache never asks for it again; the coarser page it has stands in.
@@ -44,7 +44,7 @@ struct PagedLayerPlacement {
   int layer = -1;          // the cache's number for the layer (setDemand)
   unsigned indexBase = 0;  // the layer's first entry in the shared index
   int levels = 0;
-  int width = 0;           // level 0, texels
+  int width = 0;  // level 0, texels
   int height = 0;
   PageFormat format = PageFormat::Values;
 };

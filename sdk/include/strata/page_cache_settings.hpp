@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
+#include <strata/export.hpp>
 
 #include <strata/error.hpp>
 

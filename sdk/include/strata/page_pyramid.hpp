@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <compare>
 #include <cstddef>
+#include <strata/export.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -37,7 +37,7 @@ class PagePyramid {
   int width() const { return width_; }
   int height() const { return height_; }
   int levels() const { return levels_; }
-  int levelWidth(int level) const;   // texels across level `level`: width / 2^level, rounded up
+  int levelWidth(int level) const;  // texels across level `level`: width / 2^level, rounded up
   int levelHeight(int level) const;
   int pagesAcross(int level) const;
   int pagesDown(int level) const;

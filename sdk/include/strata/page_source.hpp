@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <strata/export.hpp>
 #include <string>
 
 #include <glm/vec2.hpp>

@@ -1,9 +1,9 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <variant>
 #include <vector>
@@ -28,10 +28,10 @@ struct ParameterDeclaration {
   std::optional<ParameterValue> defaultValue;  // none: the parameter is required, unless `optional`
   std::optional<double> minimum;               // Integer, Real, RealList: inclusive bounds
   std::optional<double> maximum;
-  std::string units;                           // "m", "deg", "" when dimensionless
-  std::string doc;                             // one line
-  std::vector<std::string> choices;            // Choice: the allowed values
-  std::size_t count = 0;                       // RealList: the exact number of values (0: any)
+  std::string units;                 // "m", "deg", "" when dimensionless
+  std::string doc;                   // one line
+  std::vector<std::string> choices;  // Choice: the allowed values
+  std::size_t count = 0;             // RealList: the exact number of values (0: any)
   // Whether a change takes effect in the next frame with nothing rebuilt (a uniform): the engine hands the
   // node its new parameters (Node::update) rather than reloading the pipeline (Engine::set).
   bool live = false;

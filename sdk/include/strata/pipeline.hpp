@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -23,9 +23,9 @@ class PluginRegistry;
 struct NodeDescription {
   std::string id;
   std::string type;
-  SourceLocation where;  // the node's key
-  ParameterSet parameters;  // every declared parameter, defaults filled in
-  std::map<std::string, std::vector<std::string>> inputs;  // port name -> ids of upstream nodes
+  SourceLocation where;                                               // the node's key
+  ParameterSet parameters;                                            // every declared parameter, defaults filled in
+  std::map<std::string, std::vector<std::string>> inputs;             // port name -> ids of upstream nodes
   std::map<std::string, std::vector<SourceLocation>> inputLocations;  // where each of those ids is written
 };
 
@@ -39,7 +39,7 @@ struct Pipeline {
   Camera camera;
   PageCacheSettings cache;
   ColourSettings colour;
-  std::optional<DayNumber> date;  // the scene's date (`date:`), which time series show; none: not given
+  std::optional<DayNumber> date;       // the scene's date (`date:`), which time series show; none: not given
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
 
   const NodeDescription* find(const std::string& id) const;

@@ -23,9 +23,9 @@ STRATA_EXPORTS_END
 // so a plugin built against another SDK is refused cleanly instead of crashing.
 extern "C" {
 struct StrataPluginInfo {
-  int abiVersion;           // strata::kPluginAbiVersion the plugin was built with
-  const char* name;         // e.g. "source-gdal"
-  const char* version;      // the plugin's own version
+  int abiVersion;       // strata::kPluginAbiVersion the plugin was built with
+  const char* name;     // e.g. "source-gdal"
+  const char* version;  // the plugin's own version
   void (*registerTypes)(strata::PluginRegistrar* registrar);
 };
 }
@@ -33,10 +33,9 @@ struct StrataPluginInfo {
 #define STRATA_PLUGIN_ENTRY_SYMBOL "strata_plugin_entry"
 
 // Defines the entry point: STRATA_PLUGIN("source-gdal", "1.0.0", registerFunction)
-#define STRATA_PLUGIN(name, version, registerFunction)                                   \
-  extern "C" __attribute__((visibility("default"))) const StrataPluginInfo*            \
-  strata_plugin_entry() {                                                              \
-    static const StrataPluginInfo info{strata::kPluginAbiVersion, name, version,       \
-                                       [](strata::PluginRegistrar* r) { registerFunction(*r); }}; \
-    return &info;                                                                      \
+#define STRATA_PLUGIN(name, version, registerFunction)                                              \
+  extern "C" __attribute__((visibility("default"))) const StrataPluginInfo* strata_plugin_entry() { \
+    static const StrataPluginInfo info{strata::kPluginAbiVersion, name, version,                    \
+                                       [](strata::PluginRegistrar* r) { registerFunction(*r); }};   \
+    return &info;                                                                                   \
   }

@@ -1,7 +1,7 @@
 #pragma once
-#include <strata/export.hpp>
 #include <filesystem>
 #include <map>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -15,7 +15,6 @@ namespace strata {
 class PluginRegistry : public PluginRegistrar {
  public:
   PluginRegistry();  // holds the built-in projections
-
 
   struct Module {
     std::filesystem::path file;

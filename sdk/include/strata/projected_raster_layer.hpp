@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <array>
 #include <memory>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -92,11 +92,11 @@ class ProjectedRasterLayer : public Layer {
   // texture coordinates about it, as uniforms.
   std::optional<glm::dvec2> reference_;
   glm::vec2 referenceUv_{0.0f};
-  glm::ivec2 referenceTexel_{0};           // the level-0 texel position there: whole texels
-  glm::vec2 referenceFraction_{0.0f};      // and the fraction beyond them
-  std::array<glm::vec4, 3> localTerms_{};  // the jacobian, then the second derivatives of u and of v
-  float reach_ = 0.0f;                     // rad; 0: sampled absolutely
-  bool tangent_ = false;                   // offsets in the tangent plane, else in longitude/latitude
+  glm::ivec2 referenceTexel_{0};             // the level-0 texel position there: whole texels
+  glm::vec2 referenceFraction_{0.0f};        // and the fraction beyond them
+  std::array<glm::vec4, 3> localTerms_{};    // the jacobian, then the second derivatives of u and of v
+  float reach_ = 0.0f;                       // rad; 0: sampled absolutely
+  bool tangent_ = false;                     // offsets in the tangent plane, else in longitude/latitude
   glm::vec2 referenceLatitude_{0.0f, 1.0f};  // sin and cos
 };
 

@@ -1,10 +1,10 @@
 #pragma once
-#include <strata/export.hpp>
 #include <array>
 #include <functional>
 #include <map>
 #include <memory>
 #include <optional>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <span>
+#include <strata/export.hpp>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>

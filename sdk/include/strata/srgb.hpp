@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <glm/vec3.hpp>
+#include <strata/export.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -1,8 +1,8 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <strata/export.hpp>
 #include <string>
 
 #include <strata/error.hpp>

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <memory>
+#include <strata/export.hpp>
 #include <string>
 
 STRATA_EXPORTS_BEGIN

@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <cstdint>
+#include <strata/export.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

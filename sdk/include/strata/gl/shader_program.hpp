@@ -1,6 +1,6 @@
 #pragma once
-#include <strata/export.hpp>
 #include <set>
+#include <strata/export.hpp>
 #include <string>
 #include <vector>
 
@@ -16,9 +16,9 @@ namespace strata {
 class ShaderProgram {
  public:
   struct Stage {
-    GLenum type;           // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
-    std::string origin;    // for messages
-    std::string source;    // complete source, starting with #version
+    GLenum type;         // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, GL_COMPUTE_SHADER
+    std::string origin;  // for messages
+    std::string source;  // complete source, starting with #version
   };
 
   ShaderProgram() = default;

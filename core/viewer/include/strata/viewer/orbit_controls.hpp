@@ -6,8 +6,9 @@
 namespace strata::viewer {
 
 // Navigation around a body: drag to orbit, right-drag to turn and tilt, scroll to zoom toward the point
-// under the pointer; the arrows orbit, + and - zoom, W and S fly along the line of sight. Motion scales with altitude, so a drag moves the ground under the pointer by about as much
-// at 10 km as at 10,000 km, and an arrow a tenth of the view's height.
+// under the pointer; the arrows orbit, + and - zoom, W and S fly along the line of sight. Motion scales with altitude,
+// so a drag moves the ground under the pointer by about as much at 10 km as at 10,000 km, and an arrow a tenth of the
+// view's height.
 class OrbitControls {
  public:
   OrbitControls(const Body& body, Camera& camera) : body_(body), camera_(camera) {}

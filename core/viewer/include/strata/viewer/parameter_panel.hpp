@@ -27,7 +27,7 @@ class ParameterPanel {
   void change(Engine& engine, const ParameterControl& control, const ParameterValue& value, bool committed);
 
   std::map<std::string, std::string> editedText_;  // String and Path fields being typed in, by node.parameter
-  std::string refusal_;                             // the last refused change's message, or a report
+  std::string refusal_;                            // the last refused change's message, or a report
 };
 
 }  // namespace strata::viewer

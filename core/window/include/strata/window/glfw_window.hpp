@@ -14,9 +14,9 @@ enum class NavigationKey { Left, Right, Up, Down, Closer, Farther, Forward, Back
 
 // What the window reports of the user's hands, in window pixels.
 struct PointerInput {
-  std::function<void(double dx, double dy, int button)> drag;  // button 0 left, 1 right, 2 middle
+  std::function<void(double dx, double dy, int button)> drag;    // button 0 left, 1 right, 2 middle
   std::function<void(double steps, double x, double y)> scroll;  // positive: away from the user; at the pointer
-  std::function<void(NavigationKey key)> key;                  // pressed, or held and repeating
+  std::function<void(NavigationKey key)> key;                    // pressed, or held and repeating
 };
 
 // An OpenGL 4.5 core context with a window, through GLFW. Throws std::runtime_error when no display or
