@@ -9,6 +9,7 @@
 #include <strata/plugin.hpp>
 
 #include "chroma_fusion_layer.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::composite {
 namespace {
@@ -53,6 +54,7 @@ class ChromaFusion : public Node {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.chroma_fusion";
   type.category = NodeCategory::Compositor;
   type.summary =

@@ -71,7 +71,7 @@ std::string ChromaFusionLayer::fused() const {
 std::string ChromaFusionLayer::glsl() const {
   const std::string& p = prefix_;
   return luminance_.glslOnce() + colour_.glslOnce() +
-         "#include \"composite/chroma_fusion.glsl\"\n"
+         "#include \"composite-chroma-fusion/chroma_fusion.glsl\"\n"
          "uniform int " +
          p +
          "_space;\n"

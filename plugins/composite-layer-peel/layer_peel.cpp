@@ -7,6 +7,7 @@
 
 #include "declarations.hpp"
 #include "peel_layer.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::composite {
 namespace {
@@ -61,6 +62,7 @@ class LayerPeel : public Node {
 
 NodeTypeDeclaration layerPeelDeclaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.layer_peel";
   type.category = NodeCategory::Compositor;
   type.summary = "A stack of height layers as one, its upper layers peeled away by a depth within a cutaway";

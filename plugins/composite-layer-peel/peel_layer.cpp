@@ -60,7 +60,7 @@ std::string PeelLayer::glsl() const {
   std::string code;
   for (const Layer* layer : stack_) code += layer->glslOnce();
   return code +
-         "#include \"composite/layer_peel.glsl\"\n"
+         "#include \"composite-layer-peel/layer_peel.glsl\"\n"
          "uniform int " +
          p +
          "_peel;\n"

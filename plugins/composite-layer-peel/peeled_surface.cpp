@@ -6,6 +6,7 @@
 
 #include "declarations.hpp"
 #include "peeled_surface_layer.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::composite {
 namespace {
@@ -57,6 +58,7 @@ class PeeledSurface : public Node {
 
 NodeTypeDeclaration peeledSurfaceDeclaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.peeled_surface";
   type.category = NodeCategory::Compositor;
   type.summary = "The colours of what a composite.layer_peel shows: each layer's surface, and its cut faces";

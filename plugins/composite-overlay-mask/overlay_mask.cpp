@@ -8,6 +8,7 @@
 #include <strata/plugin.hpp>
 
 #include "overlay_mask_layer.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::composite {
 namespace {
@@ -64,6 +65,7 @@ class OverlayMask : public Node {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.overlay_mask";
   type.category = NodeCategory::Compositor;
   type.summary =

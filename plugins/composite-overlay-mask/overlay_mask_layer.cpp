@@ -52,7 +52,7 @@ std::string OverlayMaskLayer::edgeWeight() const {
 std::string OverlayMaskLayer::glsl() const {
   const std::string& p = prefix_;
   return base_.glslOnce() + overlay_.glslOnce() + (mask_ ? mask_->glslOnce() : std::string()) +
-         "#include \"composite/overlay_mask.glsl\"\n"
+         "#include \"composite-overlay-mask/overlay_mask.glsl\"\n"
          "uniform float " +
          p +
          "_feather;\n"

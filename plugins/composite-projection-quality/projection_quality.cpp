@@ -8,6 +8,7 @@
 #include <strata/node_type.hpp>
 #include <strata/plugin.hpp>
 
+#include "plugin_shaders.hpp"
 #include "projection_quality_layer.hpp"
 
 namespace strata::composite {
@@ -76,6 +77,7 @@ class ProjectionQuality : public Node {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.projection_quality";
   type.category = NodeCategory::Compositor;
   type.summary = "Blends layers of one kind by how well each is sampled where it lands (isotropy, or latitude)";

@@ -45,7 +45,7 @@ std::string ProjectionQualityLayer::glsl() const {
   std::string code;
   for (const Layer* input : inputs_) code += input->glslOnce();
   return code +
-         "#include \"composite/projection_quality.glsl\"\n"
+         "#include \"composite-projection-quality/projection_quality.glsl\"\n"
          "uniform bool " +
          prefix_ +
          "_latitude;\n"

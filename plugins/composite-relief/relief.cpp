@@ -9,6 +9,7 @@
 #include <strata/node_type.hpp>
 #include <strata/plugin.hpp>
 
+#include "plugin_shaders.hpp"
 #include "relief_layer.hpp"
 
 namespace strata::composite {
@@ -74,6 +75,7 @@ class Relief : public Node {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.relief";
   type.category = NodeCategory::Compositor;
   type.summary =

@@ -103,7 +103,7 @@ std::string ReliefLayer::shaded() const {
 std::string ReliefLayer::glsl() const {
   const std::string& p = prefix_;
   return height_.glslOnce() + (surface_ ? surface_->glslOnce() : std::string()) +
-         "#include \"composite/relief.glsl\"\n"
+         "#include \"composite-relief/relief.glsl\"\n"
          "uniform vec3 " +
          p +
          "_light;\n"

@@ -9,6 +9,7 @@
 #include <strata/plugin_registry.hpp>
 
 #include "dated_files.hpp"
+#include "plugin_shaders.hpp"
 #include "temporal_blend_layer.hpp"
 #include "temporal_series.hpp"
 
@@ -143,6 +144,7 @@ class TemporalBlend : public Node {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "composite.temporal_blend";
   type.category = NodeCategory::Compositor;
   type.summary = "A time series as one layer at the scene's date: the two bracketing steps blended linearly in time";

@@ -57,7 +57,7 @@ std::string TemporalBlendLayer::glsl() const {
   std::string code;
   for (const Layer* step : steps_) code += step->glslOnce();
   code +=
-      "#include \"composite/temporal_blend.glsl\"\n"
+      "#include \"composite-temporal-blend/temporal_blend.glsl\"\n"
       "uniform int " +
       p +
       "_earlier;\n"

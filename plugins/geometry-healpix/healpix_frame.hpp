@@ -5,7 +5,7 @@
 
 namespace strata::healpix {
 
-// The terms of a reference point of a base face that shaders/geometry/healpix_offset.glsl takes unit
+// The terms of a reference point of a base face that plugins/geometry-healpix/healpix_offset.glsl takes unit
 // vectors relative to, computed in double and laid out as its std430 struct HealpixFrame. With s = x + y
 // and c = x - y of the face point, a = s - 1 is 0 where the face's equatorial zone meets its polar cap.
 struct HealpixFrame {

@@ -16,6 +16,7 @@
 #include <strata/plugin.hpp>
 
 #include "node_buffers.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::healpix {
 namespace {
@@ -39,9 +40,9 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 
   void createResources(GpuContext& gpu) override {
     surface_ = ShaderProgram(
-        {{GL_VERTEX_SHADER, "geometry/healpix_surface.vert",
-          gpu.shaders->expand("geometry/healpix_surface.vert", heights_.substitutions())},
-         {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag", gpu.shaders->expand("geometry/surface_buffer.frag")}});
+        {{GL_VERTEX_SHADER, "geometry-healpix/healpix_surface.vert",
+          gpu.shaders->expand("geometry-healpix/healpix_surface.vert", heights_.substitutions())},
+         {GL_FRAGMENT_SHADER, "strata/surface_buffer.frag", gpu.shaders->expand("strata/surface_buffer.frag")}});
     buffers_.emplace(settings_.gridCells);
     rasterisationTimer_.emplace();
   }
@@ -144,6 +145,7 @@ void HealpixGeometry::render(const FrameState& frame) {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "geometry.healpix";
   type.category = NodeCategory::Geometry;
   type.summary = "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size on screen, placed on the GPU";

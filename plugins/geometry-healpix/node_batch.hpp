@@ -12,7 +12,7 @@
 
 namespace strata::healpix {
 
-// A node as the vertex shader reads it (shaders/geometry/healpix_surface.vert, std430): its centre's terms
+// A node as the vertex shader reads it (plugins/geometry-healpix/healpix_surface.vert, std430): its centre's terms
 // for the relative HEALPix inverse, and the centre itself from the eye and from the frame's reference, in
 // double on the CPU before they become float, so that the GPU only adds small offsets
 // (docs/architecture.md, "Precision").

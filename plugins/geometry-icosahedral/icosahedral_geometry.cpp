@@ -19,6 +19,7 @@
 #include <strata/spherical_cap.hpp>
 
 #include "patch_buffers.hpp"
+#include "plugin_shaders.hpp"
 
 namespace strata::icosahedral {
 namespace {
@@ -36,11 +37,13 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
-    subdivision_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/subdivide_patches.comp",
-                                   gpu.shaders->expand("geometry/subdivide_patches.comp", heights_.substitutions())}});
+    subdivision_ =
+        ShaderProgram({{GL_COMPUTE_SHADER, "geometry-icosahedral/subdivide_patches.comp",
+                        gpu.shaders->expand("geometry-icosahedral/subdivide_patches.comp", heights_.substitutions())}});
     surface_ = ShaderProgram(
-        {{GL_VERTEX_SHADER, "geometry/icosahedral.vert", gpu.shaders->expand("geometry/icosahedral.vert")},
-         {GL_FRAGMENT_SHADER, "geometry/surface_buffer.frag", gpu.shaders->expand("geometry/surface_buffer.frag")}});
+        {{GL_VERTEX_SHADER, "geometry-icosahedral/icosahedral.vert",
+          gpu.shaders->expand("geometry-icosahedral/icosahedral.vert")},
+         {GL_FRAGMENT_SHADER, "strata/surface_buffer.frag", gpu.shaders->expand("strata/surface_buffer.frag")}});
     buffers_.emplace(table_, windings_);
     subdivisionTimer_.emplace();
     rasterisationTimer_.emplace();
@@ -142,6 +145,7 @@ void IcosahedralGeometry::render(const FrameState& frame) {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "geometry.icosahedral";
   type.category = NodeCategory::Geometry;
   type.summary = "The icosahedron tessellated for the view: patches chosen on the CPU, subdivided on the GPU";

@@ -12,7 +12,7 @@
 namespace strata::pgm {
 
 // The displaced grid of projective grid mapping [Mahsman 2010, §3.7.2] on the GPU: one vertex per grid
-// point, made by shaders/geometry/pgm_displace.comp from the cast pass's buffers, and two triangles per
+// point, made by plugins/geometry-pgm/pgm_displace.comp from the cast pass's buffers, and two triangles per
 // grid cell, drawn by pgm_grid.vert. Every ray has a point (one that misses lies on the horizon,
 // pgm_cast.comp), so the triangles are the same every frame: the diagonal from each cell's lower left to
 // its upper right corner, counter-clockwise as rows and columns run in the sampling camera's image, and so

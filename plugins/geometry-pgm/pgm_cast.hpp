@@ -17,7 +17,7 @@ namespace strata::pgm {
 // edges, where the rays it was fitted to lie. The double twin of pgm_cast.comp's gridRay.
 glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, int row);
 
-// Makes the cast pass (`program`, shaders/geometry/pgm_cast.comp) current with its uniforms: the grid's
+// Makes the cast pass (`program`, plugins/geometry-pgm/pgm_cast.comp) current with its uniforms: the grid's
 // size, the sampling frustum, the rotation from sampling space to the east-north-up frame at the point below
 // the eye (strata/camera.hpp's planetToLocal), and the cross section's constants. Every double becomes a
 // float here, and nothing planet-sized but the primary radius goes up [Mahsman 2010, §3.6.5].

@@ -22,6 +22,7 @@
 #include "grid_mesh.hpp"
 #include "grid_size.hpp"
 #include "pgm_cast.hpp"
+#include "plugin_shaders.hpp"
 #include "reference_spheres.hpp"
 #include "sampling_camera.hpp"
 #include "visible_radius.hpp"
@@ -60,14 +61,14 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
-    cast_ =
-        ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_cast.comp", gpu.shaders->expand("geometry/pgm_cast.comp")}});
-    displacement_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry/pgm_displace.comp",
-                                    gpu.shaders->expand("geometry/pgm_displace.comp", heights_.substitutions())}});
-    surface_ =
-        ShaderProgram({{GL_VERTEX_SHADER, "geometry/pgm_grid.vert", gpu.shaders->expand("geometry/pgm_grid.vert")},
-                       {GL_FRAGMENT_SHADER, "geometry/pgm_surface_buffer.frag",
-                        gpu.shaders->expand("geometry/pgm_surface_buffer.frag")}});
+    cast_ = ShaderProgram(
+        {{GL_COMPUTE_SHADER, "geometry-pgm/pgm_cast.comp", gpu.shaders->expand("geometry-pgm/pgm_cast.comp")}});
+    displacement_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry-pgm/pgm_displace.comp",
+                                    gpu.shaders->expand("geometry-pgm/pgm_displace.comp", heights_.substitutions())}});
+    surface_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "geometry-pgm/pgm_grid.vert", gpu.shaders->expand("geometry-pgm/pgm_grid.vert")},
+         {GL_FRAGMENT_SHADER, "geometry-pgm/pgm_surface_buffer.frag",
+          gpu.shaders->expand("geometry-pgm/pgm_surface_buffer.frag")}});
     castBuffers_.emplace(grid_);
     mesh_.emplace(grid_);
     visibleRadius_.emplace(*gpu.shaders);
@@ -174,6 +175,7 @@ void PgmGeometry::rasterise(const View& view) {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "geometry.pgm";
   type.category = NodeCategory::Geometry;
   type.summary =

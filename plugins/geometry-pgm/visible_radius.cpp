@@ -26,8 +26,8 @@ float fromOrderedBits(std::uint32_t ordered) {
 }  // namespace
 
 VisibleRadius::VisibleRadius(const ShaderLibrary& library)
-    : program_(
-          {{GL_COMPUTE_SHADER, "geometry/pgm_least_radius.comp", library.expand("geometry/pgm_least_radius.comp")}}) {
+    : program_({{GL_COMPUTE_SHADER, "geometry-pgm/pgm_least_radius.comp",
+                 library.expand("geometry-pgm/pgm_least_radius.comp")}}) {
   glCreateBuffers(1, &least_);
   glNamedBufferStorage(least_, sizeof(std::uint32_t), nullptr, 0);
   const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;

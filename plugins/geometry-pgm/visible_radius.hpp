@@ -17,7 +17,7 @@ namespace strata::pgm {
 // resolves 2 mm, and the two are the same up to the body's radius (the thesis writes the radius
 // [Mahsman 2010, §3.4.1] and the height [Mahsman 2010, §3.7.2]).
 //
-// reduce() folds the texture to its minimum on the GPU (shaders/geometry/pgm_least_radius.comp), copies
+// reduce() folds the texture to its minimum on the GPU (plugins/geometry-pgm/pgm_least_radius.comp), copies
 // it into a persistently mapped slot and sets a fence; latest() only asks the fences with a zero timeout,
 // so neither ever waits for the GPU. Make and use it on the GL thread.
 class VisibleRadius {

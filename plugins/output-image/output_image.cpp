@@ -13,6 +13,7 @@
 #include <strata/output.hpp>
 #include <strata/plugin.hpp>
 
+#include "plugin_shaders.hpp"
 #include "translucent_surfaces.hpp"
 
 namespace strata::image {
@@ -39,11 +40,11 @@ class ImageOutput : public Node, public FrameOutput {
     }
     program_ = ShaderProgram(
         {{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
-         {GL_FRAGMENT_SHADER, "output/composite.frag",
-          gpu.shaders->expand("output/composite.frag", {{"STRATA_DISPLAY_GLSL", displayGlsl_},
-                                                        {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                                                        {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                                                        {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+         {GL_FRAGMENT_SHADER, "output-image/composite.frag",
+          gpu.shaders->expand("output-image/composite.frag", {{"STRATA_DISPLAY_GLSL", displayGlsl_},
+                                                              {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                              {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                                                              {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
   }
 
@@ -113,6 +114,7 @@ class ImageOutput : public Node, public FrameOutput {
 
 NodeTypeDeclaration declaration() {
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "output.image";
   type.category = NodeCategory::Output;
   type.summary = "Composes surface layers over a geometry, lights them and delivers 8-bit sRGB frames (PNG)";

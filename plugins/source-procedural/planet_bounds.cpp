@@ -10,7 +10,7 @@
 namespace strata::procedural {
 namespace {
 
-// The GPU sums the octaves in float (shaders/procedural/planet.glsl): near the frame's reference, where a
+// The GPU sums the octaves in float (plugins/source-procedural/planet.glsl): near the frame's reference, where a
 // centimetre shows, to a few ulps of each octave's amplitude, millimetres at the default 12 km. A hundred
 // thousandth of the amplitude (12 cm) covers that by an order and is still small beside a metre up.
 constexpr double kFloatSlack = 1e-5;

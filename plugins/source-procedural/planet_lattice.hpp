@@ -3,7 +3,7 @@
 // relative to that point (issue 27): octave k's noise point of the reference's normal, 2^k R / wavelength
 // times it plus octave k's shift (planet_model.cpp), taken apart in double into an integer skewed cell of
 // the simplex lattice and a small remainder, so that the GPU adds each sample's own small offset to the
-// remainder alone (shaders/procedural/planet.glsl, planetHeightAt). In float the whole point resolves
+// remainder alone (plugins/source-procedural/planet.glsl, planetHeightAt). In float the whole point resolves
 // 0.4 m of ground on Earth at the default wavelength; the remainder micrometres.
 #include <array>
 

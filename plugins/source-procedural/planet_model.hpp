@@ -35,7 +35,7 @@ inline constexpr glm::dvec3 kOctaveShift(0.6180339887, 0.3819660113, 0.236067977
 
 // The demonstration planet of [Kooima 2008, ch. 4]: false data, a fractal sum of 3D
 // simplex noise over the unit sphere, "observed" through several projections and resolutions. Heights and
-// colours are computed in double here; shaders/procedural/planet.glsl does the same in float.
+// colours are computed in double here; plugins/source-procedural/planet.glsl does the same in float.
 class PlanetModel {
  public:
   PlanetModel(const PlanetParameters& parameters, double radius);

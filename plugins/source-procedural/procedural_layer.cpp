@@ -18,7 +18,7 @@ std::string ProceduralLayer::glsl() const {
   const std::string& p = prefix_;
   const std::string value = kind_ == LayerKind::Height ? "vec4(h * " + p + "_scale, 0.0, 0.0, 1.0)"
                                                        : "vec4(planetColour(h, " + p + "_planet), 1.0)";
-  return "#include \"procedural/planet.glsl\"\n"
+  return "#include \"source-procedural/planet.glsl\"\n"
          "uniform ProceduralPlanet " +
          p +
          "_planet;\n"

@@ -8,7 +8,7 @@
 
 namespace strata::procedural {
 
-// The procedural planet as a layer, computed per sample on the GPU (shaders/procedural/planet.glsl) at the
+// The procedural planet as a layer, computed per sample on the GPU (plugins/source-procedural/planet.glsl) at the
 // sample's unit normal: no texture, so it is sharp at any distance, and the sample's footprint decides how
 // many octaves it sums, so it never aliases. Heights (kind height) come multiplied by `scale`; colours
 // (kind color) are those of the true heights, with their contour lines.

@@ -6,6 +6,7 @@
 
 #include <strata/plugin.hpp>
 
+#include "plugin_shaders.hpp"
 #include "procedural_layer.hpp"
 #include "source_checker.hpp"
 
@@ -40,6 +41,7 @@ class ProceduralSource : public Node {
 NodeTypeDeclaration declaration() {
   const PlanetParameters defaults;
   NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "source.procedural";
   type.category = NodeCategory::Source;
   type.summary = "A procedural planet of 3D simplex noise (Kooima 2008's demonstration planet), as heights or colours";

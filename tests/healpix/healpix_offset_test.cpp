@@ -1,4 +1,4 @@
-// shaders/geometry/healpix_offset.glsl run in float on the headless context, against strata/healpix.hpp's
+// plugins/geometry-healpix/healpix_offset.glsl run in float on the headless context, against strata/healpix.hpp's
 // inverse in double: the unit vector of a point of a node of a base face minus that of the node's centre,
 // for nodes of every face from the whole face (level 0) down to level 26 (2^-26 of a face, about 10 cm on
 // Earth), at random places, at the poles, at the corners and astride the boundary between the polar caps
@@ -32,7 +32,7 @@ constexpr double kTolerance = 1e-6;  // of the difference's length
 
 const char* kProbe = R"(#version 450 core
 #include "strata/precise_trig.glsl"
-#include "geometry/healpix_offset.glsl"
+#include "geometry-healpix/healpix_offset.glsl"
 layout(local_size_x = 64) in;
 struct Probe { HealpixFrame frame; vec4 offset; };
 layout(std430, binding = 0) readonly buffer Probes { Probe probes[]; };
@@ -79,7 +79,7 @@ struct Errors {
 
 // healpixOffset for each probe, run on the GPU and read back.
 std::vector<glm::vec4> offsetsOnGpu(const std::vector<Probe>& probes) {
-  ShaderLibrary library;
+  ShaderLibrary library = test::pluginShaderLibrary();
   library.add("test/healpix_offset_probe.comp", kProbe);
   const ShaderProgram program(
       {{GL_COMPUTE_SHADER, "test/healpix_offset_probe.comp", library.expand("test/healpix_offset_probe.comp")}});

@@ -10,10 +10,10 @@ GpuPatches::GpuPatches(const std::string& heightFunction, const std::string& hei
     : context_(strata::test::headlessContext()), table_(kDepth), windings_(table_), buffers_(table_, windings_) {
   const std::string defines =
       heightFunction.empty() ? "" : "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " + heightFunction;
-  program_ = ShaderProgram(
-      {{GL_COMPUTE_SHADER, "subdivide_patches.comp",
-        ShaderLibrary().expand("geometry/subdivide_patches.comp",
-                               {{"STRATA_PROGRAM_DEFINES", defines}, {"STRATA_HEIGHT_LAYER_GLSL", heightGlsl}})}});
+  program_ = ShaderProgram({{GL_COMPUTE_SHADER, "subdivide_patches.comp",
+                             strata::test::pluginShaderLibrary().expand(
+                                 "geometry-icosahedral/subdivide_patches.comp",
+                                 {{"STRATA_PROGRAM_DEFINES", defines}, {"STRATA_HEIGHT_LAYER_GLSL", heightGlsl}})}});
 }
 
 GpuPatches::Subdivided GpuPatches::subdivide(const std::vector<Patch>& patches, const View& view,

@@ -1,4 +1,4 @@
-// The compute pass of geometry.icosahedral (shaders/geometry/subdivide_patches.comp) run on the headless
+// The compute pass of geometry.icosahedral (plugins/geometry-icosahedral/subdivide_patches.comp) run on the headless
 // context and read back, against the subdivision done in double on an Earth-sized body. A vertex's
 // longitude and latitude must be right on the ground to 1 mm plus a millionth of its distance from the
 // eye: a millionth of a radian is a thousandth of a pixel of a 1280-pixel, 45-degree view, and float

@@ -1,4 +1,4 @@
-// The PGM cast pass (shaders/geometry/pgm_cast.comp) run in float on the headless context and read back,
+// The PGM cast pass (plugins/geometry-pgm/pgm_cast.comp) run in float on the headless context and read back,
 // against castRay (plugins/geometry-pgm/cross_section.hpp) in double for the same grid rays, in the local
 // east-north-up frame, from 1 m to 20,000 km above Mars, looking straight down and tilted 60 and 85 degrees
 // ([Mahsman 2010, §3.6]).
@@ -119,8 +119,8 @@ Errors castOnGpu(double altitude, double tilt) {
   const SamplingCamera camera = samplingCamera(view, spheres.primary);
   const glm::dmat3 samplingToLocal = planetToLocal(kReference) * glm::transpose(camera.planetToSampling);
   const glm::dvec3 nadir(0.0, 0.0, -1.0);
-  const ShaderLibrary library;
-  const ShaderProgram program({{GL_COMPUTE_SHADER, "pgm_cast.comp", library.expand("geometry/pgm_cast.comp")}});
+  const ShaderLibrary& library = test::pluginShaderLibrary();
+  const ShaderProgram program({{GL_COMPUTE_SHADER, "pgm_cast.comp", library.expand("geometry-pgm/pgm_cast.comp")}});
   useCast(program, camera, section, samplingToLocal, kGrid);
   const CastBuffers buffers(kGrid);
   buffers.cast();

@@ -1,4 +1,4 @@
-// The least visible height of a frame, reduced on the GPU by shaders/geometry/pgm_least_radius.comp and read
+// The least visible height of a frame, reduced on the GPU by plugins/geometry-pgm/pgm_least_radius.comp and read
 // back without waiting (plugins/geometry-pgm/visible_radius.hpp), and the primary radius made from it
 // ([Mahsman 2010, §3.4.1], method 2). Heights are random in [-8000, 21000) m, Mars's range, with one lower
 // height planted at a random covered texel and large uncovered regions (+infinity). The minimum must come
@@ -71,7 +71,7 @@ std::optional<double> leastOf(const Heights& heights) {
 class PgmVisibleRadius : public ::testing::Test {
  protected:
   void SetUp() override { test::headlessContext(); }
-  const ShaderLibrary library_;
+  const ShaderLibrary& library_ = test::pluginShaderLibrary();
 };
 
 TEST_F(PgmVisibleRadius, FindsThePlantedMinimumOnAScreen) {

@@ -42,7 +42,7 @@ std::string planetPipeline(const CameraCase& c) {
 glm::dvec3 normalOf(const SurfaceHit& hit) { return unitNormal(glm::radians(hit.lon), glm::radians(hit.lat)); }
 
 // The change of (lon, lat) in radians from `here` to the pixel one step away, or back from the one on the
-// other side at the body's edge, with the 2 pi jump removed: what output/composite.frag computes.
+// other side at the body's edge, with the 2 pi jump removed: what plugins/output-image/composite.frag computes.
 std::optional<glm::dvec2> footprintStep(const View& view, double radius, int x, int y, int dx, int dy,
                                         const SurfaceHit& here) {
   std::optional<SurfaceHit> other = raycastSphere(view, radius, x + dx, y + dy);
@@ -53,7 +53,7 @@ std::optional<glm::dvec2> footprintStep(const View& view, double radius, int x, 
   return d;
 }
 
-// Metres of ground to the next pixel, the longer of the two steps, as shaders/procedural/planet.glsl has it.
+// Metres of ground to the next pixel, the longer of the two steps, as plugins/source-procedural/planet.glsl has it.
 double footprintMetres(const glm::dvec2& dx, const glm::dvec2& dy, double latDeg, double radius) {
   const double cosLat = std::cos(glm::radians(latDeg));
   return radius * std::max(glm::length(glm::dvec2(dx.x * cosLat, dx.y)), glm::length(glm::dvec2(dy.x * cosLat, dy.y)));

@@ -4,7 +4,7 @@
 namespace strata::test {
 
 // composite.chroma_fusion's arithmetic in double on the CPU, written from the standards rather than from its
-// GLSL (shaders/composite/opponent_spaces.glsl, chroma_fusion.glsl), to predict what the method itself
+// GLSL (plugins/composite-chroma-fusion/opponent_spaces.glsl, chroma_fusion.glsl), to predict what the method itself
 // cannot reproduce of an image, apart from rendering. Colours are scene-linear Rec. 709 with a D65 white.
 using LinearColour = std::array<double, 3>;
 

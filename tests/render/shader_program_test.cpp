@@ -18,6 +18,20 @@ TEST(ShaderLibrary, ExpandsEachIncludeOnce) {
   EXPECT_EQ(text.find("const float PI"), text.rfind("const float PI")) << text;
 }
 
+// libstrata_core holds the SDK's shared GLSL only; each plugin's own comes from its module, through its
+// node declarations, as an out-of-tree plugin's does.
+TEST(ShaderLibrary, PluginsGlslComesFromTheirModulesNotTheCore) {
+  const ShaderLibrary core;
+  EXPECT_TRUE(core.has("strata/surface_point.glsl"));
+  EXPECT_TRUE(core.has("strata/surface_buffer.frag"));
+  for (const char* name :
+       {"composite-relief/relief.glsl", "geometry-pgm/pgm_cast.comp", "geometry-icosahedral/subdivide_patches.comp",
+        "output-image/composite.frag", "source-procedural/planet.glsl"}) {
+    EXPECT_FALSE(core.has(name)) << name;
+    EXPECT_TRUE(pluginShaderLibrary().has(name)) << name;
+  }
+}
+
 TEST(ShaderLibrary, UnknownIncludeNamesTheIncludingSource) {
   ShaderLibrary library;
   try {

@@ -1,5 +1,7 @@
 #include "rendering.hpp"
 
+#include <strata/plugin_registry.hpp>
+
 namespace strata::test {
 
 GlContext& headlessContext() {
@@ -17,6 +19,17 @@ std::unique_ptr<Engine> makeEngine() {
   EngineOptions options;
   options.pluginDirectories = {STRATA_TEST_PLUGIN_DIR};
   return std::make_unique<Engine>(options);
+}
+
+const ShaderLibrary& pluginShaderLibrary() {
+  static const ShaderLibrary library = [] {
+    PluginRegistry plugins;
+    plugins.loadDirectories({STRATA_TEST_PLUGIN_DIR});
+    ShaderLibrary made;
+    made.addPluginSources(plugins);
+    return made;
+  }();
+  return library;
 }
 
 Image renderFrame(Engine& engine, const std::filesystem::path& pipelineFile, int width, int height) {

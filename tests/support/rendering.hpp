@@ -5,6 +5,7 @@
 
 #include <strata/engine.hpp>
 #include <strata/gl/context.hpp>
+#include <strata/gl/shader_library.hpp>
 
 #include "test_rasters.hpp"
 
@@ -14,6 +15,10 @@ namespace strata::test {
 // engine loading the plugins of this build.
 GlContext& headlessContext();
 std::unique_ptr<Engine> makeEngine();
+
+// The SDK's GLSL and every plugin's of this build, as an engine holds them: for tests that compile one of
+// a plugin's shaders on its own.
+const ShaderLibrary& pluginShaderLibrary();
 
 // Loads `pipelineFile`, renders one frame and reads it back (top row first).
 Image renderFrame(Engine& engine, const std::filesystem::path& pipelineFile, int width, int height);

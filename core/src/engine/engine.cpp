@@ -88,8 +88,7 @@ void Engine::load(const PipelineBuilder& pipeline, const std::vector<std::string
 // throws leaves the engine as it was.
 void Engine::install(Pipeline loaded, const std::vector<std::string>& overrides) {
   auto pipeline = std::make_unique<Pipeline>(std::move(loaded));
-  for (const ProjectionDeclaration* projection : impl_->registry.projections())
-    for (const auto& [name, source] : projection->shaderSources) impl_->shaders.add(name, source);
+  impl_->shaders.addPluginSources(impl_->registry);
   auto pages = std::make_unique<PageCache>(pipeline->cache);
   GpuContext gpu{&impl_->shaders, pages.get()};
   auto graph = std::make_unique<NodeGraph>(*pipeline, impl_->registry, impl_->workers, gpu);

@@ -3,15 +3,23 @@
 #include <stdexcept>
 
 #include <strata/gl/shader_library.hpp>
+#include <strata/plugin_registry.hpp>
 
 namespace strata {
 namespace detail {
-const std::map<std::string, std::string>& builtinShaderSources();  // generated from shaders/
+const std::map<std::string, std::string>& builtinShaderSources();  // generated from shaders/strata/
 }
 
 ShaderLibrary::ShaderLibrary() : sources_(detail::builtinShaderSources()) {}
 
 void ShaderLibrary::add(const std::string& name, std::string source) { sources_[name] = std::move(source); }
+
+void ShaderLibrary::addPluginSources(const PluginRegistry& registry) {
+  for (const NodeTypeDeclaration* type : registry.types())
+    for (const auto& [name, source] : type->shaderSources) add(name, source);
+  for (const ProjectionDeclaration* projection : registry.projections())
+    for (const auto& [name, source] : projection->shaderSources) add(name, source);
+}
 
 bool ShaderLibrary::has(const std::string& name) const { return sources_.count(name) != 0; }
 

@@ -17,6 +17,8 @@
 #include <strata/plugin.hpp>
 #include <strata/srgb.hpp>
 
+#include "plugin_shaders.hpp"
+
 namespace slope_mask {
 namespace {
 
@@ -49,39 +51,18 @@ class SlopeMaskLayer : public strata::Layer {
   strata::LayerKind kind() const override { return strata::LayerKind::Color; }
   std::string samplingFunction() const override { return name_; }
 
-  // Every name is prefixed by the node's, so that two slope masks in one program do not clash.
+  // Every name is prefixed by the node's, so that two slope masks in one program do not clash; the paint
+  // itself is slope_mask.glsl's, which strata_add_plugin embedded in this module.
   std::string glsl() const override {
     const std::string& p = name_;
-    return height_.glslOnce() + surface_.glslOnce() + "uniform float " + p +
-           "_radius;\n"
-           "uniform float " +
-           p +
-           "_threshold;\n"
-           "uniform vec3 " +
-           p +
-           "_colour;\n"
-           "uniform float " +
-           p + "_opacity;\n" + strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + "vec4 " + p +
-           "(SurfacePoint p) {\n"
-           "  vec4 surface = " +
-           surface_.samplingFunction() +
-           "(p);\n"
-           "  vec4 height = " +
-           height_.samplingFunction() +
-           "(p);\n"
-           "  if (height.a <= 0.0 || slopeAngle(" +
-           p + "_slopes(p, height.r), 1.0) <= " + p +
-           "_threshold)\n"
-           "    return surface;\n"
-           "  float paint = " +
-           p +
-           "_opacity * height.a, rest = surface.a * (1.0 - paint);\n"
-           "  float coverage = paint + rest;  // the paint over the surface (values are not premultiplied)\n"
-           "  return coverage > 0.0 ? vec4((" +
-           p +
-           "_colour * paint + surface.rgb * rest) / coverage, coverage)\n"
-           "                        : vec4(0.0);\n"
-           "}\n";
+    const std::string slopes = strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius");
+    return height_.glslOnce() + surface_.glslOnce() + "#include \"slope_mask/slope_mask.glsl\"\n" +    //
+           "uniform float " + p + "_radius, " + p + "_threshold, " + p + "_opacity;\n" +               //
+           "uniform vec3 " + p + "_colour;\n" + slopes +                                               //
+           "vec4 " + p + "(SurfacePoint p) {\n" +                                                      //
+           "  vec4 height = " + height_.samplingFunction() + "(p);\n" +                                //
+           "  return slopeMaskOver(" + surface_.samplingFunction() + "(p), height, slopeAngle(" + p +  //
+           "_slopes(p, height.r), 1.0), " + p + "_threshold, " + p + "_colour, " + p + "_opacity);\n}\n";
   }
 
   void bind(strata::ShaderProgram& program, strata::TextureUnits& units) const override {
@@ -127,6 +108,7 @@ class SlopeMask : public strata::Node {
 strata::NodeTypeDeclaration declaration() {
   using strata::LayerKind, strata::ParameterType, strata::PortType;
   strata::NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // slope_mask.glsl, embedded by strata_add_plugin
   type.type = "composite.slope_mask";
   type.category = strata::NodeCategory::Compositor;
   type.summary = "Paints ground steeper than a threshold over a colour layer, from any height layer";

@@ -48,7 +48,7 @@ glm::dvec3 unitNormal(double lonRad, double latRad);
 // The rotation from planet-fixed axes to the east-north-up frame at a longitude and latitude (radians): its
 // rows are east, north and up. At View::reference it is the frame in which the point below the eye is
 // (0, 0, 1) exactly, which the geometry generators place and measure points in (see
-// shaders/geometry/lonlat_from_reference.glsl).
+// shaders/strata/lonlat_from_reference.glsl).
 glm::dmat3 planetToLocal(glm::dvec2 lonlat);
 
 }  // namespace strata

@@ -1,5 +1,6 @@
 #pragma once
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <strata/export.hpp>
@@ -31,6 +32,10 @@ struct NodeTypeDeclaration {
   std::optional<PortType> output;  // what the node offers downstream; none for outputs
   std::vector<ParameterDeclaration> parameters;
   NodeFactory create;
+  // The GLSL files this type's programs and layers include, by the name an `#include "name"` gives:
+  // "<plugin>/<file>" by convention (strata_add_plugin(... SHADERS ...) embeds them so and declares
+  // strata::plugin::shaderSources() for this field). Every engine's ShaderLibrary holds them.
+  std::map<std::string, std::string> shaderSources = {};
 
   const PortDeclaration* findInput(const std::string& name) const;
   const ParameterDeclaration* findParameter(const std::string& name) const;

@@ -12,7 +12,7 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A linked GLSL 4.50 program. A compile or link failure throws std::runtime_error quoting the driver's log
-// and the offending source lines, named by the stage's origin (e.g. "geometry/icosahedral.vert").
+// and the offending source lines, named by the stage's origin (e.g. "geometry-icosahedral/icosahedral.vert").
 class ShaderProgram {
  public:
   struct Stage {

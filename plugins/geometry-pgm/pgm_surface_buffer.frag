@@ -5,7 +5,7 @@
 // interpolated longitudes would sweep through 180 degrees across a triangle that straddles the meridian
 // opposite the reference. Its local-frame form keeps float's precision near the eye.
 #include "strata/precise_trig.glsl"
-#include "geometry/lonlat_from_reference.glsl"
+#include "strata/lonlat_from_reference.glsl"
 
 in vec3 vLocalNormal;
 in vec3 vShadingNormal;

@@ -10,8 +10,8 @@ STRATA_PROGRAM_DEFINES
 // the eye.
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
-#include "geometry/lonlat_from_reference.glsl"
-#include "geometry/pgm_grid_vertex.glsl"
+#include "strata/lonlat_from_reference.glsl"
+#include "geometry-pgm/pgm_grid_vertex.glsl"
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(std430, binding = 0) readonly buffer Normals { vec4 normals[]; };  // the cast pass's
@@ -27,7 +27,7 @@ uniform float primaryOffset;     // R - r_p, m: from the primary sphere down to 
 
 #ifdef STRATA_HAS_HEIGHT
 STRATA_HEIGHT_LAYER_GLSL
-#include "geometry/height_sampling.glsl"
+#include "strata/height_sampling.glsl"
 
 // Below this the spacing is taken as this, so that the shading normal's differences never divide by zero
 // where neighbours coincide (rays that miss, drawn on the same horizon point). Far below any spacing a grid

@@ -1,6 +1,6 @@
 // The procedural planet of plugins/source-procedural/planet_model.cpp, in float: the same octaves, shifts,
 // seeds, footprint limit and colour ramp (that file says why each is what it is).
-#include "procedural/simplex_noise.glsl"
+#include "source-procedural/simplex_noise.glsl"
 #include "strata/local_offsets.glsl"
 #include "strata/surface_point.glsl"
 

@@ -1,4 +1,7 @@
-// composite.overlay_mask's pieces ([Kooima 2008, §4.2]).
+// What compositors share: a sample's footprint on the body, widened for a filtered look-up, and "over"
+// with coverages (composite.overlay_mask lays an overlay over its base; composite.chroma_fusion its fused
+// colour over grey).
+#include "strata/surface_point.glsl"
 
 // A layer's footprint in metres along the body: the longer of the sample's two steps (SurfacePoint).
 float footprintMetres(SurfacePoint p, float radius) {
@@ -13,14 +16,6 @@ SurfacePoint widenedFootprint(SurfacePoint p, float scale) {
   p.lonlatDy *= scale;
   return p;
 }
-
-// A mask layer's weight: its value, clamped to [0, 1] (a 0/1 raster, a rasterised polygon, or soft), times
-// its coverage (0 beyond its extent: a mask shows the overlay only where it says so).
-float maskWeight(vec4 mask) { return clamp(mask.r, 0.0, 1.0) * mask.a; }
-
-// The overlay's weight from its coverage averaged over half the feather's width: 1 inside, 0.5 about its
-// edge, 0 outside, so that 2 c - 1 runs from 0 at the edge to 1 about half the width inside it.
-float featheredWeight(float averagedCoverage) { return clamp(2.0 * averagedCoverage - 1.0, 0.0, 1.0); }
 
 // "Over" with coverages, where [Kooima 2008, §4.2] accumulates normally, which would average the overlay
 // with its base (docs/references.md, Errata): the overlay's value where it has weight a, the base's, with

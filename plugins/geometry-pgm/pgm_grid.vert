@@ -3,7 +3,7 @@
 // from the grid's buffer by the triangles' indices (grid_mesh.cpp). Points arrive relative to
 // the eye in the local frame at the point below it, so a rotation is all that is left ([Mahsman 2010, §3.6.5];
 // docs/architecture.md, "Precision").
-#include "geometry/pgm_grid_vertex.glsl"
+#include "geometry-pgm/pgm_grid_vertex.glsl"
 
 layout(std430, binding = 0) readonly buffer Vertices { GridVertex vertices[]; };
 

@@ -70,7 +70,7 @@ vec2 geodesicMidpoint(vec2 j, vec2 k) {
 
 #ifdef STRATA_HAS_HEIGHT
 STRATA_HEIGHT_LAYER_GLSL
-#include "geometry/height_sampling.glsl"
+#include "strata/height_sampling.glsl"
 #endif
 
 // The face-on distance of a point of the sphere (patch_shell.hpp), m.

@@ -11,8 +11,8 @@ STRATA_PROGRAM_DEFINES
 #include "strata/constants.glsl"
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
-#include "geometry/healpix_offset.glsl"
-#include "geometry/lonlat_from_reference.glsl"
+#include "geometry-healpix/healpix_offset.glsl"
+#include "strata/lonlat_from_reference.glsl"
 
 struct HealpixNode {
   HealpixFrame frame;
@@ -50,7 +50,7 @@ out vec3 vShadingNormal;
 
 #ifdef STRATA_HAS_HEIGHT
 STRATA_HEIGHT_LAYER_GLSL
-#include "geometry/height_sampling.glsl"
+#include "strata/height_sampling.glsl"
 #endif
 
 // The place of an outline vertex in its node's run of boundary vertices, edge by edge from corner e towards

@@ -1,7 +1,7 @@
 // composite.chroma_fusion's pieces: high-resolution luminance, low-resolution chroma ([Kooima 2008, §1.1],
 // HiRISE luminance with Viking chroma, and [Kooima 2008, §3.4.3], colour-space transformations).
-#include "composite/opponent_spaces.glsl"
-#include "composite/overlay_mask.glsl"
+#include "composite-chroma-fusion/opponent_spaces.glsl"
+#include "strata/compositing.glsl"
 
 // The relative luminance the fused colour takes where the colour layer's is `colour`, the luminance layer's
 // `pan` and its low-pass at the colour layer's resolution `panLowpass`. Matching 0 (none): the pan's own.
