@@ -62,7 +62,9 @@ TEST(HostLog, ASourcesWarningReachesTheHostsSinkAndNotStderr) {
   renderFrame(*engine, pipeline, 64, 32);
   const std::string printed = testing::internal::GetCapturedStderr();
 
-  const std::vector<LogMessage> messages = log.messages();
+  std::vector<LogMessage> messages;  // of this file: a driver may log its own messages meanwhile
+  for (const LogMessage& message : log.messages())
+    if (message.text.find("flat.tif") != std::string::npos) messages.push_back(message);
   ASSERT_EQ(messages.size(), 1u) << printed;
   EXPECT_EQ(messages[0].level, LogLevel::Warning);
   EXPECT_NE(messages[0].text.find("flat.tif' (4100x2050) has no overviews"), std::string::npos) << messages[0].text;

@@ -8,8 +8,6 @@
 
 #include <strata/gl/context.hpp>
 
-#include "gl/resident_libraries.hpp"
-
 namespace strata {
 namespace {
 

@@ -1,4 +1,4 @@
-#include "gl/resident_libraries.hpp"
+#include <strata/gl/context.hpp>
 
 #include <dlfcn.h>
 #include <link.h>

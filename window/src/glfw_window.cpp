@@ -5,8 +5,6 @@
 
 #include <strata/window/glfw_window.hpp>
 
-#include "gl/resident_libraries.hpp"
-
 namespace strata {
 namespace {
 
