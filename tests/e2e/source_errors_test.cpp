@@ -26,6 +26,9 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::array<double, 6> kNearTheEquator{-30.0, 0.1, 0.0, 15.0, 0.0, -0.1};
+// Heights in deflated tiles, whose damage a reader sees tile by tile; 255: no data.
+const RasterFileSpec kDeflatedTiles{"+proj=longlat +R=3396190",       kNearTheEquator, 600, 300, 1, GDT_Float32, 255.0,
+                                    {"TILED=YES", "COMPRESS=DEFLATE"}};
 
 class SourceErrors : public StrataCommandTest {
  protected:
@@ -106,14 +109,7 @@ TEST_F(SourceErrors, ATruncatedRasterRendersWithEachUnreadablePageReportedOnce) 
 }
 
 TEST_F(SourceErrors, ACorruptCompressedTileRendersWithEachUnreadablePageReportedOnce) {
-  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190",
-                                    kNearTheEquator,
-                                    600,
-                                    300,
-                                    1,
-                                    GDT_Float32,
-                                    255.0,
-                                    {"TILED=YES", "COMPRESS=DEFLATE"}});
+  writeRasterFile(file("bad.tif"), kDeflatedTiles);
   damage(file("bad.tif"), static_cast<std::streamoff>(fs::file_size(file("bad.tif")) / 2), 4096);
   expectEachPageReportedOnce(renderRaster(file("bad.tif")), "bad.tif");
 }
@@ -122,14 +118,7 @@ TEST_F(SourceErrors, ACorruptCompressedTileRendersWithEachUnreadablePageReported
 // that cannot be read whole is counted again tile by tile, so a peak in the damaged tile's row of tiles
 // counts, and the height range a pipeline gives must hold it.
 TEST_F(SourceErrors, ACorruptTileLeavesOnlyItselfOutOfTheHeightsCounted) {
-  writeRasterFile(file("bad.tif"), {"+proj=longlat +R=3396190",
-                                    kNearTheEquator,
-                                    600,
-                                    300,
-                                    1,
-                                    GDT_Float32,
-                                    255.0,
-                                    {"TILED=YES", "COMPRESS=DEFLATE"}});
+  writeRasterFile(file("bad.tif"), kDeflatedTiles);
   std::string offset, size;
   {
     std::unique_ptr<GDALDataset> dataset(GDALDataset::Open(file("bad.tif").c_str(), GDAL_OF_RASTER | GDAL_OF_UPDATE));
