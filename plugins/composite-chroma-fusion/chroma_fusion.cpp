@@ -4,8 +4,10 @@
 #include <memory>
 #include <string>
 
+#include <strata/layer_capabilities.hpp>
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "chroma_fusion_layer.hpp"
@@ -13,6 +15,46 @@
 
 namespace strata::composite {
 namespace {
+
+using Space = ChromaFusionLayer::Space;
+using Matching = ChromaFusionLayer::Matching;
+
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct ChromaFusionSettings {
+  // Lab: its lightness depends on luminance alone, so a panchromatic measurement sets it exactly, and its chroma
+  // is perceptually even.
+  Space space = Space::Lab;
+  double strength = 1.0;  // the fusion the node is for; lower it to fade the luminance's detail in and out
+  // Detail: two data sets seldom agree in absolute brightness (sensor, exposure, illumination), and the colour's
+  // own brightness is what keeps its hue.
+  Matching matching = Matching::Detail;
+};
+
+// Every parameter is live: the space, the strength and the matching change the next frame.
+const ParameterBindings<ChromaFusionSettings>& chromaFusionParameters() {
+  using S = ChromaFusionSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .choice(&S::space,
+                  {.name = "space",
+                   .doc = "the opponent space whose chroma is kept: lab (CIE L*a*b*, D65) or ycbcr (BT.709 Y'CbCr of "
+                          "the sRGB-encoded values, as image files hold it)",
+                   .live = true},
+                  {{"lab", Space::Lab}, {"ycbcr", Space::YCbCr}})
+          .add(&S::strength,
+               {.name = "strength",
+                .minimum = 0.0,
+                .maximum = 1.0,
+                .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion",
+                .live = true})
+          .choice(&S::matching,
+                  {.name = "matching",
+                   .doc = "detail: the colour layer's luminance times the luminance layer's ratio to its own "
+                          "low-pass at the colour layer's resolution; none: the luminance layer's luminance as it is",
+                   .live = true},
+                  {{"detail", Matching::Detail}, {"none", Matching::None}});
+  return bindings;
+}
 
 // One node on both ports would paste its layer's GLSL into the program twice, which does not compile; and
 // fusing an image with itself changes nothing.
@@ -25,13 +67,10 @@ const Layer& colourOf(const NodeSetup& setup) {
 }
 
 ChromaFusionLayer::Fusion fusionOf(const ParameterSet& parameters, const Layer& colour) {
-  using Space = ChromaFusionLayer::Space;
-  using Matching = ChromaFusionLayer::Matching;
-  const ChromaFusionLayer::Fusion fusion{parameters.string("space") == "ycbcr" ? Space::YCbCr : Space::Lab,
-                                         parameters.real("strength"),
-                                         parameters.string("matching") == "detail" ? Matching::Detail : Matching::None};
-  if (fusion.matching == Matching::Detail && colour.texelStepsFunction().empty())
-    throw Error(parameters.where("matching"),
+  const ChromaFusionSettings settings = chromaFusionParameters().read(parameters);
+  const ChromaFusionLayer::Fusion fusion{settings.space, settings.strength, settings.matching};
+  if (fusion.matching == Matching::Detail && texelStepsFunctionOf(colour).empty())
+    throw Error(chromaFusionParameters().where(parameters, &ChromaFusionSettings::matching),
                 "the colour layer has no texels (procedural, or a composite that offers none), whose size the "
                 "luminance's detail is measured against",
                 "give a raster colour layer (source.gdal), or matching: none to take the luminance as it is");
@@ -70,35 +109,7 @@ NodeTypeDeclaration declaration() {
                   .kinds = {LayerKind::Color},
                   .doc = "the low-resolution colour layer whose chroma the result takes"}};
   type.output = PortType::Layer;
-  // Every parameter is a uniform: the space, the strength and the matching change the next frame.
-  type.parameters = {
-      // lab: its lightness depends on luminance alone, so a panchromatic measurement sets it exactly, and its
-      // chroma is perceptually even
-      {.name = "space",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("lab"),
-       .doc = "the opponent space whose chroma is kept: lab (CIE L*a*b*, D65) or ycbcr (BT.709 Y'CbCr of the "
-              "sRGB-encoded values, as image files hold it)",
-       .choices = {"lab", "ycbcr"},
-       .live = true},
-      // 1: the fusion the node is for; lower it to fade the luminance's detail in and out
-      {.name = "strength",
-       .type = ParameterType::Real,
-       .defaultValue = 1.0,
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "how far the lightness moves to the fused luminance: 0 the colour layer alone, 1 full fusion",
-       .live = true},
-      // detail: two data sets seldom agree in absolute brightness (sensor, exposure, illumination), and the
-      // colour's own brightness is what keeps its hue
-      {.name = "matching",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("detail"),
-       .doc = "detail: the colour layer's luminance times the luminance layer's ratio to its own low-pass at "
-              "the colour layer's resolution; none: the luminance layer's luminance as it is",
-       .choices = {"detail", "none"},
-       .live = true},
-  };
+  type.parameters = chromaFusionParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<ChromaFusion>(setup); };
   return type;
 }

@@ -27,7 +27,7 @@ std::string ChromaFusionLayer::panLuminance() const {
 // colour texel, its coarser levels (box-filtered averages), as far as its pyramid reaches. A colour layer
 // without texels has no resolution to take (the node refuses matching then): the luminance itself.
 std::string ChromaFusionLayer::panLowpass() const {
-  const std::string steps = colour_.texelStepsFunction();
+  const std::string steps = texelStepsFunctionOf(colour_);
   const std::string scale = steps.empty() ? "1.0" : "colourTexelScale(" + steps + "(p))";
   return "float " + prefix_ +
          "_lowpass(SurfacePoint p) {\n"

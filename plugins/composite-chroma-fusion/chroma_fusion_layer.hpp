@@ -2,6 +2,7 @@
 #include <string>
 
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
 
 namespace strata::composite {
 
@@ -14,7 +15,7 @@ namespace strata::composite {
 // sampled over a footprint widened to one colour texel: its coarser, box-filtered levels). Where the colour
 // layer has no data the luminance shows as grey (with `strength` of its coverage), where the luminance has
 // none the colour alone. Space, strength and matching are uniforms: changing them rebuilds no program.
-class ChromaFusionLayer : public Layer {
+class ChromaFusionLayer : public Layer, public ProjectedLayer {
  public:
   enum class Space { Lab, YCbCr };       // the order opponent_spaces.glsl numbers them
   enum class Matching { None, Detail };  // the order chroma_fusion.glsl's fusedLuminance numbers them
@@ -36,7 +37,7 @@ class ChromaFusionLayer : public Layer {
   // A new fusion for the next frame: its values are uniforms.
   void setFusion(Fusion fusion) { fusion_ = fusion; }
   // The colour layer's: the result has data where it has, the luminance only refining it.
-  ProjectionAspect aspect() const override { return colour_.aspect(); }
+  ProjectionAspect aspect() const override { return aspectOf(colour_); }
   void setPageDemand(PageDemand demand) const override;
 
  private:

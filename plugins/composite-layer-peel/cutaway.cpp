@@ -7,17 +7,12 @@
 
 #include <strata/error.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/parameter_bindings.hpp>
 
 namespace strata::composite {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-
-Cutaway::Shape shapeOf(const std::string& cut) {
-  if (cut == "radius") return Cutaway::Shape::Radius;
-  if (cut == "box") return Cutaway::Shape::Box;
-  return cut == "plane" ? Cutaway::Shape::Plane : Cutaway::Shape::Everywhere;
-}
 
 glm::dvec3 unitAt(glm::dvec2 lonlatDegrees) {
   const double lon = lonlatDegrees.x * kDegree, lat = lonlatDegrees.y * kDegree;
@@ -33,78 +28,84 @@ glm::dvec3 planeNormal(glm::dvec2 centreDegrees, double azimuthDegrees) {
   return std::sin(azimuth) * east + std::cos(azimuth) * north;
 }
 
-}  // namespace
+// The cutaway as a pipeline writes it, each default's reason beside it.
+struct CutawaySettings {
+  // everywhere: the peel alone, the simplest view of a stack; the others open a window onto it
+  Cutaway::Shape shape = Cutaway::Shape::Everywhere;
+  // 0, 0: the origin of the body's coordinates, where a test planet's features usually are
+  std::vector<double> centre{0.0, 0.0};
+  double radius = 1.0e5;  // 100 km: a window the size of a large crater, seen whole from a few hundred kilometres up
+  // two degrees a side about the origin: some 120 km on Mars, 220 km on Earth
+  std::vector<double> box{-1.0, -1.0, 1.0, 1.0};
+  double azimuth = 90.0;  // the plane runs north-south through `centre` and the cut takes the east away
+  double edge = 0.0;  // a step exactly at the region's boundary; give a width of a few vertices to see the cut faces
+};
 
-std::vector<ParameterDeclaration> Cutaway::parameters() {
-  return {
-      // everywhere: the peel alone, the simplest view of a stack; the others open a window onto it
-      {.name = "cut",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("everywhere"),
-       .doc = "where the upper layers are cut away: everywhere; radius: within `radius` of `centre`; box: within "
-              "`box`; plane: on the `azimuth` side of the vertical plane through `centre`",
-       .choices = {"everywhere", "radius", "box", "plane"},
-       .live = true},
-      // 0, 0: the origin of the body's coordinates, where a test planet's features usually are
-      {.name = "centre",
-       .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{0.0, 0.0},
-       .minimum = -360.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "[longitude, latitude]: the centre of a radius cut, a point of a plane cut",
-       .count = 2,
-       .live = true},
-      // 100 km: a window the size of a large crater, seen whole from a few hundred kilometres up
-      {.name = "radius",
-       .type = ParameterType::Real,
-       .defaultValue = 1.0e5,
-       .minimum = 0.0,
-       .maximum = 1.0e8,
-       .units = "m",
-       .doc = "cut: radius: the distance along the ground from `centre` within which the cut is",
-       .live = true},
-      // two degrees a side about the origin: some 120 km on Mars, 220 km on Earth
-      {.name = "box",
-       .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{-1.0, -1.0, 1.0, 1.0},
-       .minimum = -360.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "cut: box: [west, south, east, north]; east may pass 180 to cross the antimeridian",
-       .count = 4,
-       .live = true},
-      // 90: the plane runs north-south through `centre` and the cut takes the east away
-      {.name = "azimuth",
-       .type = ParameterType::Real,
-       .defaultValue = 90.0,
-       .minimum = 0.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "cut: plane: the direction, clockwise from north, of the side the cut takes away",
-       .live = true},
-      // 0: a step exactly at the region's boundary; give a width of a few vertices to see the cut faces
-      {.name = "edge",
-       .type = ParameterType::Real,
-       .defaultValue = 0.0,
-       .minimum = 0.0,
-       .maximum = 1.0e7,
-       .units = "m",
-       .doc = "the width, outside the region, over which the cut's wall slopes from the top surface down to the "
-              "peeled one (composite.peeled_surface colours the layers it cuts through); 0: a step",
-       .live = true},
-  };
+// Every parameter is live: the cutaway changes the next frame.
+const ParameterBindings<CutawaySettings>& cutawayParameters() {
+  using S = CutawaySettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .choice(&S::shape,
+                  {.name = "cut",
+                   .doc = "where the upper layers are cut away: everywhere; radius: within `radius` of `centre`; box: "
+                          "within `box`; plane: on the `azimuth` side of the vertical plane through `centre`",
+                   .live = true},
+                  {{"everywhere", Cutaway::Shape::Everywhere},
+                   {"radius", Cutaway::Shape::Radius},
+                   {"box", Cutaway::Shape::Box},
+                   {"plane", Cutaway::Shape::Plane}})
+          .add(&S::centre, {.name = "centre",
+                            .minimum = -360.0,
+                            .maximum = 360.0,
+                            .units = "deg",
+                            .doc = "[longitude, latitude]: the centre of a radius cut, a point of a plane cut",
+                            .count = 2,
+                            .live = true})
+          .add(&S::radius, {.name = "radius",
+                            .minimum = 0.0,
+                            .maximum = 1.0e8,
+                            .units = "m",
+                            .doc = "cut: radius: the distance along the ground from `centre` within which the cut is",
+                            .live = true})
+          .add(&S::box, {.name = "box",
+                         .minimum = -360.0,
+                         .maximum = 360.0,
+                         .units = "deg",
+                         .doc = "cut: box: [west, south, east, north]; east may pass 180 to cross the antimeridian",
+                         .count = 4,
+                         .live = true})
+          .add(&S::azimuth, {.name = "azimuth",
+                             .minimum = 0.0,
+                             .maximum = 360.0,
+                             .units = "deg",
+                             .doc = "cut: plane: the direction, clockwise from north, of the side the cut takes away",
+                             .live = true})
+          .add(&S::edge, {.name = "edge",
+                          .minimum = 0.0,
+                          .maximum = 1.0e7,
+                          .units = "m",
+                          .doc = "the width, outside the region, over which the cut's wall slopes from the top "
+                                 "surface down to the peeled one (composite.peeled_surface colours the layers it "
+                                 "cuts through); 0: a step",
+                          .live = true});
+  return bindings;
 }
 
+}  // namespace
+
+std::vector<ParameterDeclaration> Cutaway::parameters() { return cutawayParameters().declarations(); }
+
 Cutaway Cutaway::from(const ParameterSet& parameters) {
-  const std::vector<double>& centre = parameters.reals("centre");
-  const std::vector<double>& box = parameters.reals("box");
+  const CutawaySettings settings = cutawayParameters().read(parameters);
+  const std::vector<double>& centre = settings.centre;
+  const std::vector<double>& box = settings.box;
   if (box[0] >= box[2] || box[1] >= box[3])
-    throw Error(parameters.where("box"),
+    throw Error(cutawayParameters().where(parameters, &CutawaySettings::box),
                 "the box's west lies at or east of its east, or its south at or north of its north",
                 "give [west, south, east, north], e.g. [170, -10, 190, 10] for a box across the antimeridian");
-  return {shapeOf(parameters.string("cut")), {centre[0], centre[1]},     parameters.real("radius"),
-          {box[0], box[1], box[2], box[3]},  parameters.real("azimuth"), parameters.real("edge")};
+  return {settings.shape,   {centre[0], centre[1]}, settings.radius, {box[0], box[1], box[2], box[3]},
+          settings.azimuth, settings.edge};
 }
 
 void Cutaway::bind(const ShaderProgram& program, const std::string& uniform, double bodyRadius) const {

@@ -4,6 +4,7 @@
 #include <set>
 
 #include <strata/node.hpp>
+#include <strata/parameter_bindings.hpp>
 
 #include "declarations.hpp"
 #include "peel_layer.hpp"
@@ -25,16 +26,41 @@ std::vector<const Layer*> stackOf(const NodeSetup& setup) {
   return stack;
 }
 
+// The peel as a pipeline writes it, each default's reason beside it.
+struct PeelSettings {
+  std::int64_t layers = 1;  // the top layer taken away, which shows the next one: what a stack of two is peeled for
+  double depth = 0.0;       // the surface the peel exposes, as its data have it
+};
+
+// Every parameter is a uniform: the peel and the cutaway change the next frame.
+const ParameterBindings<PeelSettings>& peelParameters() {
+  using S = PeelSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::layers, {.name = "peel",
+                            .minimum = 0.0,
+                            .maximum = 15.0,
+                            .doc = "how many of the upper layers the cut takes away (at most all but the floor)",
+                            .live = true})
+          .add(&S::depth, {.name = "depth",
+                           .minimum = 0.0,
+                           .maximum = 1.0e6,
+                           .units = "m",
+                           .doc = "how far the cut goes below the surface the peel exposes, never below the floor",
+                           .live = true});
+  return bindings;
+}
+
 // The peel, of a stack of `stackSize` layers.
 PeelLayer::Peel peelOf(const ParameterSet& parameters, std::size_t stackSize) {
-  const auto layers = parameters.integer("peel");
+  const PeelSettings settings = peelParameters().read(parameters);
   const auto most = std::int64_t(stackSize) - 1;
-  if (layers > most)
-    throw Error(parameters.where("peel"),
-                "peel " + std::to_string(layers) + " takes away more layers than lie above the floor (" +
+  if (settings.layers > most)
+    throw Error(peelParameters().where(parameters, &PeelSettings::layers),
+                "peel " + std::to_string(settings.layers) + " takes away more layers than lie above the floor (" +
                     std::to_string(most) + ")",
                 "peel at most " + std::to_string(most) + ": the last layer is the floor");
-  return {int(layers), parameters.real("depth")};
+  return {int(settings.layers), settings.depth};
 }
 
 class LayerPeel : public Node {
@@ -72,26 +98,7 @@ NodeTypeDeclaration layerPeelDeclaration() {
                   .list = true,
                   .doc = "the stack's height layers, top first (ice surface, bedrock); the last is the floor"}};
   type.output = PortType::Layer;
-  // Every parameter is a uniform: the peel and the cutaway change the next frame.
-  type.parameters = {
-      // 1: the top layer taken away, which shows the next one: what a stack of two is peeled for
-      {.name = "peel",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t(1),
-       .minimum = 0.0,
-       .maximum = 15.0,
-       .doc = "how many of the upper layers the cut takes away (at most all but the floor)",
-       .live = true},
-      // 0: the surface the peel exposes, as its data have it
-      {.name = "depth",
-       .type = ParameterType::Real,
-       .defaultValue = 0.0,
-       .minimum = 0.0,
-       .maximum = 1.0e6,
-       .units = "m",
-       .doc = "how far the cut goes below the surface the peel exposes, never below the floor",
-       .live = true},
-  };
+  type.parameters = peelParameters().declarations();
   for (ParameterDeclaration& parameter : Cutaway::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<LayerPeel>(setup); };
   return type;

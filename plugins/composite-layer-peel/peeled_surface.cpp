@@ -3,6 +3,7 @@
 #include <memory>
 
 #include <strata/node.hpp>
+#include <strata/parameter_bindings.hpp>
 
 #include "declarations.hpp"
 #include "peeled_surface_layer.hpp"
@@ -31,10 +32,29 @@ std::vector<const Layer*> surfacesOf(const NodeSetup& setup, const PeelLayer& pe
   return surfaces;
 }
 
+// The colours as a pipeline writes them, each default's reason beside it.
+struct FacesSettings {
+  // ice blue, rock brown, sediment ochre, basement grey: apart at a glance, for stacks of up to four
+  std::vector<double> faces{0.7, 0.85, 1.0, 0.55, 0.4, 0.3, 0.8, 0.65, 0.35, 0.5, 0.5, 0.5};
+};
+
+// A uniform: the faces' colours change the next frame.
+const ParameterBindings<FacesSettings>& facesParameters() {
+  using S = FacesSettings;
+  static const auto bindings = ParameterBindings<S>().add(
+      &S::faces, {.name = "faces",
+                  .minimum = 0.0,
+                  .maximum = 1.0,
+                  .doc = "the colour of each layer's cut faces, where the cut runs through its material: red, green, "
+                         "blue (sRGB, 0 to 1) per layer, top first",
+                  .live = true});
+  return bindings;
+}
+
 std::vector<double> facesOf(const ParameterSet& parameters, const PeelLayer& peel) {
-  const std::vector<double>& faces = parameters.reals("faces");
+  const std::vector<double> faces = facesParameters().read(parameters).faces;
   if (faces.size() % 3 != 0 || faces.size() < 3 * peel.stackSize())
-    throw Error(parameters.where("faces"),
+    throw Error(facesParameters().where(parameters, &FacesSettings::faces),
                 "faces has " + std::to_string(faces.size()) + " numbers, not three for each of the stack's " +
                     std::to_string(peel.stackSize()) + " layers",
                 "give red, green, blue (sRGB, 0 to 1) for each layer, top first");
@@ -72,18 +92,7 @@ NodeTypeDeclaration peeledSurfaceDeclaration() {
                   .list = true,
                   .doc = "one colour layer per layer of the stack, top first: what its surface shows"}};
   type.output = PortType::Layer;
-  // A uniform: the faces' colours change the next frame.
-  type.parameters = {
-      // ice blue, rock brown, sediment ochre, basement grey: apart at a glance, for stacks of up to four
-      {.name = "faces",
-       .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{0.7, 0.85, 1.0, 0.55, 0.4, 0.3, 0.8, 0.65, 0.35, 0.5, 0.5, 0.5},
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "the colour of each layer's cut faces, where the cut runs through its material: red, green, blue "
-              "(sRGB, 0 to 1) per layer, top first",
-       .live = true},
-  };
+  type.parameters = facesParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<PeeledSurface>(setup); };
   return type;
 }

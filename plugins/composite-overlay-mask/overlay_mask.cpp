@@ -3,8 +3,10 @@
 // [Kooima 2008, §4.2].
 #include <memory>
 
+#include <strata/layer_capabilities.hpp>
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "overlay_mask_layer.hpp"
@@ -12,6 +14,28 @@
 
 namespace strata::composite {
 namespace {
+
+// The node's settings as a pipeline writes them.
+struct OverlayMaskSettings {
+  double feather = 0.0;  // a hard edge
+  bool metres = false;   // the overlay's texels, so the fade follows its resolution
+};
+
+const ParameterBindings<OverlayMaskSettings>& overlayMaskParameters() {
+  using S = OverlayMaskSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::feather,
+               {.name = "feather",
+                .minimum = 0.0,
+                .maximum = 1.0e7,
+                .doc = "width over which the overlay fades in from its edge, in feather_units; 0: a hard edge"})
+          .choice(&S::metres,
+                  {.name = "feather_units",
+                   .doc = "texels: the overlay's own, so the fade follows its resolution; metres: along the ground"},
+                  {{"texels", false}, {"metres", true}});
+  return bindings;
+}
 
 // One node on two of the ports would paste its layer's GLSL into the program twice, which does not compile.
 void refuseRepeatedInputs(const NodeSetup& setup) {
@@ -43,10 +67,11 @@ const Layer* maskOf(const NodeSetup& setup) {
 }
 
 OverlayMaskLayer::Edge edgeOf(const NodeSetup& setup, const Layer& overlay) {
-  const OverlayMaskLayer::Edge edge{setup.parameters.real("feather"),
-                                    setup.parameters.string("feather_units") == "metres", setup.body->radius};
-  if (edge.feather > 0.0 && overlay.texelStepsFunction().empty())
-    throw Error(setup.parameters.where("feather"), "the overlay has no texels to feather its edge over",
+  const OverlayMaskSettings settings = overlayMaskParameters().read(setup.parameters);
+  const OverlayMaskLayer::Edge edge{settings.feather, settings.metres, setup.body->radius};
+  if (edge.feather > 0.0 && texelStepsFunctionOf(overlay).empty())
+    throw Error(overlayMaskParameters().where(setup.parameters, &OverlayMaskSettings::feather),
+                "the overlay has no texels to feather its edge over",
                 "give a raster overlay (source.gdal), or feather: 0 for a hard edge");
   return edge;
 }
@@ -80,19 +105,7 @@ NodeTypeDeclaration declaration() {
                   .doc = "where the overlay may show: a layer whose value (0 to 1, e.g. source.gdal kind: mask, from a "
                          "raster or a vector file's polygons) times its coverage multiplies the overlay's"}};
   type.output = PortType::Layer;
-  type.parameters = {
-      {.name = "feather",
-       .type = ParameterType::Real,
-       .defaultValue = 0.0,
-       .minimum = 0.0,
-       .maximum = 1.0e7,
-       .doc = "width over which the overlay fades in from its edge, in feather_units; 0: a hard edge"},
-      {.name = "feather_units",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("texels"),
-       .doc = "texels: the overlay's own, so the fade follows its resolution; metres: along the ground",
-       .choices = {"texels", "metres"}},
-  };
+  type.parameters = overlayMaskParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<OverlayMask>(setup); };
   return type;
 }

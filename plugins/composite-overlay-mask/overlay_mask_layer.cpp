@@ -32,7 +32,7 @@ std::string OverlayMaskLayer::edgeWeight() const {
   return "float " + p +
          "_weight(SurfacePoint p, float coverage) {\n"
          "  vec4 steps = " +
-         overlay_.texelStepsFunction() +
+         texelStepsFunctionOf(overlay_) +
          "(p);\n"
          "  float texels = max(max(length(steps.xy), length(steps.zw)), 1e-6);  // overlay texels a sample\n"
          "  float width = " +
@@ -43,7 +43,7 @@ std::string OverlayMaskLayer::edgeWeight() const {
          p + "_coverage(wide, " + overlay_.samplingFunction() +
          "(wide));\n"
          "  float fromExtent = clamp(" +
-         overlay_.edgeDistanceFunction() +
+         edgeDistanceFunctionOf(overlay_) +
          "(p) / (0.5 * width), 0.0, 1.0);\n"
          "  return min(featheredWeight(averaged), fromExtent);\n"
          "}\n";

@@ -2,6 +2,7 @@
 #include <string>
 
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
 
 namespace strata::composite {
 
@@ -11,7 +12,7 @@ namespace strata::composite {
 // hard edge or one feathered over a width in the overlay's texels or in metres, from that coverage averaged
 // over half the width; elsewhere the base shows. Where the overlay has no data its sampling returns at once,
 // so the work stays within its bounds.
-class OverlayMaskLayer : public Layer {
+class OverlayMaskLayer : public Layer, public ProjectedLayer {
  public:
   // A feather of 0 is a hard edge. `radius`: the body's, to turn metres into angles.
   struct Edge {
@@ -28,7 +29,7 @@ class OverlayMaskLayer : public Layer {
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   // The base's: what the composed layer is, but for the overlay's local patch.
-  ProjectionAspect aspect() const override { return base_.aspect(); }
+  ProjectionAspect aspect() const override { return aspectOf(base_); }
   void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override;
 

@@ -3,15 +3,16 @@
 #include <algorithm>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/layer_capabilities.hpp>
 
 namespace strata::composite {
 
 ProjectionQualityLayer::ProjectionQualityLayer(const std::string& nodeId, std::vector<const Layer*> inputs)
     : prefix_("layer_" + glslIdentifier(nodeId)), inputs_(std::move(inputs)) {}
 
-// Method 2's weight, from the input's texel steps (Layer::texelStepsFunction()); 1 for inputs without texels.
+// Method 2's weight, from the input's texel steps (TexelledLayer::texelStepsFunction); 1 for inputs without texels.
 std::string ProjectionQualityLayer::isotropyWeight(const Layer& input) const {
-  const std::string steps = input.texelStepsFunction();
+  const std::string steps = texelStepsFunctionOf(input);
   if (steps.empty()) return "1.0";
   return "projectionQualityWeight(" + steps + "(p), " + prefix_ + "_quality, " + prefix_ + "_resolution)";
 }
@@ -20,7 +21,7 @@ std::string ProjectionQualityLayer::isotropyWeight(const Layer& input) const {
 // that cannot tell (ProjectionAspect::Other); they count with weight 1, as under isotropy without texels.
 std::string ProjectionQualityLayer::latitudeWeight(const Layer& input) const {
   const std::string band = prefix_ + "_band";
-  switch (input.aspect()) {
+  switch (aspectOf(input)) {
     case ProjectionAspect::Equatorial: return "equatorialWeight(p.lonlat.y, " + band + ")";
     case ProjectionAspect::NorthPolar: return "polarWeight(p.lonlat.y, 1.0, " + band + ")";
     case ProjectionAspect::SouthPolar: return "polarWeight(p.lonlat.y, -1.0, " + band + ")";

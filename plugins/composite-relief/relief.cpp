@@ -7,6 +7,7 @@
 
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "plugin_shaders.hpp"
@@ -15,12 +16,6 @@
 namespace strata::composite {
 namespace {
 
-ReliefLayer::Output outputOf(const std::string& output) {
-  if (output == "slope") return ReliefLayer::Output::Slope;
-  return output == "aspect" ? ReliefLayer::Output::Aspect : ReliefLayer::Output::Shade;
-}
-
-// A ramp of 2 to 8 stops (value, red, green, blue), values rising, colours in [0, 1].
 std::string rampProblem(const std::vector<double>& stops) {
   if (stops.size() % 4 != 0 || stops.size() < 8 || stops.size() > 4 * ReliefLayer::kRampStops)
     return "the ramp has " + std::to_string(stops.size()) + " numbers, not 2 to 8 stops of 4";
@@ -33,26 +28,93 @@ std::string rampProblem(const std::vector<double>& stops) {
   return {};
 }
 
-ReliefLayer::Ramp tintOf(const ParameterSet& parameters) {
-  const std::string& by = parameters.string("tint");
-  if (by == "none") return {};
-  const std::vector<double>& stops = parameters.reals("tint_ramp");
-  if (const std::string problem = rampProblem(stops); !problem.empty())
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct ReliefSettings {
+  double azimuth = 315.0;  // light from the north-west, the cartographic convention, under which relief reads as raised
+  double altitude = 45.0;  // the usual hillshade default: flat ground at cos 45 = 0.71, slopes shown both ways
+  double exaggeration = 1.0;      // the true relief; raise it to see gentle slopes on a planet's scale
+  bool multiply = true;           // shaded imagery, the common use; alone shows the shade even where a surface is given
+  bool multidirectional = false;  // the one light a reader expects; four show relief facing any way, as from orbit
+  ReliefLayer::Output output = ReliefLayer::Output::Shade;  // what relief shading is for; the others are data
+  bool normalised = false;  // the hillshade as cartographers know it, flat ground at sin(altitude)
+  ReliefLayer::Tint tint = ReliefLayer::Tint::None;  // the shade alone reads as relief; a tint is a choice
+  // A hypsometric ramp for Earth-like elevations: sea blue, lowland green, upland tan, summits white.
+  std::vector<double> tintRamp{-4000, 0.1, 0.3, 0.6, 0, 0.3, 0.55, 0.3, 2000, 0.75, 0.65, 0.45, 5000, 1, 1, 1};
+};
+
+// Every parameter is live: the light, the exaggeration, the mode and the tint change the next frame.
+const ParameterBindings<ReliefSettings>& reliefParameters() {
+  using S = ReliefSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::azimuth, {.name = "azimuth",
+                             .minimum = 0.0,
+                             .maximum = 360.0,
+                             .units = "deg",
+                             .doc = "direction the light comes from, clockwise from north",
+                             .live = true})
+          .add(&S::altitude, {.name = "altitude",
+                              .minimum = 0.0,
+                              .maximum = 90.0,
+                              .units = "deg",
+                              .doc = "height of the light above the horizon",
+                              .live = true})
+          .add(&S::exaggeration, {.name = "exaggeration",
+                                  .minimum = 0.0,
+                                  .maximum = 1.0e4,
+                                  .doc = "factor on the heights' slopes before shading (vertical exaggeration)",
+                                  .live = true})
+          .choice(&S::multiply,
+                  {.name = "blend",
+                   .doc = "multiply: the surface's colour times the shade; alone: the grey shade",
+                   .live = true},
+                  {{"multiply", true}, {"alone", false}})
+          .choice(&S::multidirectional,
+                  {.name = "mode",
+                   .doc = "single: one light at azimuth; multidirectional: four at 225 to 360 degrees, weighted by "
+                          "the aspect (Mark 1992), at altitude",
+                   .live = true},
+                  {{"single", false}, {"multidirectional", true}})
+          .choice(&S::output,
+                  {.name = "output",
+                   .doc = "shade: the Lambertian shade; slope: the slope's angle over 90 degrees (0 flat, 1 "
+                          "vertical); aspect: the downslope direction clockwise from north over 360 degrees",
+                   .live = true},
+                  {{"shade", ReliefLayer::Output::Shade},
+                   {"slope", ReliefLayer::Output::Slope},
+                   {"aspect", ReliefLayer::Output::Aspect}})
+          .add(&S::normalised, {.name = "normalise",
+                                .doc = "divide the shade by flat ground's, sin(altitude), so that multiplied imagery "
+                                       "keeps its colour on flat ground and slopes toward the light brighten it (up "
+                                       "to white)",
+                                .live = true})
+          .choice(&S::tint,
+                  {.name = "tint",
+                   .doc = "colours the value by tint_ramp: by elevation (m) or by slope (deg); none: grey",
+                   .live = true},
+                  {{"none", ReliefLayer::Tint::None},
+                   {"elevation", ReliefLayer::Tint::Elevation},
+                   {"slope", ReliefLayer::Tint::Slope}})
+          .add(&S::tintRamp, {.name = "tint_ramp",
+                              .doc = "2 to 8 stops of value (m, or deg of slope), red, green, blue (sRGB, 0 to 1), "
+                                     "values rising; blended linearly in scene-linear light, held beyond the ends",
+                              .live = true});
+  return bindings;
+}
+
+ReliefLayer::Ramp tintOf(const ReliefSettings& settings, const ParameterSet& parameters) {
+  if (settings.tint == ReliefLayer::Tint::None) return {};
+  if (const std::string problem = rampProblem(settings.tintRamp); !problem.empty())
     throw Error(
-        parameters.where("tint_ramp"), problem,
+        reliefParameters().where(parameters, &ReliefSettings::tintRamp), problem,
         "give stops of value, red, green, blue (sRGB, 0 to 1), values rising, e.g. [0, 0, 0.4, 0, 3000, 1, 1, 1]");
-  return {by == "elevation" ? ReliefLayer::Tint::Elevation : ReliefLayer::Tint::Slope, stops};
+  return {settings.tint, settings.tintRamp};
 }
 
 ReliefLayer::Lighting lightingOf(const ParameterSet& parameters) {
-  return {parameters.real("azimuth"),
-          parameters.real("altitude"),
-          parameters.real("exaggeration"),
-          parameters.string("blend") == "multiply",
-          parameters.string("mode") == "multidirectional",
-          outputOf(parameters.string("output")),
-          tintOf(parameters),
-          parameters.boolean("normalise")};
+  const ReliefSettings settings = reliefParameters().read(parameters);
+  return {settings.azimuth,          settings.altitude, settings.exaggeration,        settings.multiply,
+          settings.multidirectional, settings.output,   tintOf(settings, parameters), settings.normalised};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -90,80 +152,7 @@ NodeTypeDeclaration declaration() {
                   .optional = true,
                   .doc = "a colour layer the shade multiplies (blend: multiply); without one the shade is grey"}};
   type.output = PortType::Layer;
-  // Every parameter is a uniform: the light, the exaggeration, the mode and the tint change the next frame.
-  type.parameters = {
-      // 315: light from the north-west, the cartographic convention, under which relief reads as raised
-      {.name = "azimuth",
-       .type = ParameterType::Real,
-       .defaultValue = 315.0,
-       .minimum = 0.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "direction the light comes from, clockwise from north",
-       .live = true},
-      // 45: the usual hillshade default, which leaves flat ground at cos 45 = 0.71 and shows slopes both ways
-      {.name = "altitude",
-       .type = ParameterType::Real,
-       .defaultValue = 45.0,
-       .minimum = 0.0,
-       .maximum = 90.0,
-       .units = "deg",
-       .doc = "height of the light above the horizon",
-       .live = true},
-      // 1: the true relief; raise it to see gentle slopes on a planet's scale
-      {.name = "exaggeration",
-       .type = ParameterType::Real,
-       .defaultValue = 1.0,
-       .minimum = 0.0,
-       .maximum = 1.0e4,
-       .doc = "factor on the heights' slopes before shading (vertical exaggeration)",
-       .live = true},
-      // multiply: shaded imagery, the common use; alone shows the shade even where a surface is given
-      {.name = "blend",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("multiply"),
-       .doc = "multiply: the surface's colour times the shade; alone: the grey shade",
-       .choices = {"multiply", "alone"},
-       .live = true},
-      // single: the one light a reader expects; multidirectional shows relief facing any way, as from orbit
-      {.name = "mode",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("single"),
-       .doc = "single: one light at azimuth; multidirectional: four at 225 to 360 degrees, weighted by the aspect "
-              "(Mark 1992), at altitude",
-       .choices = {"single", "multidirectional"},
-       .live = true},
-      // shade: what relief shading is for; the others are the same gradient, as data
-      {.name = "output",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("shade"),
-       .doc = "shade: the Lambertian shade; slope: the slope's angle over 90 degrees (0 flat, 1 vertical); aspect: the "
-              "downslope direction clockwise from north over 360 degrees",
-       .choices = {"shade", "slope", "aspect"},
-       .live = true},
-      // false: the hillshade as cartographers know it, flat ground at sin(altitude) (0.71 at 45 degrees)
-      {.name = "normalise",
-       .type = ParameterType::Boolean,
-       .defaultValue = false,
-       .doc = "divide the shade by flat ground's, sin(altitude), so that multiplied imagery keeps its colour on "
-              "flat ground and slopes toward the light brighten it (up to white)",
-       .live = true},
-      // none: the shade alone reads as relief; a tint is a choice of what to show
-      {.name = "tint",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("none"),
-       .doc = "colours the value by tint_ramp: by elevation (m) or by slope (deg); none: grey",
-       .choices = {"none", "elevation", "slope"},
-       .live = true},
-      // a hypsometric ramp for Earth-like elevations: sea blue, lowland green, upland tan, summits white
-      {.name = "tint_ramp",
-       .type = ParameterType::RealList,
-       .defaultValue =
-           std::vector<double>{-4000, 0.1, 0.3, 0.6, 0, 0.3, 0.55, 0.3, 2000, 0.75, 0.65, 0.45, 5000, 1, 1, 1},
-       .doc = "2 to 8 stops of value (m, or deg of slope), red, green, blue (sRGB, 0 to 1), values rising; blended "
-              "linearly in scene-linear light, held beyond the ends",
-       .live = true},
-  };
+  type.parameters = reliefParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<Relief>(setup); };
   return type;
 }

@@ -2,9 +2,12 @@
 // with dates) as one layer at the scene's date, the two bracketing steps blended linearly in time, in geometry
 // and imagery alike ([Kooima 2008, §1.1, ch. 6], time-varying data).
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <strata/node.hpp>
 #include <strata/node_type.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 #include <strata/plugin_registry.hpp>
 
@@ -15,6 +18,38 @@
 
 namespace strata::composite {
 namespace {
+
+// The node's settings as a pipeline writes them.
+struct TemporalBlendSettings {
+  std::vector<double> dates;   // none: the steps come from `files`
+  std::string files;           // none: the steps come from `steps` and `dates`
+  std::string kind = "color";  // source.gdal's own default
+  bool yearly = false;         // repeat: none
+};
+
+const ParameterBindings<TemporalBlendSettings>& temporalBlendParameters() {
+  using S = TemporalBlendSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::dates,
+               {.name = "dates",
+                .type = ParameterType::DateList,
+                .doc = "each step's date, ISO 8601 in UTC (2004-01-15), in the order of `steps`: when it shows alone"})
+          .add(&S::files, {.name = "files",
+                           .doc = "instead of steps and dates: a file-name pattern whose %Y %m %d %j give each file's "
+                                  "date and * any text (bmng/world.%Y%m.*.jpg), each file read as source.gdal reads "
+                                  "it; empty: use `steps`"})
+          .add(&S::kind, {.name = "kind",
+                          .doc = "what the files `files` matches hold, as source.gdal's `kind`",
+                          .choices = {"color", "height", "scalar", "luminance", "mask"}})
+          .choice(&S::yearly,
+                  {.name = "repeat",
+                   .doc = "none: before the first date and after the last, that step shows; yearly: the series is a "
+                          "climatology that repeats every year (months of any year), and the last step blends into "
+                          "the first"},
+                  {{"none", false}, {"yearly", true}});
+  return bindings;
+}
 
 // A series' steps and their dates, from the pipeline's `steps` and `dates`, or from the files a `files`
 // pattern matches, each read by a source.gdal node the temporal blend makes and runs itself.
@@ -35,9 +70,9 @@ ParameterSet fileStepParameters(const NodeTypeDeclaration& type, const std::file
   return parameters;
 }
 
-Steps stepsFromFiles(const NodeSetup& setup) {
-  const SourceLocation& where = setup.parameters.where("files");
-  if (!setup.inputList("steps").empty() || !setup.parameters.reals("dates").empty())
+Steps stepsFromFiles(const NodeSetup& setup, const TemporalBlendSettings& settings) {
+  const SourceLocation& where = temporalBlendParameters().where(setup.parameters, &TemporalBlendSettings::files);
+  if (!setup.inputList("steps").empty() || !settings.dates.empty())
     throw Error(where, "the steps are given twice: by `files` and by `steps` and `dates`",
                 "keep `files` (the dates come from the file names) or `steps` with `dates`, not both");
   const NodeTypeDeclaration* reader = setup.plugins->find("source.gdal");
@@ -45,10 +80,10 @@ Steps stepsFromFiles(const NodeSetup& setup) {
     throw Error(where, "`files` reads its steps with source.gdal, which is not loaded",
                 "install the source-gdal plugin");
   Steps steps;
-  for (const DatedFile& file : datedFiles(setup.parameters.string("files"), setup.pipelineDirectory, where)) {
+  for (const DatedFile& file : datedFiles(settings.files, setup.pipelineDirectory, where)) {
     NodeSetup step{setup.id + "/" + file.path.filename().string(),
                    where,
-                   fileStepParameters(*reader, file.path, setup.parameters.string("kind"), where),
+                   fileStepParameters(*reader, file.path, settings.kind, where),
                    {},
                    setup.body,
                    setup.pipelineDirectory,
@@ -64,9 +99,9 @@ Steps stepsFromFiles(const NodeSetup& setup) {
 
 // One date per listed step, in increasing order (by their place in the year when the series repeats
 // yearly, since that is the order it steps through).
-Steps stepsFromList(const NodeSetup& setup) {
-  const std::vector<double>& dates = setup.parameters.reals("dates");
-  const SourceLocation& where = setup.parameters.where("dates");
+Steps stepsFromList(const NodeSetup& setup, const TemporalBlendSettings& settings) {
+  const std::vector<double>& dates = settings.dates;
+  const SourceLocation& where = temporalBlendParameters().where(setup.parameters, &TemporalBlendSettings::dates);
   const std::vector<Node*>& nodes = setup.inputList("steps");
   if (nodes.empty())
     throw Error(setup.where, "the series has no steps",
@@ -74,7 +109,7 @@ Steps stepsFromList(const NodeSetup& setup) {
   if (dates.size() != nodes.size())
     throw Error(where, std::to_string(dates.size()) + " dates for " + std::to_string(nodes.size()) + " steps",
                 "give one date per step, in the order of `steps`");
-  const bool yearly = setup.parameters.string("repeat") == "yearly";
+  const bool yearly = settings.yearly;
   for (std::size_t i = 1; i < dates.size(); ++i) {
     const double before = yearly ? yearFraction(dates[i - 1]) : dates[i - 1],
                  now = yearly ? yearFraction(dates[i]) : dates[i];
@@ -88,8 +123,8 @@ Steps stepsFromList(const NodeSetup& setup) {
   return {{}, nodes, dates};
 }
 
-Steps stepsOf(const NodeSetup& setup) {
-  return setup.parameters.string("files").empty() ? stepsFromList(setup) : stepsFromFiles(setup);
+Steps stepsOf(const NodeSetup& setup, const TemporalBlendSettings& settings) {
+  return settings.files.empty() ? stepsFromList(setup, settings) : stepsFromFiles(setup, settings);
 }
 
 DayNumber sceneDate(const NodeSetup& setup) {
@@ -102,13 +137,7 @@ DayNumber sceneDate(const NodeSetup& setup) {
 class TemporalBlend : public Node {
  public:
   explicit TemporalBlend(const NodeSetup& setup)
-      : steps_(stepsOf(setup)),
-        layers_(layersOfOneKind(steps_.nodes, "steps", setup.where)),
-        series_(steps_.dates, setup.parameters.string("repeat") == "yearly"),
-        date_(sceneDate(setup)),
-        layer_(setup.id, layers_) {
-    layer_.show(series_.at(date_));
-  }
+      : TemporalBlend(setup, temporalBlendParameters().read(setup.parameters)) {}
 
   // The steps the node reads itself (`files`) go through the scheduler's calls with it.
   void open() override {
@@ -135,6 +164,15 @@ class TemporalBlend : public Node {
   Layer* layer() override { return &layer_; }
 
  private:
+  TemporalBlend(const NodeSetup& setup, const TemporalBlendSettings& settings)
+      : steps_(stepsOf(setup, settings)),
+        layers_(layersOfOneKind(steps_.nodes, "steps", setup.where)),
+        series_(steps_.dates, settings.yearly),
+        date_(sceneDate(setup)),
+        layer_(setup.id, layers_) {
+    layer_.show(series_.at(date_));
+  }
+
   Steps steps_;
   std::vector<const Layer*> layers_;
   TemporalSeries series_;
@@ -155,28 +193,7 @@ NodeTypeDeclaration declaration() {
        .optional = true,
        .doc = "the series' layers, of one kind, from the earliest to the latest (one per date); or `files`"}};
   type.output = PortType::Layer;
-  type.parameters = {
-      {.name = "dates",
-       .type = ParameterType::DateList,
-       .defaultValue = std::vector<double>{},
-       .doc = "each step's date, ISO 8601 in UTC (2004-01-15), in the order of `steps`: when it shows alone"},
-      {.name = "files",
-       .type = ParameterType::String,
-       .defaultValue = std::string(),
-       .doc = "instead of steps and dates: a file-name pattern whose %Y %m %d %j give each file's date and * any "
-              "text (bmng/world.%Y%m.*.jpg), each file read as source.gdal reads it; empty: use `steps`"},
-      {.name = "kind",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("color"),
-       .doc = "what the files `files` matches hold, as source.gdal's `kind`",
-       .choices = {"color", "height", "scalar", "luminance", "mask"}},
-      {.name = "repeat",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("none"),
-       .doc = "none: before the first date and after the last, that step shows; yearly: the series is a climatology "
-              "that repeats every year (months of any year), and the last step blends into the first",
-       .choices = {"none", "yearly"}},
-  };
+  type.parameters = temporalBlendParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<TemporalBlend>(setup); };
   return type;
 }

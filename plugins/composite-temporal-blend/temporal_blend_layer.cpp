@@ -15,40 +15,39 @@ void TemporalBlendLayer::show(const Bracket& bracket) {
   fraction_ = float(bracket.fraction);
 }
 
-bool TemporalBlendLayer::everyStepHas(std::string (Layer::*of)() const) const {
-  return std::all_of(steps_.begin(), steps_.end(), [of](const Layer* step) { return !(step->*of)().empty(); });
+bool TemporalBlendLayer::everyStepHas(FunctionOf of) const {
+  return std::all_of(steps_.begin(), steps_.end(), [of](const Layer* step) { return !of(*step).empty(); });
 }
 
 // `type name(int step, parameters)`: step `step`'s function `of` at `arguments`. The step is the same for
 // every sample of a frame (a uniform), so the switch costs no divergence.
-std::string TemporalBlendLayer::stepDispatch(std::string (Layer::*of)() const, const std::string& name,
-                                             const std::string& type, const std::string& parameters,
-                                             const std::string& arguments) const {
+std::string TemporalBlendLayer::stepDispatch(FunctionOf of, const std::string& name, const std::string& type,
+                                             const std::string& parameters, const std::string& arguments) const {
   std::string code = type + " " + name + "(int step, " + parameters + ") {\n  switch (step) {\n";
   for (std::size_t i = 0; i < steps_.size(); ++i)
-    code += "    case " + std::to_string(i) + ": return " + (steps_[i]->*of)() + "(" + arguments + ");\n";
+    code += "    case " + std::to_string(i) + ": return " + of(*steps_[i]) + "(" + arguments + ");\n";
   return code + "  }\n  return " + type + "(0.0);\n}\n";
 }
 
 // The earlier step's texels stand for the layer's: the steps of a series share their grid as a rule.
 std::string TemporalBlendLayer::texelStepsFunction() const {
-  return everyStepHas(&Layer::texelStepsFunction) ? prefix_ + "_texelSteps" : std::string();
+  return everyStepHas(texelStepsFunctionOf) ? prefix_ + "_texelSteps" : std::string();
 }
 
 std::string TemporalBlendLayer::edgeDistanceFunction() const {
-  return everyStepHas(&Layer::edgeDistanceFunction) ? prefix_ + "_edgeDistance" : std::string();
+  return everyStepHas(edgeDistanceFunctionOf) ? prefix_ + "_edgeDistance" : std::string();
 }
 
 std::string TemporalBlendLayer::faceSamplingFunction() const {
-  return everyStepHas(&Layer::faceSamplingFunction) ? prefix_ + "_faceSample" : std::string();
+  return everyStepHas(faceSamplingFunctionOf) ? prefix_ + "_faceSample" : std::string();
 }
 
 // The steps' aspect where they share one (a series of one instrument's maps), so that a temporal layer can
 // feed projection_quality's latitude weighting.
 ProjectionAspect TemporalBlendLayer::aspect() const {
-  const ProjectionAspect first = steps_.front()->aspect();
+  const ProjectionAspect first = aspectOf(*steps_.front());
   const bool shared =
-      std::all_of(steps_.begin(), steps_.end(), [first](const Layer* step) { return step->aspect() == first; });
+      std::all_of(steps_.begin(), steps_.end(), [first](const Layer* step) { return aspectOf(*step) == first; });
   return shared ? first : ProjectionAspect::Other;
 }
 
@@ -65,7 +64,9 @@ std::string TemporalBlendLayer::glsl() const {
       p +
       "_later;\n"
       "uniform float " +
-      p + "_fraction;\n" + stepDispatch(&Layer::samplingFunction, p + "_step", "vec4", "SurfacePoint p", "p") +
+      p + "_fraction;\n" +
+      stepDispatch([](const Layer& step) { return step.samplingFunction(); }, p + "_step", "vec4", "SurfacePoint p",
+                   "p") +
       "vec4 " + p +
       "(SurfacePoint p) {\n"
       "  vec4 earlier = " +
@@ -79,15 +80,15 @@ std::string TemporalBlendLayer::glsl() const {
       "_fraction);\n"
       "}\n";
   if (!texelStepsFunction().empty())
-    code += stepDispatch(&Layer::texelStepsFunction, p + "_stepTexels", "vec4", "SurfacePoint p", "p") + "vec4 " + p +
+    code += stepDispatch(texelStepsFunctionOf, p + "_stepTexels", "vec4", "SurfacePoint p", "p") + "vec4 " + p +
             "_texelSteps(SurfacePoint p) { return " + p + "_stepTexels(" + p + "_earlier, p); }\n";
   if (!edgeDistanceFunction().empty())
-    code += stepDispatch(&Layer::edgeDistanceFunction, p + "_stepEdge", "float", "SurfacePoint p", "p") + "float " + p +
+    code += stepDispatch(edgeDistanceFunctionOf, p + "_stepEdge", "float", "SurfacePoint p", "p") + "float " + p +
             "_edgeDistance(SurfacePoint p) {\n"
             "  return max(" +
             p + "_stepEdge(" + p + "_earlier, p), " + p + "_stepEdge(" + p + "_later, p));\n}\n";
   if (!faceSamplingFunction().empty())
-    code += stepDispatch(&Layer::faceSamplingFunction, p + "_stepFace", "vec4", "vec3 point, float footprint",
+    code += stepDispatch(faceSamplingFunctionOf, p + "_stepFace", "vec4", "vec3 point, float footprint",
                          "point, footprint") +
             "vec4 " + p +
             "_faceSample(vec3 point, float footprint) {\n"

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
 
 #include "temporal_series.hpp"
 
@@ -14,7 +15,9 @@ namespace strata::composite {
 // continuously with the date and never pops from one step to the next. Every step's sampling is in the
 // program once; two uniforms choose the bracketing pair, so stepping through time recompiles nothing. Steps may be
 // any layers of one kind, compositors included.
-class TemporalBlendLayer : public Layer {
+// It offers its steps' capabilities where every step has them: texels, aspect, HEALPix faces (never their
+// node bounds, which would need the series' every step).
+class TemporalBlendLayer : public Layer, public TexelledLayer, public ProjectedLayer, public HealpixFaceLayer {
  public:
   TemporalBlendLayer(const std::string& nodeId, std::vector<const Layer*> steps);
 
@@ -27,15 +30,18 @@ class TemporalBlendLayer : public Layer {
   std::string edgeDistanceFunction() const override;
   std::string faceSamplingFunction() const override;
   ProjectionAspect aspect() const override;
+  std::optional<ValueRange> faceNodeValues(int, int, std::int64_t, std::int64_t) const override { return std::nullopt; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override;
 
  private:
-  // Whether every step offers the function `of` names (Layer's optional functions).
-  bool everyStepHas(std::string (Layer::*of)() const) const;
-  std::string stepDispatch(std::string (Layer::*of)() const, const std::string& name, const std::string& type,
+  // A GLSL function a layer names: Layer::samplingFunction, or a capability's (texelStepsFunctionOf...).
+  using FunctionOf = std::string (*)(const Layer&);
+  // Whether every step offers the function `of` names (a capability's).
+  bool everyStepHas(FunctionOf of) const;
+  std::string stepDispatch(FunctionOf of, const std::string& name, const std::string& type,
                            const std::string& parameters, const std::string& arguments) const;
 
   std::string prefix_;

@@ -11,8 +11,11 @@
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/gl/surface_buffer.hpp>
 #include <strata/height_input.hpp>
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "node_buffers.hpp"
@@ -21,20 +24,39 @@
 namespace strata::healpix {
 namespace {
 
-int gridCellsOf(const NodeSetup& setup) {
-  const auto cells = int(setup.parameters.integer("cells"));
-  if (cells % 2 != 0)
-    throw Error(setup.parameters.where("cells"), "cells (" + std::to_string(cells) + ") is odd",
+// The node's parameters, bound to the selection's settings, whose defaults they take; the deepest level is fixed.
+const ParameterBindings<SelectionSettings>& healpixParameters() {
+  using S = SelectionSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::threshold, {.name = "threshold",
+                               .minimum = 0.001,
+                               .maximum = 10.0,
+                               .doc = "vertices wanted per pixel: a node is drawn once its area on screen times this "
+                                      "needs no more vertices than its grid has (0.2 is the paper's recommendation; it "
+                                      "measured 0.005 to 1.0)"})
+          .add(&S::gridCells, {.name = "cells",
+                               .minimum = 2.0,
+                               .maximum = 254.0,
+                               .doc = "grid cells along a node's side, even (64: 4225 vertices a node, so a few "
+                                      "hundred nodes cover a view; the paper's 254 is its data tiles' size, 16-bit "
+                                      "indices)"});
+  return bindings;
+}
+
+SelectionSettings selectionOf(const NodeSetup& setup) {
+  const SelectionSettings settings = healpixParameters().read(setup.parameters);
+  if (settings.gridCells % 2 != 0)
+    throw Error(healpixParameters().where(setup.parameters, &SelectionSettings::gridCells),
+                "cells (" + std::to_string(settings.gridCells) + ") is odd",
                 "give an even number: an edge next to a coarser node keeps every other vertex");
-  return cells;
+  return settings;
 }
 
 class HealpixGeometry : public Node, public SurfaceGeometry {
  public:
   explicit HealpixGeometry(const NodeSetup& setup)
-      : heights_(setup),
-        radius_(setup.body->radius),
-        settings_{.threshold = setup.parameters.real("threshold"), .gridCells = gridCellsOf(setup)} {}
+      : heights_(setup), radius_(setup.body->radius), settings_(selectionOf(setup)) {}
 
   void open() override { heights_.open(); }
 
@@ -65,7 +87,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   void render(const FrameState& frame) override;
 
   SurfaceGeometry* geometry() override { return this; }
-  const Framebuffer& gbuffer() const override { return gbuffer_; }
+  const Framebuffer& gbuffer() const override { return gbuffer_.framebuffer(); }
   HeightRange heights() const override { return heights_.range(); }
 
  private:
@@ -81,7 +103,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   std::optional<NodeBuffers> buffers_;
   std::optional<GpuTimer> rasterisationTimer_;
   double visibilityMs_ = 0.0;
-  Framebuffer gbuffer_;
+  SurfaceBuffer gbuffer_;
 };
 
 // The height layer's bounds over each node, where it knows them: a HEALPix pyramid's pages' true ranges, or
@@ -90,9 +112,9 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
 NodeHeights HealpixGeometry::nodeHeights() const {
   const Layer* layer = heights_.layer();
   if (!layer) return {};
-  if (!layer->faceSamplingFunction().empty())
-    return [layer](const NodeKey& key, const NodeCone&) -> std::optional<HeightRange> {
-      const std::optional<ValueRange> values = layer->faceNodeValues(key.face, key.level, key.ix, key.iy);
+  if (const auto* faces = layer->as<HealpixFaceLayer>(); faces && !faces->faceSamplingFunction().empty())
+    return [faces](const NodeKey& key, const NodeCone&) -> std::optional<HeightRange> {
+      const std::optional<ValueRange> values = faces->faceNodeValues(key.face, key.level, key.ix, key.iy);
       if (!values) return std::nullopt;
       return HeightRange{values->least, values->greatest};
     };
@@ -120,14 +142,8 @@ void HealpixGeometry::useSurface(const View& view) {
 
 void HealpixGeometry::render(const FrameState& frame) {
   const View& view = frame.view;
-  if (gbuffer_.width() != view.width || gbuffer_.height() != view.height)
-    gbuffer_ = Framebuffer(view.width, view.height, {GL_RGBA32F, GL_RGBA16F}, GL_DEPTH_COMPONENT32F);
   buffers_->upload(batch_);
-  gbuffer_.bind();
-  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
+  gbuffer_.begin(view.width, view.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
@@ -151,22 +167,7 @@ NodeTypeDeclaration declaration() {
   type.summary = "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size on screen, placed on the GPU";
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
-  type.parameters = {
-      {.name = "threshold",
-       .type = ParameterType::Real,
-       .defaultValue = 0.2,
-       .minimum = 0.001,
-       .maximum = 10.0,
-       .doc = "vertices wanted per pixel: a node is drawn once its area on screen times this needs no more "
-              "vertices than its grid has (0.2 is the paper's recommendation; it measured 0.005 to 1.0)"},
-      {.name = "cells",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t(64),
-       .minimum = 2.0,
-       .maximum = 254.0,
-       .doc = "grid cells along a node's side, even (64: 4225 vertices a node, so a few hundred nodes cover a "
-              "view; the paper's 254 is its data tiles' size, 16-bit indices)"},
-  };
+  type.parameters = healpixParameters().declarations();
   for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<HealpixGeometry>(setup); };
   return type;

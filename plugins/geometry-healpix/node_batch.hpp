@@ -23,7 +23,7 @@ struct GpuNode {
                                   // there; w: the centre's longitude from the reference, in [-pi, pi]
   glm::vec4 centre;               // xyz: unit vector of the centre, planet-fixed
   glm::vec4 corner;               // x: the face; y, z: the face point of the node's corner 0, where heights
-                                  // are sampled by face point (Layer::faceSamplingFunction); w: 0
+                                  // are sampled by face point (HealpixFaceLayer::faceSamplingFunction); w: 0
 };
 
 // A vertex on a node's outline, made on the CPU in double from its exact face point. A vertex two nodes share

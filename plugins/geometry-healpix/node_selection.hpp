@@ -29,8 +29,10 @@ struct SelectionSettings {
   // projected area in pixels times this needs no more vertices than its grid has. 0.2 recommended, 0.005
   // to 1.0 in the paper's figure 7.
   double threshold = 0.2;
-  int gridCells = 64;  // cells along a node's proxy grid: (gridCells + 1)^2 vertices
-  int maxLevel = 26;   // 2^-26 of a face, about 10 cm on Earth
+  // Cells along a node's proxy grid: (gridCells + 1)^2 vertices. 64: 4225 vertices a node, so a few hundred
+  // nodes cover a view (the paper's 254 is its data tiles' size, for 16-bit indices).
+  int gridCells = 64;
+  int maxLevel = 26;  // 2^-26 of a face, about 10 cm on Earth
   double gridVertices() const { return double(gridCells + 1) * double(gridCells + 1); }
 };
 
@@ -43,8 +45,8 @@ struct NodeShell {
 };
 
 // The heights over one node, of the cone given, where they are known more closely than the body's range (a
-// HEALPix pyramid's pages' true ranges, Layer::faceNodeValues, or another raster's over the cone,
-// Layer::valuesWithin; the paper's per-node boxes, [Westerteiger et al. 2011, §3.2.1]; docs/references.md,
+// HEALPix pyramid's pages' true ranges, HealpixFaceLayer::faceNodeValues, or another raster's over the cone,
+// RegionalValueLayer::valuesWithin; the paper's per-node boxes, [Westerteiger et al. 2011, §3.2.1]; docs/references.md,
 // Errata); empty: the body's range.
 using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&, const NodeCone&)>;
 

@@ -13,8 +13,10 @@
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/gl/surface_buffer.hpp>
 #include <strata/height_input.hpp>
 #include <strata/layer.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 #include <strata/spherical_cap.hpp>
 
@@ -24,15 +26,39 @@
 namespace strata::icosahedral {
 namespace {
 
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct IcosahedralSettings {
+  int patches = 300;    // Kooima 2008's np
+  int depth = 5;        // Kooima 2008's default
+  int operations = 64;  // keeps the tree's CPU time near half a millisecond and still follows a 30 Hz fly-in
+};
+
+const ParameterBindings<IcosahedralSettings>& icosahedralParameters() {
+  using S = IcosahedralSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::patches, {.name = "patches",
+                             .minimum = 20.0,
+                             .maximum = 20000.0,
+                             .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"})
+          .add(&S::depth, {.name = "depth",
+                           .minimum = 1.0,
+                           .maximum = 8.0,
+                           .doc = "subdivisions of each patch: 4^depth triangles (5 is Kooima 2008's default; 1 is the "
+                                  "least without T-junctions between levels)"})
+          .add(&S::operations, {.name = "operations",
+                                .minimum = 0.0,
+                                .maximum = 100000.0,
+                                .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU "
+                                       "time near half a millisecond and still follows a 30 Hz fly-in); 0 holds the "
+                                       "tree the first frame made, to look at it from elsewhere"});
+  return bindings;
+}
+
 class IcosahedralGeometry : public Node, public SurfaceGeometry {
  public:
   explicit IcosahedralGeometry(const NodeSetup& setup)
-      : heights_(setup),
-        radius_(setup.body->radius),
-        table_(int(setup.parameters.integer("depth"))),
-        windings_(table_),
-        treeSettings_{.patches = int(setup.parameters.integer("patches")),
-                      .operationsPerFrame = int(setup.parameters.integer("operations"))} {}
+      : IcosahedralGeometry(setup, icosahedralParameters().read(setup.parameters)) {}
 
   void open() override { heights_.open(); }
 
@@ -77,11 +103,17 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   void render(const FrameState& frame) override;
 
   SurfaceGeometry* geometry() override { return this; }
-  const Framebuffer& gbuffer() const override { return gbuffer_; }
+  const Framebuffer& gbuffer() const override { return gbuffer_.framebuffer(); }
   HeightRange heights() const override { return heights_.range(); }
 
  private:
-  void clear();
+  IcosahedralGeometry(const NodeSetup& setup, const IcosahedralSettings& settings)
+      : heights_(setup),
+        radius_(setup.body->radius),
+        table_(settings.depth),
+        windings_(table_),
+        treeSettings_{.patches = settings.patches, .operationsPerFrame = settings.operations} {}
+
   void plantTree();
 
   HeightInput heights_;
@@ -97,7 +129,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   std::optional<GpuTimer> subdivisionTimer_;
   std::optional<GpuTimer> rasterisationTimer_;
   double visibilityMs_ = 0.0;
-  Framebuffer gbuffer_;
+  SurfaceBuffer gbuffer_;
 };
 
 // The patches' shells take the heights the layer holds, each patch its own where the layer knows them.
@@ -108,16 +140,7 @@ void IcosahedralGeometry::plantTree() {
   tree_.emplace(radius_, heights_.range(), treeSettings_, std::move(patchHeights));
 }
 
-void IcosahedralGeometry::clear() {
-  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
-}
-
 void IcosahedralGeometry::render(const FrameState& frame) {
-  if (gbuffer_.width() != frame.view.width || gbuffer_.height() != frame.view.height)
-    gbuffer_ = Framebuffer(frame.view.width, frame.view.height, {GL_RGBA32F, GL_RGBA16F}, GL_DEPTH_COMPONENT32F);
   buffers_->upload(batch_);
   useSubdivision(subdivision_, batch_, table_.depth(), radius_);
   TextureUnits units;
@@ -126,8 +149,7 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   buffers_->subdivide();
   subdivisionTimer_->end();
 
-  gbuffer_.bind();
-  clear();
+  gbuffer_.begin(frame.view.width, frame.view.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // The far side of the body faces away: half the triangles need no fragments. From below the highest
@@ -151,29 +173,7 @@ NodeTypeDeclaration declaration() {
   type.summary = "The icosahedron tessellated for the view: patches chosen on the CPU, subdivided on the GPU";
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
-  type.parameters = {
-      {.name = "patches",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t(300),
-       .minimum = 20.0,
-       .maximum = 20000.0,
-       .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"},
-      {.name = "depth",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t(5),
-       .minimum = 1.0,
-       .maximum = 8.0,
-       .doc = "subdivisions of each patch: 4^depth triangles (5 is Kooima 2008's default; 1 is the least without "
-              "T-junctions between levels)"},
-      {.name = "operations",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t(64),
-       .minimum = 0.0,
-       .maximum = 100000.0,
-       .doc = "splits and merges a frame after the first may make (64 keeps the tree's CPU time near half a "
-              "millisecond and still follows a 30 Hz fly-in); 0 holds the tree the first frame made, to look at it "
-              "from elsewhere"},
-  };
+  type.parameters = icosahedralParameters().declarations();
   for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<IcosahedralGeometry>(setup); };
   return type;

@@ -15,8 +15,10 @@
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/gl/surface_buffer.hpp>
 #include <strata/height_input.hpp>
 #include <strata/layer.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "grid_mesh.hpp"
@@ -30,10 +32,33 @@
 namespace strata::pgm {
 namespace {
 
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct PgmSettings {
+  std::string grid = "1024x1024";  // the thesis's largest: a ray for every two pixels at 1920x1080
+  double zeta = 0.9;               // the thesis's
+};
+
+const ParameterBindings<PgmSettings>& pgmParameters() {
+  using S = PgmSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::grid, {.name = "grid",
+                          .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the "
+                                 "thesis's largest, is a ray for every two pixels at 1920x1080; a smaller grid "
+                                 "undersamples sharp peaks)"})
+          .add(&S::zeta, {.name = "zeta",
+                          .minimum = 0.0,
+                          .maximum = 1.0,
+                          .doc = "where rays start to turn from the primary sphere to the secondary one behind the "
+                                 "horizon, as a share of the angle to the primary's horizon (0.9 is the thesis's)"});
+  return bindings;
+}
+
 glm::ivec2 gridOf(const NodeSetup& setup) {
-  const std::optional<glm::ivec2> size = parseGridSize(setup.parameters.string("grid"));
+  const std::string grid = pgmParameters().read(setup.parameters).grid;
+  const std::optional<glm::ivec2> size = parseGridSize(grid);
   if (!size)
-    throw Error(setup.parameters.where("grid"), "grid '" + setup.parameters.string("grid") + "' is not a grid size",
+    throw Error(pgmParameters().where(setup.parameters, &PgmSettings::grid), "grid '" + grid + "' is not a grid size",
                 "write columns x rows, each from " + std::to_string(kLeastGridSide) + " to " +
                     std::to_string(kGreatestGridSide) + ", e.g. grid: 1024x1024");
   return *size;
@@ -55,7 +80,10 @@ ViewCamera viewCamera(const View& view) {
 class PgmGeometry : public Node, public SurfaceGeometry {
  public:
   explicit PgmGeometry(const NodeSetup& setup)
-      : heights_(setup), radius_(setup.body->radius), grid_(gridOf(setup)), zeta_(setup.parameters.real("zeta")) {}
+      : heights_(setup),
+        radius_(setup.body->radius),
+        grid_(gridOf(setup)),
+        zeta_(pgmParameters().read(setup.parameters).zeta) {}
 
   // The height layer has opened: where it knows its heights, they must lie within the reference spheres'.
   void open() override { heights_.open(); }
@@ -88,7 +116,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   void render(const FrameState& frame) override;
 
   SurfaceGeometry* geometry() override { return this; }
-  const Framebuffer& gbuffer() const override { return gbuffer_; }
+  const Framebuffer& gbuffer() const override { return gbuffer_.framebuffer(); }
   HeightRange heights() const override { return heights_.range(); }
 
  private:
@@ -109,13 +137,16 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   using ReducedView = std::pair<std::uint64_t, View>;  // a frame's index and view
   std::deque<ReducedView> reducedViews_;               // the frames whose reductions may be in flight
   double visibilityMs_ = 0.0;
-  Framebuffer gbuffer_;  // the deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_
+  // The deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_ (infinite where
+  // nothing was drawn: visible_radius.hpp).
+  SurfaceBuffer gbuffer_{{{GL_R32F, {std::numeric_limits<float>::infinity(), 0, 0, 0}}}};
 };
 
 void PgmGeometry::render(const FrameState& frame) {
   makeGrid(frame.view);
   rasterise(frame.view);
-  visibleRadius_->reduce(gbuffer_.color(2).id(), gbuffer_.width(), gbuffer_.height(), frame.index);
+  const Framebuffer& buffer = gbuffer_.framebuffer();
+  visibleRadius_->reduce(buffer.color(2).id(), buffer.width(), buffer.height(), frame.index);
   reducedViews_.emplace_back(frame.index, frame.view);
   if (reducedViews_.size() > VisibleRadius::kSlots) reducedViews_.pop_front();
 }
@@ -152,15 +183,7 @@ void PgmGeometry::makeGrid(const View& view) {
 }
 
 void PgmGeometry::rasterise(const View& view) {
-  if (gbuffer_.width() != view.width || gbuffer_.height() != view.height)
-    gbuffer_ = Framebuffer(view.width, view.height, {GL_RGBA32F, GL_RGBA16F, GL_R32F}, GL_DEPTH_COMPONENT32F);
-  gbuffer_.bind();
-  const float clearColour[4] = {0, 0, 0, 0}, farDepth = 0.0f;                   // reversed depth: 0 is infinitely far
-  const float noHeight[4] = {std::numeric_limits<float>::infinity(), 0, 0, 0};  // visible_radius.hpp
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 0, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 1, clearColour);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_COLOR, 2, noHeight);
-  glClearNamedFramebufferfv(gbuffer_.id(), GL_DEPTH, 0, &farDepth);
+  gbuffer_.begin(view.width, view.height);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
@@ -183,20 +206,7 @@ NodeTypeDeclaration declaration() {
       "rasterised each frame";
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
-  type.parameters = {
-      {.name = "grid",
-       .type = ParameterType::String,
-       .defaultValue = std::string("1024x1024"),
-       .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the thesis's largest, "
-              "is a ray for every two pixels at 1920x1080; a smaller grid undersamples sharp peaks)"},
-      {.name = "zeta",
-       .type = ParameterType::Real,
-       .defaultValue = 0.9,
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "where rays start to turn from the primary sphere to the secondary one behind the horizon, as a "
-              "share of the angle to the primary's horizon (0.9 is the thesis's)"},
-  };
+  type.parameters = pgmParameters().declarations();
   for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
   type.create = [](const NodeSetup& setup) { return std::make_unique<PgmGeometry>(setup); };
   return type;

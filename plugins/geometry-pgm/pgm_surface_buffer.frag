@@ -1,5 +1,5 @@
 #version 450 core
-// Writes the deferred texturing buffer (strata/geometry.hpp) for projective grid mapping, and each pixel's
+// Writes the deferred texturing buffer (strata/gl/surface_buffer.hpp) for projective grid mapping, and each pixel's
 // height for the next frame's primary sphere (plugins/geometry-pgm/visible_radius.hpp). Longitude and
 // latitude come from the interpolated sphere normal, as [Mahsman 2010, §3.7.2] does (its Fig. 3.52):
 // interpolated longitudes would sweep through 180 degrees across a triangle that straddles the meridian

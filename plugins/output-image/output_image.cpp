@@ -11,6 +11,7 @@
 #include <strata/gl/shader_program.hpp>
 #include <strata/layer.hpp>
 #include <strata/output.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 
 #include "plugin_shaders.hpp"
@@ -19,11 +20,66 @@
 namespace strata::image {
 namespace {
 
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct ImageSettings {
+  bool lambert = true;
+  // 315/45 is the cartographic convention for shaded relief: light from the upper left, so hills do not read
+  // as valleys.
+  double lightAzimuth = 315.0;
+  double lightElevation = 45.0;
+  double ambient = 0.25;
+  double opacity = 0.5;  // what lies behind shows as clearly as the translucent surface itself
+  std::string display;
+  std::string view;
+};
+
+// The light and the opacity are uniforms, changed the next frame; the display and view are GLSL.
+const ParameterBindings<ImageSettings>& imageParameters() {
+  using S = ImageSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .choice(&S::lambert,
+                  {.name = "shading",
+                   .doc = "lambert: lit by one distant light; none: the layers' colours as they are",
+                   .live = true},
+                  {{"lambert", true}, {"none", false}})
+          .add(&S::lightAzimuth, {.name = "light_azimuth",
+                                  .minimum = 0.0,
+                                  .maximum = 360.0,
+                                  .units = "deg",
+                                  .doc = "where the light comes from, clockwise from the top of the image",
+                                  .live = true})
+          .add(&S::lightElevation, {.name = "light_elevation",
+                                    .minimum = 0.0,
+                                    .maximum = 90.0,
+                                    .units = "deg",
+                                    .doc = "the light's angle above the image plane",
+                                    .live = true})
+          .add(&S::ambient, {.name = "ambient",
+                             .minimum = 0.0,
+                             .maximum = 1.0,
+                             .doc = "share of light on surfaces facing away, so the night side keeps its imagery "
+                                    "readable",
+                             .live = true})
+          .add(&S::opacity, {.name = "opacity",
+                             .minimum = 0.0,
+                             .maximum = 1.0,
+                             .doc = "how much of what lies behind each translucent surface it hides",
+                             .live = true})
+          .add(&S::display, {.name = "display",
+                             .doc = "the OpenColorIO display the frame is for; empty: the config's default "
+                                    "(Strata's: sRGB)"})
+          .add(&S::view, {.name = "view",
+                          .doc = "the display's view; empty: its default (Strata's sRGB: Standard; Raw shows linear "
+                                 "values as they are)"});
+  return bindings;
+}
+
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
       : geometry_(setup.input("geometry")->geometry()),
-        parameters_(setup.parameters),
+        settings_(imageParameters().read(setup.parameters)),
         displayGlsl_(displayGlsl(setup)),
         translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
@@ -54,8 +110,8 @@ class ImageOutput : public Node, public FrameOutput {
     frame_.bind();
     program_.use();
     program_.set("lightDirection", lightDirection(frame.view));
-    program_.set("ambient", float(parameters_.real("ambient")));
-    program_.set("shade", parameters_.string("shading") == "lambert" ? 1 : 0);
+    program_.set("ambient", float(settings_.ambient));
+    program_.set("shade", settings_.lambert ? 1 : 0);
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
     program_.set("background", glm::vec3(0.0f));
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
@@ -64,11 +120,11 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
-    translucent_.bind(program_, units, parameters_.real("opacity"));
+    translucent_.bind(program_, units, settings_.opacity);
     triangle_->draw();
   }
 
-  void update(const ParameterSet& parameters) override { parameters_ = parameters; }
+  void update(const ParameterSet& parameters) override { settings_ = imageParameters().read(parameters); }
 
   FrameOutput* output() override { return this; }
   const Framebuffer& frame() const override { return frame_; }
@@ -84,26 +140,26 @@ class ImageOutput : public Node, public FrameOutput {
   static std::string displayGlsl(const NodeSetup& setup) {
     const ColourConfig config =
         ColourConfig::load(setup.colour.config, setup.colour.config.empty() ? setup.where : setup.colour.where);
-    const std::string& display = setup.parameters.string("display");
-    const std::string chosen = display.empty() ? config.defaultDisplay() : display;
-    const std::string& view = setup.parameters.string("view");
-    return config.toDisplay(chosen, view.empty() ? config.defaultView(chosen) : view, "strataDisplay",
-                            setup.parameters.where(view.empty() ? "display" : "view"));
+    const ImageSettings settings = imageParameters().read(setup.parameters);
+    const std::string chosen = settings.display.empty() ? config.defaultDisplay() : settings.display;
+    const std::string& view = settings.view;
+    return config.toDisplay(
+        chosen, view.empty() ? config.defaultView(chosen) : view, "strataDisplay",
+        imageParameters().where(setup.parameters, view.empty() ? &ImageSettings::display : &ImageSettings::view));
   }
 
   // The light, given in the view (azimuth clockwise from the top of the image, elevation above the image
-  // plane toward the viewer), turned into planet-fixed axes. 315/45 is the cartographic convention for
-  // shaded relief: light from the upper left, so hills do not read as valleys.
+  // plane toward the viewer), turned into planet-fixed axes.
   glm::vec3 lightDirection(const View& view) const {
-    const double azimuth = glm::radians(parameters_.real("light_azimuth"));
-    const double elevation = glm::radians(parameters_.real("light_elevation"));
+    const double azimuth = glm::radians(settings_.lightAzimuth);
+    const double elevation = glm::radians(settings_.lightElevation);
     const glm::dvec3 inView(std::sin(azimuth) * std::cos(elevation), std::cos(azimuth) * std::cos(elevation),
                             std::sin(elevation));
     return glm::vec3(glm::transpose(view.planetToEye) * inView);
   }
 
   SurfaceGeometry* geometry_;
-  ParameterSet parameters_;
+  ImageSettings settings_;
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
   TranslucentSurfaces translucent_;
@@ -138,54 +194,7 @@ NodeTypeDeclaration declaration() {
        .optional = true,
        .doc = "one colour layer per translucent geometry, in the same order"},
   };
-  // The light and the opacity are uniforms, changed the next frame; the display and view are GLSL.
-  type.parameters = {
-      {.name = "shading",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("lambert"),
-       .doc = "lambert: lit by one distant light; none: the layers' colours as they are",
-       .choices = {"lambert", "none"},
-       .live = true},
-      {.name = "light_azimuth",
-       .type = ParameterType::Real,
-       .defaultValue = 315.0,
-       .minimum = 0.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "where the light comes from, clockwise from the top of the image",
-       .live = true},
-      {.name = "light_elevation",
-       .type = ParameterType::Real,
-       .defaultValue = 45.0,
-       .minimum = 0.0,
-       .maximum = 90.0,
-       .units = "deg",
-       .doc = "the light's angle above the image plane",
-       .live = true},
-      {.name = "ambient",
-       .type = ParameterType::Real,
-       .defaultValue = 0.25,
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "share of light on surfaces facing away, so the night side keeps its imagery readable",
-       .live = true},
-      // 0.5: what lies behind shows as clearly as the translucent surface itself
-      {.name = "opacity",
-       .type = ParameterType::Real,
-       .defaultValue = 0.5,
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "how much of what lies behind each translucent surface it hides",
-       .live = true},
-      {.name = "display",
-       .type = ParameterType::String,
-       .defaultValue = std::string(),
-       .doc = "the OpenColorIO display the frame is for; empty: the config's default (Strata's: sRGB)"},
-      {.name = "view",
-       .type = ParameterType::String,
-       .defaultValue = std::string(),
-       .doc = "the display's view; empty: its default (Strata's sRGB: Standard; Raw shows linear values as they are)"},
-  };
+  type.parameters = imageParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<ImageOutput>(setup); };
   return type;
 }

@@ -21,10 +21,13 @@ struct ColourEncoding {
   }
 };
 
-// The encoding a layer of `kind` declares, checked against the pipeline's config when the pipeline loads;
-// none where its values need no conversion (a scene-linear or data space, or a kind that is not colour).
-// Throws strata::Error at the `colorspace` line for a space the config lacks (listing those it has), one
-// whose conversion the GPU cannot run, and a `colorspace` given to a kind that holds values, not colours.
-std::optional<ColourEncoding> colourEncodingOf(const NodeSetup& setup, LayerKind kind);
+struct GdalSettings;
+
+// The encoding `colorspace` gives a layer of `kind` (source_gdal_settings.hpp), checked against the pipeline's
+// config when the pipeline loads; none where its values need no conversion (a scene-linear or data space,
+// or a kind that is not colour). Throws strata::Error at the `colorspace` line for a space the config lacks
+// (listing those it has), one whose conversion the GPU cannot run, and a `colorspace` given to a kind that
+// holds values, not colours.
+std::optional<ColourEncoding> colourEncodingOf(const NodeSetup& setup, const GdalSettings& settings);
 
 }  // namespace strata::gdal

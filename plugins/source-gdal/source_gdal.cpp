@@ -22,6 +22,7 @@
 #include "polygon_mask.hpp"
 #include "quiet_gdal_errors.hpp"
 #include "raster_reading.hpp"
+#include "source_gdal_settings.hpp"
 #include "value_range.hpp"
 
 namespace strata::gdal {
@@ -31,36 +32,36 @@ class GdalSource : public Node {
  public:
   explicit GdalSource(const NodeSetup& setup)
       : parameters_(setup.parameters),
+        settings_(gdalParameters().read(setup.parameters)),
         plugins_(*setup.plugins),
-        kind_(kindOf(setup)),
-        encoding_(colourEncodingOf(setup, kind_)),
-        layer_(setup.id, kind_) {
-    layer_.setValueTransform(setup.parameters.real("scale"), setup.parameters.real("offset"));
+        encoding_(colourEncodingOf(setup, settings_)),
+        layer_(setup.id, settings_.kind) {
+    layer_.setValueTransform(settings_.scale, settings_.offset);
   }
 
   void open() override {
-    const SourceLocation where = parameters_.where("path");
+    const SourceLocation where = whereOf(&GdalSettings::path);
     std::unique_ptr<GDALDataset> dataset = openDataset(where);
-    checkRaster(*dataset, kind_, where);
+    checkRaster(*dataset, settings_.kind, where);
     std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where);
-    if (kind_ != LayerKind::Color) countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
-    if (kind_ == LayerKind::Height) refuseHeightsNoTerrainHas(where);
+    if (settings_.kind != LayerKind::Color) countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
+    if (settings_.kind == LayerKind::Height) refuseHeightsNoTerrainHas(where);
     if (healpix) {
       refusePlacement("a HEALPix pyramid");
       georeference_ = std::move(healpix->georeference);
       layer_.setPageRanges(std::move(healpix->ranges));
       // A window lies inside one face, so its pages need no border from another.
       if (healpix->window)
-        source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, encoding_);
+        source_ = std::make_shared<GdalPageSource>(std::move(dataset), settings_.kind, encoding_);
       else
-        source_ = std::make_shared<HealpixPageSource>(std::move(dataset), kind_, encoding_, healpix->nside);
+        source_ = std::make_shared<HealpixPageSource>(std::move(dataset), settings_.kind, encoding_, healpix->nside);
       return;
     }
     georeference_ = georeferenceOf(*dataset, plugins_,
-                                   {parameters_.string("projection"), parameters_.where("projection"),
-                                    parameters_.reals("extent"), parameters_.where("extent"), where});
+                                   {settings_.projection, whereOf(&GdalSettings::projection), settings_.extent,
+                                    whereOf(&GdalSettings::extent), where});
     warnWithoutOverviews(*dataset);
-    source_ = std::make_shared<GdalPageSource>(std::move(dataset), kind_, encoding_, polygonMask_);
+    source_ = std::make_shared<GdalPageSource>(std::move(dataset), settings_.kind, encoding_, polygonMask_);
   }
 
   void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
@@ -72,9 +73,15 @@ class GdalSource : public Node {
   Layer* layer() override { return &layer_; }
 
  private:
+  // Where the pipeline gives the setting held in `member` (the node's location for a default).
+  template <class T>
+  const SourceLocation& whereOf(T GdalSettings::*member) const {
+    return gdalParameters().where(parameters_, member);
+  }
+
   // The raster at `path`, or the mask of its polygons where GDAL opens it only as a vector file.
   std::unique_ptr<GDALDataset> openDataset(const SourceLocation& where) {
-    const std::string path = parameters_.path("path").string();
+    const std::string path = settings_.path.string();
     if (std::error_code error; std::filesystem::file_size(path, error) == 0 && !error)
       throw Error(where, "'" + path + "' is empty (0 bytes)", "the file was not written out: copy or make it again");
     std::string rasterError;
@@ -94,26 +101,25 @@ class GdalSource : public Node {
 
   std::unique_ptr<GDALDataset> polygonMaskOf(GDALDataset& vector, const SourceLocation& where) {
     const std::string path = vector.GetDescription();
-    if (kind_ != LayerKind::Mask)
-      throw Error(parameters_.where("kind"),
+    if (settings_.kind != LayerKind::Mask)
+      throw Error(whereOf(&GdalSettings::kind),
                   "'" + path + "' is a vector file, which source.gdal reads as a mask of its polygons",
                   "add `kind: mask`, and give the layer as a `mask` (composite.overlay_mask)");
-    if (!parameters_.reals("extent").empty())
-      throw Error(parameters_.where("extent"), "'" + path + "' is a vector file, whose polygons say where they lie",
+    if (!settings_.extent.empty())
+      throw Error(whereOf(&GdalSettings::extent), "'" + path + "' is a vector file, whose polygons say where they lie",
                   "remove `extent`");
-    PolygonMask mask = rasterisePolygons(
-        vector, {parameters_.string("vector_layer"), parameters_.where("vector_layer"),
-                 int(parameters_.integer("texels")), !parameters_.string("projection").empty(), where});
+    PolygonMask mask = rasterisePolygons(vector, {settings_.vectorLayer, whereOf(&GdalSettings::vectorLayer),
+                                                  settings_.texels, !settings_.projection.empty(), where});
     polygonMask_ = std::move(mask.file);
     return std::move(mask.raster);
   }
 
   // The range of a one-channel raster's values, and a height raster's block by block, which patches of
-  // terrain take their own heights from (Layer::valuesWithin); the ranges `strata tile` stored (a HEALPix
+  // terrain take their own heights from (RegionalValueLayer::valuesWithin); the ranges `strata tile` stored (a HEALPix
   // pyramid's pages', a large raster's blocks) need no reading.
   void countValues(GDALDataset& dataset, const healpix::PageRanges* pageRanges) {
     const std::shared_ptr<BlockRanges> blocks =
-        kind_ == LayerKind::Height && !pageRanges ? blockRangesOf(dataset) : nullptr;
+        settings_.kind == LayerKind::Height && !pageRanges ? blockRangesOf(dataset) : nullptr;
     const std::optional<ValueRange> raw = blocks ? exactRawRange(dataset, *blocks) : exactRawRange(dataset, pageRanges);
     if (raw) layer_.setRawRange(*raw);
     layer_.setBlockRanges(blocks);
@@ -121,11 +127,11 @@ class GdalSource : public Node {
 
   // A file that places itself (a HEALPix pyramid) takes no `projection` or `extent`.
   void refusePlacement(const std::string& what) const {
-    const bool projection = !parameters_.string("projection").empty(), extent = !parameters_.reals("extent").empty();
+    const bool projection = !settings_.projection.empty(), extent = !settings_.extent.empty();
     if (!projection && !extent) return;
     const std::string name = projection ? "projection" : "extent";
-    throw Error(parameters_.where(name),
-                "'" + parameters_.path("path").string() + "' is " + what + ", which says where its texels lie",
+    throw Error(projection ? whereOf(&GdalSettings::projection) : whereOf(&GdalSettings::extent),
+                "'" + settings_.path.string() + "' is " + what + ", which says where its texels lie",
                 "remove `" + name + "`");
   }
 
@@ -136,7 +142,7 @@ class GdalSource : public Node {
     if (!range || (range->least >= -kMostRelief && range->greatest <= kMostRelief)) return;
     std::array<char, 96> extremes{};
     std::snprintf(extremes.data(), extremes.size(), "%g to %g m", range->least, range->greatest);
-    const std::string path = parameters_.path("path").string();
+    const std::string path = settings_.path.string();
     throw Error(where,
                 "'" + path + "' holds heights from " + extremes.data() +
                     " (after scale and offset), beyond any terrain: a fill value not declared as nodata, or not metres",
@@ -147,12 +153,6 @@ class GdalSource : public Node {
   // 1000 km: far above the relief mapped on any body, tens of kilometres (Mars' 30 km, Vesta's about 40),
   // yet far below the fill values files use (-3.4e38, -1e20, 9.97e36).
   static constexpr double kMostRelief = 1.0e6;
-
-  static LayerKind kindOf(const NodeSetup& setup) {
-    LayerKind kind = LayerKind::Color;
-    parseLayerKind(setup.parameters.string("kind"), kind);  // the declaration's choices are all valid kinds
-    return kind;
-  }
 
   // Coarse pages of a large raster without overviews are averaged from every texel under them: slow.
   static void warnWithoutOverviews(GDALDataset& dataset) {
@@ -169,9 +169,9 @@ class GdalSource : public Node {
   // second's work; beyond, loading a view's first pages takes noticeably long.
   static constexpr int kSlowWithoutOverviews = 4096;
 
-  ParameterSet parameters_;
+  ParameterSet parameters_;  // where each setting was given, for messages
+  GdalSettings settings_;
   const PluginRegistry& plugins_;
-  LayerKind kind_;
   std::optional<ColourEncoding> encoding_;  // none: values, or colours already scene-linear
   PagedRasterLayer layer_;
   std::shared_ptr<const MemoryFile> polygonMask_;  // where a vector file's polygons were rasterised
@@ -187,58 +187,7 @@ NodeTypeDeclaration declaration() {
       "A layer from any raster GDAL opens (GeoTIFF, JPEG, PNG, GTX, ...), in any registered projection, "
       "or a mask from the polygons of any vector file it opens (GeoJSON, Shapefile, GeoPackage, ...)";
   type.output = PortType::Layer;
-  type.parameters = {
-      {.name = "path",
-       .type = ParameterType::Path,
-       .doc = "the raster file, or a vector file of polygons (with kind: mask); relative to the pipeline file"},
-      {.name = "kind",
-       .type = ParameterType::Choice,
-       .defaultValue = std::string("color"),
-       .doc = "what the values are: color (8/16-bit, see colorspace) or one-channel height, scalar, luminance, mask",
-       .choices = {"color", "height", "scalar", "luminance", "mask"}},
-      // srgb: 8-bit imagery (cameras, the web, map tiles) is almost always sRGB-encoded.
-      {.name = "colorspace",
-       .type = ParameterType::String,
-       .defaultValue = std::string("srgb"),
-       .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's OpenColorIO "
-              "config (Strata's: srgb, gamma22, linear, raw); converted to scene-linear on the GPU"},
-      {.name = "scale",
-       .type = ParameterType::Real,
-       .defaultValue = 1.0,
-       .doc = "one-channel kinds: multiplies raw values (vertical exaggeration, or counts to metres)"},
-      {.name = "offset",
-       .type = ParameterType::Real,
-       .defaultValue = 0.0,
-       .doc = "one-channel kinds: added after scale (metres for heights)"},
-      {.name = "extent",
-       .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{},
-       .minimum = -360.0,
-       .maximum = 360.0,
-       .units = "deg",
-       .doc = "[west, south, east, north] of a longitude/latitude raster; empty: from its geotransform (a bare 2:1 "
-              "raster is global)",
-       .count = 4},
-      {.name = "projection",
-       .type = ParameterType::String,
-       .defaultValue = std::string(),
-       .doc = "the raster's CRS when the file's is missing or wrong: WKT, a PROJ string or EPSG:code; empty: the "
-              "file's CRS (none: longitude/latitude)"},
-      {.name = "vector_layer",
-       .type = ParameterType::String,
-       .defaultValue = std::string(),
-       .doc = "vector files: the layer whose polygons make the mask; empty: the file's first (GeoJSON and "
-              "Shapefiles have one)"},
-      // 2048: the polygons' edges within half a texel of 1/2048 of their extent, under a pixel wherever the
-      // whole mask fits on a 1920-pixel screen, in 16 MB (Float32); finer edges up close want a larger value,
-      // up to 8192 (256 MB, held in memory while the node lives).
-      {.name = "texels",
-       .type = ParameterType::Integer,
-       .defaultValue = std::int64_t{2048},
-       .minimum = 16.0,
-       .maximum = 8192.0,
-       .doc = "vector files: the mask raster's texels across the polygons' longer side (how sharp their edges are)"},
-  };
+  type.parameters = gdalParameters().declarations();
   type.create = [](const NodeSetup& setup) { return std::make_unique<GdalSource>(setup); };
   return type;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // Bounds of the procedural planet's heights over a cap of the sphere, so that geometry measures a patch on
-// the terrain it holds rather than on the planet's whole range (Layer::valuesWithin; docs/geometry.md,
+// the terrain it holds rather than on the planet's whole range (RegionalValueLayer::valuesWithin; docs/geometry.md,
 // "Height ranges"). In double on the CPU, from the noise at the cap's centre and the noise's slope bound.
 #include <glm/glm.hpp>
 

@@ -2,6 +2,7 @@
 #include <string>
 
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
 
 #include "planet_lattice.hpp"
 #include "planet_model.hpp"
@@ -12,7 +13,7 @@ namespace strata::procedural {
 // sample's unit normal: no texture, so it is sharp at any distance, and the sample's footprint decides how
 // many octaves it sums, so it never aliases. Heights (kind height) come multiplied by `scale`; colours
 // (kind color) are those of the true heights, with their contour lines.
-class ProceduralLayer : public Layer {
+class ProceduralLayer : public Layer, public RegionalValueLayer {
  public:
   ProceduralLayer(const std::string& nodeId, LayerKind kind, const PlanetParameters& planet, double radius,
                   double scale);

@@ -1,5 +1,5 @@
 #version 450 core
-// Writes the deferred texturing buffer ([Kooima 2008, §3.4.2]), see strata/geometry.hpp.
+// Writes the deferred texturing buffer ([Kooima 2008, §3.4.2]), see strata/gl/surface_buffer.hpp.
 in vec2 vLonlatFromReference;  // rad from View::reference
 in vec3 vSphereNormal;
 in vec3 vShadingNormal;

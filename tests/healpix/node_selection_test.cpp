@@ -66,10 +66,10 @@ TEST(NodeSelection, EveryVisiblePointLiesInExactlyOneNode) {
   }
 }
 
-// Per-node heights (a HEALPix pyramid's page ranges, Layer::faceNodeValues) in place of one global range: 5 km
-// above ground whose heights reach +-240 km somewhere (procedural.yaml's relief exaggerated 20 times) but lie
-// within +-2 km here, the shells near the eye shrink from columns 480 km tall to 4 km, and far fewer nodes
-// are drawn; every ray that meets the ground still lands in exactly one node.
+// Per-node heights (a HEALPix pyramid's page ranges, HealpixFaceLayer::faceNodeValues) in place of one global range: 5
+// km above ground whose heights reach +-240 km somewhere (procedural.yaml's relief exaggerated 20 times) but lie within
+// +-2 km here, the shells near the eye shrink from columns 480 km tall to 4 km, and far fewer nodes are drawn; every
+// ray that meets the ground still lands in exactly one node.
 TEST(NodeSelection, PerNodeHeightsRefineOnlyWhatTheViewNeeds) {
   const HeightRange global{-240000.0, 240000.0}, local{-2000.0, 2000.0};
   const View view = makeView(Body{"Earth", kEarthRadius}, {20.0, 30.0, 5000.0, 60.0, 70.0, 45.0}, kWidth, kHeight);

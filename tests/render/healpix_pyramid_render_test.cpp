@@ -2,11 +2,11 @@
 // field in a global longitude/latitude raster of 4096 x 2048, and in the pyramid of nside 512 that `strata
 // tile --to healpix` makes of it, give the same planet. geometry.icosahedral and geometry.pgm read the
 // pyramid through the strip's projection; geometry.healpix reads it by face point, with no projection
-// (Layer::faceSamplingFunction), and bounds its nodes by the pyramid's page ranges (Layer::faceNodeValues).
-// Views: the whole planet; a face corner where three faces meet (lon 0, lat asin(2/3)) from 300 km and 20 km,
-// tilted; the north pole, where four do, from 300 km: pages meet across face edges there. The field is
-// exaggerated 20 times, as in generator_agreement_test.cpp, and the colour layer is the test checkerboard,
-// whose cell edges show where each mesh puts the ground.
+// (HealpixFaceLayer::faceSamplingFunction), and bounds its nodes by the pyramid's page ranges
+// (HealpixFaceLayer::faceNodeValues). Views: the whole planet; a face corner where three faces meet (lon 0, lat
+// asin(2/3)) from 300 km and 20 km, tilted; the north pole, where four do, from 300 km: pages meet across face edges
+// there. The field is exaggerated 20 times, as in generator_agreement_test.cpp, and the colour layer is the test
+// checkerboard, whose cell edges show where each mesh puts the ground.
 //
 // Both rasters sample the field about as finely (0.088 and 0.115 degrees) and its shortest wavelength is
 // over 40 degrees: the images should differ only where the meshes' vertices fall differently on the slopes,

@@ -15,7 +15,7 @@
 // tilted, must be as exact: the generators measure their detail from the ground the height layer's range
 // allows nearest the eye, not from the sphere 3 km below, which gave the heights' filtering the detail of a
 // view from 3 km (geometry.healpix was 3 cm off), and geometry.icosahedral's patches are measured on their own
-// heights (Layer::valuesWithin; measured on the sphere they stood 82 cm off straight down, 2.2 m tilted),
+// heights (RegionalValueLayer::valuesWithin; measured on the sphere they stood 82 cm off straight down, 2.2 m tilted),
 // also where the strip lies in a raster too large to count when opened, from the ranges `strata tile` stored.
 #include <gtest/gtest.h>
 

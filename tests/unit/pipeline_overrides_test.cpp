@@ -97,12 +97,21 @@ TEST_F(OverridesTest, UnknownTopLevelKeyFromAnOverride) {
   EXPECT_EQ(error.where().file, "--set");
 }
 
+TEST_F(OverridesTest, SetsAKeyOfASceneSectionThePipelineLeavesOut) {
+  const Pipeline pipeline = parse(pipeline_, {"body.radius=1737400", "cache.budget=64"});
+  EXPECT_DOUBLE_EQ(pipeline.body.radius, 1737400.0);
+  EXPECT_EQ(pipeline.body.name, "Earth") << "the rest of the section keeps its defaults";
+  EXPECT_EQ(pipeline.cache.budgetBytes, 64u << 20);
+}
+
 TEST_F(OverridesTest, MissingIntermediateKey) {
-  const Error error = overrideError("body.radius=1737400");
-  EXPECT_EQ(error.problem(), "cannot apply --set 'body.radius=1737400': the pipeline has no 'body'");
-  EXPECT_EQ(error.fix(), "add it to the file, or set it whole: --set 'body={radius: 1737400}'");
+  const Error error = overrideError("nodes.relief.scale=2");
+  EXPECT_EQ(error.problem(), "cannot apply --set 'nodes.relief.scale=2': the pipeline has no 'nodes.relief'");
   EXPECT_EQ(error.where().file, "--set");
   EXPECT_EQ(error.where().line, 0);
+  const Error scalar = overrideError("date.day=3");
+  EXPECT_EQ(scalar.problem(), "cannot apply --set 'date.day=3': the pipeline has no 'date'")
+      << "the date is a value, not a section of keys";
 }
 
 TEST_F(OverridesTest, MissingIntermediateKeyDeeperDown) {

@@ -70,6 +70,20 @@ TEST_F(ParameterPanelTest, ItsModelChangesALiveParameterForTheNextFrame) {
   EXPECT_EQ(std::get<double>(control("heights", "scale").value), 2.0);
 }
 
+TEST_F(ParameterPanelTest, TheScenesSettingsAreControlsToo) {
+  const viewer::ParameterControl radius = control("body", "radius");
+  EXPECT_EQ(std::get<double>(radius.value), 6371000.0) << "the body's default: the pipeline gives none";
+  EXPECT_EQ(viewer::overrideOf(radius, 3389500.0), "body.radius=3389500");
+  engine_->camera().lon = 25.0;  // the viewer moved
+  const viewer::ParameterControl fov = control("camera", "fov");
+  EXPECT_TRUE(viewer::apply(*engine_, fov, 30.0)) << "the camera's values move the view at once";
+  EXPECT_EQ(engine_->camera().fov, 30.0);
+  EXPECT_EQ(engine_->camera().lon, 25.0) << "and leave the rest of the view where the viewer put it";
+  EXPECT_EQ(std::get<double>(control("camera", "lon").value), 25.0);
+  EXPECT_FALSE(viewer::apply(*engine_, control("cache", "budget"), std::int64_t(64)));
+  EXPECT_EQ(engine_->pipeline().cache.budgetBytes, std::uint64_t(64) << 20);
+}
+
 TEST(PipelineWatcher, SaysWhenTheFileWasEdited) {
   TemporaryDirectory directory;
   const auto file = directory.write("p.yaml", kRelief);

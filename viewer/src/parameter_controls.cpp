@@ -4,6 +4,7 @@
 #include <strata/node_type.hpp>
 #include <strata/pipeline.hpp>
 #include <strata/plugin_registry.hpp>
+#include <strata/scene_settings.hpp>
 
 namespace strata::viewer {
 namespace {
@@ -22,16 +23,39 @@ std::string isoDates(const std::vector<double>& days) {
   return text + "]";
 }
 
+constexpr const char* kCamera = "camera";
+
+// A control for each parameter `set` holds (an optional parameter left unset has no value to show).
+void addControls(std::vector<ParameterControl>& controls, const std::string& node, const std::string& type,
+                 const std::string& path, const std::vector<ParameterDeclaration>& declarations,
+                 const ParameterSet& set) {
+  for (const ParameterDeclaration& parameter : declarations)
+    if (set.has(parameter.name)) controls.push_back({node, type, path, &parameter, set.value(parameter.name)});
+}
+
+// The sections that are maps; the date has its slider in the scene panel.
+std::vector<ParameterControl> sceneControls(Engine& engine) {
+  const Pipeline& pipeline = engine.pipeline();
+  const std::vector<std::pair<const char*, ParameterSet>> sections{
+      {"body", bodyParameters().parameters(pipeline.body, {})},
+      {kCamera, cameraParameters().parameters(engine.camera(), {})},
+      {"cache", cacheParameters().parameters(pipeline.cache, {})},
+      {"colour", colourParameters().parameters(pipeline.colour, {})},
+  };
+  std::vector<ParameterControl> controls;
+  for (const auto& [name, set] : sections)
+    addControls(controls, name, "scene", name, findSceneSection(name)->parameters, set);
+  return controls;
+}
+
 }  // namespace
 
 std::vector<ParameterControl> parameterControls(Engine& engine) {
-  std::vector<ParameterControl> controls;
+  std::vector<ParameterControl> controls = sceneControls(engine);
   for (const NodeDescription& node : engine.pipeline().nodes) {
     const NodeTypeDeclaration* type = engine.plugins().find(node.type);
     if (!type) continue;
-    for (const ParameterDeclaration& parameter : type->parameters)
-      if (node.parameters.has(parameter.name))  // an optional parameter left unset has no value to show
-        controls.push_back({node.id, node.type, &parameter, node.parameters.value(parameter.name)});
+    addControls(controls, node.id, node.type, "nodes." + node.id, type->parameters, node.parameters);
   }
   return controls;
 }
@@ -40,11 +64,16 @@ std::string overrideOf(const ParameterControl& control, const ParameterValue& va
   std::string text = formatValue(value);
   if (std::holds_alternative<std::string>(value)) text = quoted(std::get<std::string>(value));
   if (control.declaration->type == ParameterType::DateList) text = isoDates(std::get<std::vector<double>>(value));
-  return "nodes." + control.node + "." + control.declaration->name + "=" + text;
+  if (control.declaration->type == ParameterType::Date) text = formatIsoDate(std::get<double>(value));
+  return control.path + "." + control.declaration->name + "=" + text;
 }
 
 bool apply(Engine& engine, const ParameterControl& control, const ParameterValue& value) {
-  return engine.set(overrideOf(control, value));
+  if (control.path != kCamera) return engine.set(overrideOf(control, value));
+  ParameterSet camera = cameraParameters().parameters(engine.camera(), {});
+  camera.set(control.declaration->name, value, {});
+  engine.camera() = cameraParameters().read(camera);
+  return true;
 }
 
 }  // namespace strata::viewer

@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "camera_path/sphere_geodesics.hpp"
-#include "pipeline/camera_fields.hpp"
 #include "pipeline/interval.hpp"
+#include "pipeline/scene_parsing.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
 
@@ -16,8 +16,10 @@ using loader::Interval;
 using loader::SourceMap;
 
 // Where the camera is must be said; how it looks defaults to Camera's (north up, straight down).
-bool required(const loader::CameraField& field) {
-  return field.member == &Camera::lon || field.member == &Camera::lat || field.member == &Camera::altitude;
+std::vector<std::string> requiredCameraKeys() {
+  const ParameterBindings<Camera>& camera = cameraParameters();
+  return {camera.declarationOf(&Camera::lon).name, camera.declarationOf(&Camera::lat).name,
+          camera.declarationOf(&Camera::altitude).name};
 }
 
 constexpr const char* kCameraExample = "{lon: 10, lat: 46, altitude: 5000}";
@@ -45,12 +47,14 @@ double readField(const YAML::Node& map, const char* key, const Interval& allowed
 Camera readCamera(const YAML::Node& map, const SourceMap& source, const std::string& what,
                   std::vector<std::string> extraKeys) {
   requireMap(map, source, what, kCameraExample);
-  for (const auto& field : loader::kCameraFields) extraKeys.emplace_back(field.name);
+  const std::vector<ParameterDeclaration>& parameters = cameraParameters().declarations();
+  for (const std::string& name : loader::namesOf(parameters)) extraKeys.push_back(name);
   loader::requireKnownKeys(map, extraKeys, source, what);
-  Camera camera;
-  for (const auto& field : loader::kCameraFields)
-    if (required(field) || map[field.name])
-      camera.*field.member = readField(map, field.name, field.allowed, field.units, source, what);
+  for (const std::string& key : requiredCameraKeys())
+    if (!map[key])
+      throw source.error(map, {}, what + " has no '" + key + "'", "add `" + key + ": ...` to place the camera");
+  Camera camera = cameraParameters().read(loader::parseDeclared(map, parameters, what, source, {}));
+  camera.lon = loader::wrapLongitude(camera.lon);
   return camera;
 }
 

@@ -62,6 +62,7 @@ const char* toString(ParameterType type) {
     case ParameterType::Choice: return "choice";
     case ParameterType::RealList: return "real list";
     case ParameterType::DateList: return "date list";
+    case ParameterType::Date: return "date";
   }
   return "unknown";
 }

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include <strata/scene_settings.hpp>
+
 #include "pipeline/suggestions.hpp"
 
 namespace strata::loader {
@@ -59,11 +61,20 @@ std::vector<std::string> keysOf(const YAML::Node& map) {
   return keys;
 }
 
+// A section of the scene whose keys are declared (`camera`, not the scalar `date`): one a pipeline leaves
+// out may be set key by key, `--set body.radius=3389500`, as if it were written empty.
+bool isSceneSection(const std::string& key) {
+  const SceneSection* section = findSceneSection(key);
+  return section && !section->scalar;
+}
+
 // The map that holds the last key of the override's path.
 YAML::Node parentMap(const YAML::Node& root, const Override& entry) {
   YAML::Node map = root;
   for (std::size_t i = 0; i + 1 < entry.path.size(); ++i) {
     // Looked up through a const node: yaml-cpp's non-const operator[] would add the key if missing.
+    if (i == 0 && !std::as_const(map)[entry.path[i]] && isSceneSection(entry.path[i]))
+      map[entry.path[i]] = YAML::Node(YAML::NodeType::Map);
     const YAML::Node child = std::as_const(map)[entry.path[i]];
     if (!child)
       throw overrideError(entry,

@@ -10,7 +10,7 @@ namespace strata::loader {
 namespace {
 
 Interval declaredRange(const ParameterDeclaration& declaration) {
-  return Interval::closed(declaration.minimum, declaration.maximum);
+  return {declaration.minimum, declaration.maximum, declaration.exclusiveMinimum, false};
 }
 
 double parseReal(const YAML::Node& value, const ParameterDeclaration& declaration, const ValueContext& context) {
@@ -76,6 +76,7 @@ ParameterValue parseParameter(const YAML::Node& value, const ParameterDeclaratio
     case ParameterType::Choice: return parseChoice(value, declaration, context);
     case ParameterType::RealList: return parseReals(value, declaration, context);
     case ParameterType::DateList: return readDates(value, context);
+    case ParameterType::Date: return readDate(value, context);
   }
   throw std::logic_error("parameter '" + declaration.name + "' has an unknown type");
 }

@@ -10,7 +10,8 @@
 namespace strata::loader {
 
 // Reads one parameter's YAML value against its declaration. Beyond the type (see value_reading.hpp):
-//  - Integer and Real values, and each RealList element, must lie in [minimum, maximum];
+//  - Integer and Real values, and each RealList element, must lie in [minimum, maximum] ((minimum, maximum]
+//    when exclusiveMinimum);
 //  - Real also takes integers; the value is stored as a double;
 //  - RealList must have exactly `count` elements when count > 0;
 //  - Choice must be one of `choices` (exact spelling);

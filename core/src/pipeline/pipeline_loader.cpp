@@ -1,11 +1,11 @@
 // Reads a pipeline file. The format, version 1:
 //
 //   strata: 1                                  # required: the format version; only 1 exists
-//   body: {name: Earth, radius: 6371000}       # optional (scene_parsing.hpp)
-//   camera: {lon: 10, lat: 20, altitude: 2e7}  # optional (scene_parsing.hpp)
-//   cache: {budget: 256}                       # optional: the page cache (scene_parsing.hpp)
-//   date: 2004-06-15                           # optional: the scene's date, for time series (strata/date.hpp)
-//   colour: {config: my.ocio}                  # optional: the OpenColorIO config (scene_parsing.hpp)
+//   body: {name: Earth, radius: 6371000}       # optional: the scene's sections, declared in
+//   camera: {lon: 10, lat: 20, altitude: 2e7}  #   strata/scene_settings.hpp (`strata plugins --describe
+//   cache: {budget: 256}                       #   scene`, docs/reference/scene.md)
+//   date: 2004-06-15
+//   colour: {config: my.ocio}
 //   nodes:                                     # required: node id -> node (node_parsing.hpp)
 //     relief:  {type: source.gdal, path: egm96_15.gtx, kind: height, scale: 300}
 //     terrain: {type: geometry.icosahedral, height: relief}
@@ -34,7 +34,13 @@ namespace {
 using loader::SourceMap;
 
 constexpr std::int64_t kFormatVersion = 1;
-const std::vector<std::string> kTopLevelKeys{"strata", "body", "camera", "cache", "date", "colour", "nodes"};
+// "strata", the scene's sections and "nodes", in the order a pipeline writes them.
+std::vector<std::string> topLevelKeys() {
+  std::vector<std::string> keys{"strata"};
+  for (const SceneSection& section : sceneSections()) keys.push_back(section.name);
+  keys.push_back("nodes");
+  return keys;
+}
 
 void requireRootMap(const YAML::Node& root, const SourceMap& source) {
   if (root.IsMap()) return;
@@ -75,18 +81,13 @@ std::vector<NodeDescription> parseNodes(const YAML::Node& root, const loader::No
 Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const loader::DocumentOrigin& origin,
                       const PluginRegistry& registry) {
   loader::requireUniqueKeys(root, source, "key");
-  loader::requireKnownKeys(root, kTopLevelKeys, source, "the pipeline");
+  loader::requireKnownKeys(root, topLevelKeys(), source, "the pipeline");
   Pipeline pipeline;
   pipeline.file = origin.file;
   pipeline.name = origin.name;
   pipeline.directory = origin.directory;
   pipeline.version = parseVersion(root, source);
-  if (const YAML::Node body = root["body"]) pipeline.body = loader::parseBody(body, source);
-  if (const YAML::Node camera = root["camera"]) pipeline.camera = loader::parseCamera(camera, source);
-  pipeline.cache.where = {origin.name};
-  if (const YAML::Node cache = root["cache"]) pipeline.cache = loader::parseCache(cache, source);
-  if (const YAML::Node colour = root["colour"]) pipeline.colour = loader::parseColour(colour, source, origin.directory);
-  if (const YAML::Node date = root["date"]) pipeline.date = loader::readDate(date, {source, "the scene's 'date'", ""});
+  loader::readScene(root, source, pipeline);
   pipeline.nodes = parseNodes(root, {source, registry, origin.directory});
   return pipeline;
 }

@@ -1,121 +1,87 @@
 #include "pipeline/scene_parsing.hpp"
 
-#include <array>
 #include <cmath>
 
-#include "pipeline/camera_fields.hpp"
-#include "pipeline/interval.hpp"
+#include "pipeline/parameter_parsing.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
 
 namespace strata::loader {
 namespace {
 
-std::vector<std::string> cameraKeys() {
-  std::vector<std::string> keys;
-  for (const auto& field : kCameraFields) keys.emplace_back(field.name);
-  return keys;
+// `what: {first: default, second: default}`, from the declarations: how a map of them is written.
+std::string exampleMap(const std::string& what, const std::vector<ParameterDeclaration>& parameters) {
+  std::string example;
+  for (const ParameterDeclaration& parameter : parameters)
+    if (parameter.defaultValue && example.size() < 40)
+      example += (example.empty() ? "" : ", ") + parameter.name + ": " + formatValue(*parameter.defaultValue);
+  return what + ": {" + example + "}";
 }
 
-// From a boulder to beyond the Sun (6.96e8 m). Far larger, heights and footprints the GPU takes in float
-// relative to the radius lose their digits: a body of 1e14 m was drawn speckled, of 1e20 m grey.
-const Interval kBodyRadius = Interval::closed(1.0, 1.0e9);
-
-// Longitudes name the same meridian modulo 360; one range keeps later arithmetic simple.
-double wrapLongitude(double lon) {
-  const double wrapped = std::fmod(lon + 180.0, 360.0);
-  return (wrapped < 0.0 ? wrapped + 360.0 : wrapped) - 180.0;
-}
-
-void requireMap(const YAML::Node& map, const SourceMap& source, const std::string& section,
-                const std::string& example) {
+void requireMap(const YAML::Node& map, const std::vector<ParameterDeclaration>& parameters, const std::string& what,
+                const SourceMap& source) {
   if (!map.IsMap())
-    throw source.error(map, {}, "'" + section + "' must be a map, got " + describe(map), "write it as " + example);
+    throw source.error(map, {}, "'" + what + "' must be a map, got " + describe(map),
+                       "write it as " + exampleMap(what, parameters));
   requireUniqueKeys(map, source, "key");
+  requireKnownKeys(map, namesOf(parameters), source, what);
 }
 
-// The `cache:` keys: a whole number each, within what a machine can use.
-struct CacheField {
-  const char* name;
-  Interval allowed;
-  const char* units;
-  void (*apply)(PageCacheSettings&, std::int64_t);
-};
-
-const std::array<CacheField, 3> kCacheFields{{
-    // 16 MiB hold the upload staging and a few pages of each format.
-    {"budget", Interval::closed(16.0, 1 << 20), "MiB",
-     [](PageCacheSettings& cache, std::int64_t mib) { cache.budgetBytes = std::uint64_t(mib) << 20; }},
-    {"uploads_per_frame", Interval::closed(1.0, 256.0), "pages",
-     [](PageCacheSettings& cache, std::int64_t pages) { cache.uploadsPerFrame = int(pages); }},
-    {"loader_threads", Interval::closed(1.0, 64.0), "threads",
-     [](PageCacheSettings& cache, std::int64_t threads) { cache.loaderThreads = int(threads); }},
-}};
+template <class Settings>
+Settings readSection(const YAML::Node& root, const SceneSection& section, const ParameterBindings<Settings>& bindings,
+                     const SourceMap& source, const std::filesystem::path& directory) {
+  const YAML::Node value = root[section.name];
+  if (!value) return Settings{};
+  if (!section.scalar) return bindings.read(parseSection(value, section.parameters, section.name, source, directory));
+  const ParameterDeclaration& parameter = section.parameters.front();
+  ParameterSet set;
+  set.set(parameter.name,
+          parseParameter(value, parameter, {source, "the scene's '" + section.name + "'", {}}, directory),
+          source.at(value));
+  return bindings.read(set);
+}
 
 }  // namespace
 
-Body parseBody(const YAML::Node& map, const SourceMap& source) {
-  requireMap(map, source, "body", "body: {name: Earth, radius: 6371000}");
-  requireKnownKeys(map, {"name", "radius"}, source, "body");
-  Body body;
-  if (const YAML::Node name = map["name"]) body.name = readText(name, {source, "body 'name'", {}});
-  if (const YAML::Node radius = map["radius"]) {
-    const ValueContext context{source, "body 'radius'", {}};
-    body.radius = readReal(radius, context);
-    requireWithin(body.radius, kBodyRadius, "m", radius, context);
-  }
-  return body;
+ParameterSet parseSection(const YAML::Node& value, const std::vector<ParameterDeclaration>& parameters,
+                          const std::string& what, const SourceMap& source, const std::filesystem::path& directory) {
+  requireMap(value, parameters, what, source);
+  return parseDeclared(value, parameters, what, source, directory);
 }
 
-Camera parseCamera(const YAML::Node& map, const SourceMap& source) {
-  requireMap(map, source, "camera", "camera: {lon: 10, lat: 20, altitude: 2.0e7}");
-  requireKnownKeys(map, cameraKeys(), source, "camera");
-  Camera camera;
-  for (const auto& field : kCameraFields) {
-    const YAML::Node value = map[field.name];
-    if (!value) continue;
-    const ValueContext context{source, std::string("camera '") + field.name + "'", {}};
-    const double number = readReal(value, context);
-    requireWithin(number, field.allowed, field.units, value, context);
-    camera.*field.member = number;
-  }
-  camera.lon = wrapLongitude(camera.lon);
-  return camera;
+ParameterSet parseDeclared(const YAML::Node& value, const std::vector<ParameterDeclaration>& parameters,
+                           const std::string& what, const SourceMap& source, const std::filesystem::path& directory) {
+  ParameterSet set;
+  for (const ParameterDeclaration& parameter : parameters)
+    if (const YAML::Node entry = value[parameter.name])
+      set.set(parameter.name,
+              parseParameter(entry, parameter, {source, what + " '" + parameter.name + "'", {}}, directory),
+              source.at(entry));
+  return set;
 }
 
-PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source) {
-  requireMap(map, source, "cache", "cache: {budget: 256}");
-  std::vector<std::string> keys;
-  for (const auto& field : kCacheFields) keys.emplace_back(field.name);
-  requireKnownKeys(map, keys, source, "cache");
-  PageCacheSettings cache;
-  cache.where = source.at(map);
-  for (const auto& field : kCacheFields) {
-    const YAML::Node value = map[field.name];
-    if (!value) continue;
-    const ValueContext context{source, std::string("cache '") + field.name + "'", {}};
-    const std::int64_t number = readInteger(value, context);
-    requireWithin(double(number), field.allowed, field.units, value, context);
-    field.apply(cache, number);
-  }
-  return cache;
+void readScene(const YAML::Node& root, const SourceMap& source, Pipeline& pipeline) {
+  const std::filesystem::path& directory = pipeline.directory;
+  pipeline.body = readSection(root, *findSceneSection("body"), bodyParameters(), source, directory);
+  pipeline.camera = readSection(root, *findSceneSection("camera"), cameraParameters(), source, directory);
+  pipeline.camera.lon = wrapLongitude(pipeline.camera.lon);
+  pipeline.cache = readSection(root, *findSceneSection("cache"), cacheParameters(), source, directory);
+  pipeline.cache.where = root["cache"] ? source.at(root["cache"]) : SourceLocation{pipeline.name};
+  pipeline.colour = readSection(root, *findSceneSection("colour"), colourParameters(), source, directory);
+  if (const YAML::Node colour = root["colour"])
+    if (const YAML::Node config = colour["config"]) pipeline.colour.where = source.at(config);
+  pipeline.date = readSection(root, *findSceneSection("date"), dateParameters(), source, directory).date;
 }
 
-ColourSettings parseColour(const YAML::Node& map, const SourceMap& source, const std::filesystem::path& directory) {
-  requireMap(map, source, "colour", "colour: {config: my.ocio}");
-  requireKnownKeys(map, {"config"}, source, "colour");
-  ColourSettings colour;
-  const YAML::Node value = map["config"];
-  if (!value) return colour;
-  const ValueContext context{source, "colour 'config'", {}};
-  colour.config = (directory / readText(value, context)).lexically_normal();
-  colour.where = source.at(value);
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(colour.config, error))
-    throw source.error(value, {}, "colour 'config': file not found: " + colour.config.string(),
-                       "give the path of an OpenColorIO config (.ocio), relative to the pipeline's directory " +
-                           directory.string() + ", or leave `colour:` out for $OCIO's or Strata's own");
-  return colour;
+std::vector<std::string> namesOf(const std::vector<ParameterDeclaration>& parameters) {
+  std::vector<std::string> names;
+  for (const ParameterDeclaration& parameter : parameters) names.push_back(parameter.name);
+  return names;
+}
+
+double wrapLongitude(double lon) {
+  const double wrapped = std::fmod(lon + 180.0, 360.0);
+  return (wrapped < 0.0 ? wrapped + 360.0 : wrapped) - 180.0;
 }
 
 }  // namespace strata::loader

@@ -1,35 +1,36 @@
 #pragma once
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/body.hpp>
-#include <strata/camera.hpp>
-#include <strata/colour_settings.hpp>
-#include <strata/page_cache_settings.hpp>
+#include <strata/pipeline.hpp>
+#include <strata/scene_settings.hpp>
 
 #include "pipeline/source_map.hpp"
 
-// The `body:` and `camera:` sections of a pipeline. Both are optional maps, and so is every key in them:
-// what is absent keeps the defaults of body.hpp and camera.hpp.
+// The scene's sections of a pipeline (body, camera, cache, colour, date), read against their declarations
+// (strata/scene_settings.hpp) by the code that reads node parameters. Every section is optional, and so is
+// every key in one: what is absent keeps its default.
 namespace strata::loader {
 
-// body: {name: Earth, radius: 6371000}. name is text; radius is a number of metres > 0.
-Body parseBody(const YAML::Node& map, const SourceMap& source);
+// The values a map of declared parameters (a section's, a camera path's keyframe) gives, each parsed against its
+// declaration; `what` names the map in messages ("camera", "keyframe 2"). A relative path resolves against
+// `directory`. Throws strata::Error at the value, or at an unknown key with a did-you-mean.
+ParameterSet parseSection(const YAML::Node& value, const std::vector<ParameterDeclaration>& parameters,
+                          const std::string& what, const SourceMap& source, const std::filesystem::path& directory);
 
-// camera: {lon, lat, altitude, heading, tilt, fov}, all numbers:
-//   lon: degrees, any value, wrapped into [-180, 180)     lat: degrees in [-90, 90]
-//   altitude: metres above the body's radius, > 0        heading: degrees, any value, kept as given
-//   tilt: degrees in [0, 90] (0 looks straight down)      fov: vertical, degrees in [0.001, 179]
-Camera parseCamera(const YAML::Node& map, const SourceMap& source);
+// The same for a map that may hold other keys too: reads the declared ones it has and checks no key.
+ParameterSet parseDeclared(const YAML::Node& value, const std::vector<ParameterDeclaration>& parameters,
+                           const std::string& what, const SourceMap& source, const std::filesystem::path& directory);
 
-// cache: {budget, uploads_per_frame, loader_threads}, whole numbers (PageCacheSettings):
-//   budget: MiB of GPU memory for pages, upload staging included, in [16, 1048576]
-//   uploads_per_frame: pages copied to the GPU per frame, in [1, 256]
-//   loader_threads: threads reading pages, in [1, 64]
-PageCacheSettings parseCache(const YAML::Node& map, const SourceMap& source);
+std::vector<std::string> namesOf(const std::vector<ParameterDeclaration>& parameters);
 
-// colour: {config: FILE}: an OpenColorIO config (docs/colour.md), relative to `directory`; it must exist.
-ColourSettings parseColour(const YAML::Node& map, const SourceMap& source, const std::filesystem::path& directory);
+// Reads every scene section `root` has into `pipeline`.
+void readScene(const YAML::Node& root, const SourceMap& source, Pipeline& pipeline);
+
+// Longitudes name the same meridian modulo 360; one range [-180, 180) keeps later arithmetic simple.
+double wrapLongitude(double lon);
 
 }  // namespace strata::loader

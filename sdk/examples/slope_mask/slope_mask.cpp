@@ -14,6 +14,7 @@
 #include <strata/gl/shader_program.hpp>
 #include <strata/height_slopes.hpp>
 #include <strata/layer.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/plugin.hpp>
 #include <strata/srgb.hpp>
 
@@ -22,7 +23,47 @@
 namespace slope_mask {
 namespace {
 
-// What to paint, read from the node's validated parameters; all of it reaches the GPU as uniforms.
+// The node's settings as a pipeline writes them, each default's reason beside it.
+struct SlopeMaskSettings {
+  // 15: the order of the limits Mars landing sites were chosen by (InSight's was 15), a first cut of a site map
+  double threshold = 15.0;
+  // A saturated magenta: no terrain or imagery has it, so painted ground reads at a glance
+  std::vector<double> colour{1.0, 0.0, 1.0};
+  // 0.6: the paint dominates, yet the imagery below still shows what makes the ground steep
+  double opacity = 0.6;
+};
+
+// The one declaration of each parameter, from which the core derives validation, error messages,
+// `strata plugins --describe` and docs/reference/. Every parameter is a uniform (.live): changing one
+// redraws the next frame with no program rebuilt.
+const strata::ParameterBindings<SlopeMaskSettings>& slopeMaskParameters() {
+  using S = SlopeMaskSettings;
+  static const auto bindings =
+      strata::ParameterBindings<S>()
+          .add(&S::threshold,
+               {.name = "threshold",
+                .minimum = 0.0,
+                .maximum = 90.0,
+                .units = "deg",
+                .doc = "ground steeper than this is painted; slopes are measured over a pixel's footprint",
+                .live = true})
+          .add(&S::colour, {.name = "colour",
+                            .minimum = 0.0,
+                            .maximum = 1.0,
+                            .doc = "the paint, as sRGB red, green, blue, each from 0 to 1",
+                            .count = 3,
+                            .live = true})
+          .add(&S::opacity,
+               {.name = "opacity",
+                .minimum = 0.0,
+                .maximum = 1.0,
+                .doc =
+                    "the paint's share over the surface on steep ground: 0 shows the surface alone, 1 the paint alone",
+                .live = true});
+  return bindings;
+}
+
+// What to paint, in the units the GLSL takes; all of it reaches the GPU as uniforms.
 struct MaskStyle {
   double threshold = 0.0;  // rad: slopes steeper than this are painted
   glm::vec3 colour{};      // scene-linear RGB, as layers' values are
@@ -30,9 +71,10 @@ struct MaskStyle {
 };
 
 MaskStyle styleOf(const strata::ParameterSet& parameters) {
-  const std::vector<double>& colour = parameters.reals("colour");  // exactly 3: the declaration's count
-  return {parameters.real("threshold") * std::numbers::pi / 180.0,
-          strata::srgbToSceneLinear(colour[0], colour[1], colour[2]), parameters.real("opacity")};
+  const SlopeMaskSettings settings = slopeMaskParameters().read(parameters);
+  const std::vector<double>& colour = settings.colour;  // exactly 3: the declaration's count
+  return {settings.threshold * std::numbers::pi / 180.0, strata::srgbToSceneLinear(colour[0], colour[1], colour[2]),
+          settings.opacity};
 }
 
 // The layer: its GLSL samples the surface and the heights at a point, and the heights one footprint away
@@ -104,9 +146,9 @@ class SlopeMask : public strata::Node {
   SlopeMaskLayer layer_;
 };
 
-// The one declaration from which the core derives validation, error messages and `strata plugins --describe`.
+// The node type: its name, its inputs and output, its parameters (declared above) and how to make it.
 strata::NodeTypeDeclaration declaration() {
-  using strata::LayerKind, strata::ParameterType, strata::PortType;
+  using strata::LayerKind, strata::PortType;
   strata::NodeTypeDeclaration type;
   type.shaderSources = strata::plugin::shaderSources();  // slope_mask.glsl, embedded by strata_add_plugin
   type.type = "composite.slope_mask";
@@ -121,35 +163,7 @@ strata::NodeTypeDeclaration declaration() {
                   .kinds = {LayerKind::Color},
                   .doc = "the colour layer painted over; it shows unchanged where the ground is not steep"}};
   type.output = PortType::Layer;
-  // Every parameter is a uniform (.live): changing one redraws the next frame with no program rebuilt.
-  type.parameters = {
-      // 15: the order of the limits Mars landing sites were chosen by (InSight's was 15), a first cut of a site map
-      {.name = "threshold",
-       .type = ParameterType::Real,
-       .defaultValue = 15.0,
-       .minimum = 0.0,
-       .maximum = 90.0,
-       .units = "deg",
-       .doc = "ground steeper than this is painted; slopes are measured over a pixel's footprint",
-       .live = true},
-      // A saturated magenta: no terrain or imagery has it, so painted ground reads at a glance
-      {.name = "colour",
-       .type = ParameterType::RealList,
-       .defaultValue = std::vector<double>{1.0, 0.0, 1.0},
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "the paint, as sRGB red, green, blue, each from 0 to 1",
-       .count = 3,
-       .live = true},
-      // 0.6: the paint dominates, yet the imagery below still shows what makes the ground steep
-      {.name = "opacity",
-       .type = ParameterType::Real,
-       .defaultValue = 0.6,
-       .minimum = 0.0,
-       .maximum = 1.0,
-       .doc = "the paint's share over the surface on steep ground: 0 shows the surface alone, 1 the paint alone",
-       .live = true},
-  };
+  type.parameters = slopeMaskParameters().declarations();
   type.create = [](const strata::NodeSetup& setup) { return std::make_unique<SlopeMask>(setup); };
   return type;
 }

@@ -14,9 +14,9 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // The raw values of a raster's square blocks of level-0 texels: what lets a layer bound its heights over a
-// region (Layer::valuesWithin), so that a patch of a plateau knows it lies on the plateau (docs/geometry.md,
-// "Height ranges"). A source counts them while reading a small raster whole, or reads those `strata tile`
-// stored in the file (metadataItems), for a raster of any size.
+// region (RegionalValueLayer::valuesWithin), so that a patch of a plateau knows it lies on the plateau
+// (docs/geometry.md, "Height ranges"). A source counts them while reading a small raster whole, or reads those `strata
+// tile` stored in the file (metadataItems), for a raster of any size.
 class BlockRanges {
  public:
   // 64 texels a side: 4,096 blocks for a 4096 x 4096 raster, each a few vertex spacings of the finest patch

@@ -18,12 +18,8 @@ struct GeometryStatistics {
   double rasterisationMs = 0.0;  // GPU: drawing the deferred texturing buffer
 };
 
-// The deferred texturing buffer a geometry generator rasterises ([Kooima 2008, §3.4.2]), read by
-// every per-pixel compositor. Attachments:
-//   color(0) RGBA32F: longitude, latitude measured from View::reference (rad, longitude not wrapped), so
-//                     that float resolves them finely near the eye; planet-fixed unit normal x, y
-//   color(1) RGBA16F: shading normal (planet-fixed, of the displaced surface) xyz, coverage (1 on the body)
-//   depth    DEPTH32F: reversed depth (1 at the near plane), 0 where nothing was drawn
+// A geometry generator's output: the deferred texturing buffer it rasterised (its layout and how to make
+// one: strata/gl/surface_buffer.hpp), and what it knows about its surface.
 class SurfaceGeometry {
  public:
   virtual ~SurfaceGeometry() = default;

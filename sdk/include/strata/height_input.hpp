@@ -8,6 +8,7 @@
 #include <strata/body.hpp>
 #include <strata/error.hpp>
 #include <strata/parameter.hpp>
+#include <strata/parameter_bindings.hpp>
 #include <strata/port.hpp>
 
 STRATA_EXPORTS_BEGIN
@@ -18,6 +19,13 @@ struct ValueRange;
 struct NodeSetup;
 struct SphericalCap;
 
+// The heights a generator is told to trust, as a pipeline writes them. Unset: the height layer's own range
+// is exact (a raster's statistics or every texel counted, the analytic bound of procedural relief, the union
+// of a compositor's inputs), and a range wider than the terrain only costs culling.
+struct HeightBounds {
+  std::optional<double> lowest, highest;
+};
+
 // What every geometry generator does with its optional `height` input and its optional `lowest` and
 // `highest` parameters, declared once so that generators agree and a pipeline switches between them by
 // changing one `type` (geometry.icosahedral, geometry.pgm, geometry.healpix).
@@ -26,6 +34,8 @@ class HeightInput {
   // The input port and the two parameters, for the generator's NodeTypeDeclaration.
   static PortDeclaration port();
   static std::vector<ParameterDeclaration> parameters();
+  // The two parameters, each bound to its member of HeightBounds.
+  static const ParameterBindings<HeightBounds>& bounds();
 
   // Throws strata::Error at `lowest` when both are given and it lies above `highest`.
   explicit HeightInput(const NodeSetup& setup);
@@ -40,7 +50,7 @@ class HeightInput {
   HeightRange open();
   // What open() settled.
   HeightRange range() const { return range_; }
-  // Whether the layer knows its heights over regions (Layer::valuesWithin), once it has placed its texels:
+  // Whether the layer knows its heights over regions (RegionalValueLayer::valuesWithin), once it has placed its texels:
   // then within() tells a plateau from the lowland around it.
   bool boundsRegions() const;
   // The heights within `cap`, where the layer knows them there, within range(); else range(). Culling and
@@ -49,14 +59,14 @@ class HeightInput {
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
   // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when
-  // it can be sampled by HEALPix face point: Layer::faceSamplingFunction) and STRATA_HEIGHT_LAYER_GLSL.
+  // it can be sampled by HEALPix face point: HealpixFaceLayer::faceSamplingFunction) and STRATA_HEIGHT_LAYER_GLSL.
   std::map<std::string, std::string> substitutions() const;
 
  private:
   void checkGivenHold(const ValueRange& known) const;
 
   Layer* layer_;
-  std::optional<double> lowest_, highest_;  // as given
+  HeightBounds given_;  // as given, with a height layer
   HeightRange range_;
   SourceLocation where_, highestWhere_;
 };

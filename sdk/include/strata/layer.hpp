@@ -1,5 +1,4 @@
 #pragma once
-#include <cstdint>
 #include <optional>
 #include <strata/export.hpp>
 #include <string>
@@ -15,7 +14,6 @@ namespace strata {
 class Node;
 class ShaderProgram;
 struct SourceLocation;
-struct SphericalCap;
 class TextureUnits;
 
 // The least and greatest values a one-channel layer returns, as its sampling function returns them
@@ -26,7 +24,8 @@ struct ValueRange {
 };
 
 // A layer is a GLSL sampling function over a projection, plus the GPU resources behind it
-// (docs/architecture.md, "Nodes and what flows between them").
+// (docs/architecture.md, "Nodes and what flows between them"). What only some layers can do besides is in
+// small interfaces they opt into (strata/layer_capabilities.hpp), which consumers ask for with as().
 // Consumers paste glslOnce() into their programs after "strata/surface_point.glsl" and call
 //   vec4 <samplingFunction()>(SurfacePoint p)
 // which returns the value in .rgb (.r for one-channel kinds: heights in metres, already scaled) and the
@@ -37,20 +36,6 @@ class Layer {
 
   virtual LayerKind kind() const = 0;
   virtual std::string samplingFunction() const = 0;
-  // Layers of texels also offer, in glsl(),
-  //   vec4 <texelStepsFunction()>(SurfacePoint p)
-  // the change of their level-0 texel coordinates to the next sample along the footprint's x (.xy) and y
-  // (.zw), or vec4(0) outside the raster: how well its texels are shaped and how fine they are where they
-  // land, which composite.projection_quality weighs layers by. Empty for layers without texels (procedural).
-  virtual std::string texelStepsFunction() const { return {}; }
-  // And
-  //   float <edgeDistanceFunction()>(SurfacePoint p)
-  // the distance in level-0 texels from p to the nearest edge of the raster (none across the seam of one that
-  // wraps round the body), negative outside it: where composite.overlay_mask feathers an overlay's extent.
-  virtual std::string edgeDistanceFunction() const { return {}; }
-  // Which region of the body its projection samples best (ProjectionAspect), once its node has created its
-  // GPU resources (rasters are placed then); Other for layers with none (procedural, composed).
-  virtual ProjectionAspect aspect() const { return ProjectionAspect::Other; }
   // The layer's GLSL, its inputs' glslOnce() included, for consumers to paste: what they call and its
   // uniforms, named after the node (glslIdentifier).
   virtual std::string glsl() const = 0;
@@ -66,28 +51,11 @@ class Layer {
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
-  // The values the layer can return for points within `cap` (one-channel kinds, once its node has placed its
-  // texels): bounds, 0 included where some of the cap holds no data, within valueRange(). Geometry takes a
-  // patch's heights from them, so that a patch on a plateau is measured on the plateau (docs/geometry.md,
-  // "Height ranges"), and widens the cap by the reach of its samples' footprints beyond the patch. None where
-  // the layer does not know them; generators then take valueRange().
-  virtual std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const {
-    (void)cap;
-    return std::nullopt;
-  }
-  // Layers whose texels are the faces of a HEALPix pyramid (strata/healpix_pyramid.hpp) can also be sampled
-  // by face point, with no projection on the way (geometry.healpix does so):
-  //   vec4 <faceSamplingFunction()>(vec3 point, float footprint)
-  // point = (face, x, y) as healpix::FacePoint has them, footprint = the face-point distance to the next
-  // sample; it returns what samplingFunction() returns. Empty for other layers.
-  virtual std::string faceSamplingFunction() const { return {}; }
-  // Such layers may also bound their values over node (level, ix, iy) of base face `face`'s quadtree (2^level
-  // nodes a side, ix along x, iy along y, as geometry.healpix numbers them): bounds of whatever sampling reads
-  // for its points, 0 included where some of it holds no data (generators take the sphere there). Empty
-  // where the layer does not know them.
-  virtual std::optional<ValueRange> faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const {
-    (void)face, (void)level, (void)ix, (void)iy;
-    return std::nullopt;
+  // The capability `Capability` (strata/layer_capabilities.hpp: texels, a projection's aspect, values by
+  // region, HEALPix faces) where this layer offers it, else nullptr.
+  template <class Capability>
+  const Capability* as() const {
+    return dynamic_cast<const Capability*>(this);
   }
 };
 

@@ -18,7 +18,7 @@ class FrameOutput {
   virtual const Framebuffer& frame() const = 0;
   // Writes the last rendered frame to `file`; throws strata::Error if it cannot be written.
   virtual void write(const std::filesystem::path& file) const = 0;
-  // The geometry the frame was composed over, whose deferred texturing buffer (strata/geometry.hpp) says
+  // The geometry the frame was composed over, whose deferred texturing buffer (strata/gl/surface_buffer.hpp) says
   // what lies under each pixel and how far away: for picking and range images. nullptr for an output
   // composed over none.
   virtual const SurfaceGeometry* surface() const { return nullptr; }

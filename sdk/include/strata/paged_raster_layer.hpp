@@ -14,7 +14,7 @@ namespace strata {
 // sample the projection maps longitude/latitude to texture coordinates, but the texels come from the pages
 // of a PageSource that the cache holds, so the raster may be far larger than GPU memory. Sources attach in
 // createResources(), to the cache GpuContext::pages.
-class PagedRasterLayer : public ProjectedRasterLayer {
+class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer {
  public:
   PagedRasterLayer(std::string nodeId, LayerKind kind);
 
@@ -23,7 +23,7 @@ class PagedRasterLayer : public ProjectedRasterLayer {
   void attach(PageCache& cache, std::shared_ptr<const PageSource> source, RasterGeoreference georeference);
 
   std::string glsl() const override;
-  // On a HEALPix pyramid's faces: sampled by face point, with no projection (see Layer).
+  // On a HEALPix pyramid's faces: sampled by face point, with no projection (HealpixFaceLayer); "" elsewhere.
   std::string faceSamplingFunction() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;

@@ -13,15 +13,17 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// DateList: ISO 8601 dates in the file (strata/date.hpp), held as their day numbers in a std::vector<double>.
-enum class ParameterType { Boolean, Integer, Real, String, Path, Choice, RealList, DateList };
+// Date: an ISO 8601 date in the file (strata/date.hpp), held as its day number in a double; DateList: a list
+// of them, held in a std::vector<double>.
+enum class ParameterType { Boolean, Integer, Real, String, Path, Choice, RealList, DateList, Date };
 
 const char* toString(ParameterType type);
 
 using ParameterValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
 
-// One parameter of a node type, declared once: validation, error messages, `strata plugins --describe`
-// and the viewer's controls all derive from this declaration.
+// One parameter of a node type or of the scene (strata/scene_settings.hpp), declared once: validation,
+// error messages, `strata plugins --describe`, docs/reference/ and the viewer's controls all derive from this
+// declaration. Nodes read their values typed, through ParameterBindings (strata/parameter_bindings.hpp).
 struct ParameterDeclaration {
   std::string name;
   ParameterType type = ParameterType::Real;
@@ -38,6 +40,7 @@ struct ParameterDeclaration {
   // With no default: the node needs no value and decides for itself without one (an override of what it
   // would work out); ParameterSet::has says whether one was given.
   bool optional = false;
+  bool exclusiveMinimum = false;  // the value must lie above `minimum`, not at it (a camera's altitude > 0)
 };
 
 // A node's validated parameters: every declared parameter has a value of its declared type.

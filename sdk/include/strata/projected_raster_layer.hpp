@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include <strata/layer.hpp>
+#include <strata/layer_capabilities.hpp>
 #include <strata/raster_georeference.hpp>
 
 STRATA_EXPORTS_BEGIN
@@ -21,7 +22,7 @@ class ShaderProgram;
 // (RasterLayer) or in the page cache (PagedRasterLayer): per sample the projection's GLSL maps
 // longitude/latitude to map coordinates, the geotransform maps those to texture coordinates, and a
 // footprint step through the projection picks the level of detail (docs/architecture.md, "Projections").
-class ProjectedRasterLayer : public Layer {
+class ProjectedRasterLayer : public Layer, public TexelledLayer, public ProjectedLayer, public RegionalValueLayer {
  public:
   ProjectedRasterLayer(std::string nodeId, LayerKind kind);
 

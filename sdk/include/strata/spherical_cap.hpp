@@ -9,8 +9,8 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 // A cap of the unit sphere: the directions within `angle` of `centre`. Geometry generators ask a layer's
-// values over one (Layer::valuesWithin) for each patch or node they place, and layers bound their blocks of
-// texels by one, so that the two meet by one comparison of angles.
+// values over one (RegionalValueLayer::valuesWithin) for each patch or node they place, and layers bound their blocks
+// of texels by one, so that the two meet by one comparison of angles.
 struct SphericalCap {
   glm::dvec3 centre{0.0, 0.0, 1.0};  // planet-fixed unit vector
   double angle = 0.0;                // rad, from 0 to pi: pi is the whole sphere

@@ -8,7 +8,8 @@
 
 namespace strata::viewer {
 
-// The viewer's panel of every node's parameters (issue 9), drawn with Dear ImGui from parameterControls(),
+// The viewer's panel of the scene's settings and every node's parameters (issue 9), drawn with Dear ImGui
+// from parameterControls(),
 // so each parameter is a control with its range, units and documentation: a slider for a bounded number, a
 // field for an unbounded one, a checkbox, a list of choices, a text field. A live parameter changes as the
 // control moves; any other when the control is let go, since it loads the pipeline again. A refused value

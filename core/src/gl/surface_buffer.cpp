@@ -1,0 +1,28 @@
+#include <strata/gl/surface_buffer.hpp>
+
+#include <utility>
+
+namespace strata {
+namespace {
+
+constexpr int kSharedAttachments = 2;  // the surface point and the shading normal
+
+}  // namespace
+
+SurfaceBuffer::SurfaceBuffer(std::vector<Attachment> extra) : extra_(std::move(extra)) {}
+
+void SurfaceBuffer::begin(int width, int height) {
+  if (framebuffer_.width() != width || framebuffer_.height() != height || framebuffer_.id() == 0) {
+    std::vector<GLenum> formats{GL_RGBA32F, GL_RGBA16F};
+    for (const Attachment& attachment : extra_) formats.push_back(attachment.format);
+    framebuffer_ = Framebuffer(width, height, formats, GL_DEPTH_COMPONENT32F);
+  }
+  framebuffer_.bind();
+  const float noSurface[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
+  for (int i = 0; i < kSharedAttachments; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, noSurface);
+  for (std::size_t i = 0; i < extra_.size(); ++i)
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, GLint(kSharedAttachments + i), extra_[i].clear.data());
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farDepth);
+}
+
+}  // namespace strata

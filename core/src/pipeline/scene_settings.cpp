@@ -1,0 +1,132 @@
+// The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:` and `date:` take, with
+// each default's reason beside it in the settings structs (body.hpp, camera.hpp, page_cache_settings.hpp).
+#include <strata/scene_settings.hpp>
+
+#include <cstdint>
+
+namespace strata {
+namespace {
+
+// The field of view's bounds, deg. A 2 cm checkerboard seen from 1 km through 1024 pixels is crisp down to
+// 1e-4 degrees and at 1e-5 blurred and 100 pixels out of place: longitude and latitude reach the GPU relative
+// to the point below the eye, in float, which resolves about 1e-6 of the distance. 1e-3 keeps ten times that
+// room (at 1e-8 the surface tore, at 1e-320 the projection overflowed and drew nothing) and still frames
+// Mars seen from Earth (about 6e-3 degrees across). Up to 179: at 180 the projection is singular.
+constexpr double kLeastFieldOfView = 0.001, kMostFieldOfView = 179.0;
+
+// From a boulder to beyond the Sun (6.96e8 m). Far larger, heights and footprints the GPU takes in float
+// relative to the radius lose their digits: a body of 1e14 m was drawn speckled, of 1e20 m grey.
+constexpr double kLeastRadius = 1.0, kMostRadius = 1.0e9;
+
+constexpr int kMebibyte = 20;  // bits to shift a MiB count into bytes
+
+SceneSection sectionOf(std::string name, std::string doc, const std::vector<ParameterDeclaration>& parameters,
+                       bool scalar = false) {
+  return {std::move(name), std::move(doc), scalar, parameters};
+}
+
+}  // namespace
+
+const ParameterBindings<Body>& bodyParameters() {
+  static const auto bindings =
+      ParameterBindings<Body>()
+          .add(&Body::name, {.name = "name", .doc = "what messages and the viewer call the body"})
+          .add(&Body::radius, {.name = "radius",
+                               .minimum = kLeastRadius,
+                               .maximum = kMostRadius,
+                               .units = "m",
+                               .doc = "the body's mean radius: a sphere, which heights are measured above"});
+  return bindings;
+}
+
+const ParameterBindings<Camera>& cameraParameters() {
+  static const auto bindings =
+      ParameterBindings<Camera>()
+          .add(&Camera::lon, {.name = "lon",
+                              .units = "deg",
+                              .doc = "longitude below the eye, east positive; any "
+                                     "value, wrapped into [-180, 180)"})
+          .add(&Camera::lat, {.name = "lat",
+                              .minimum = -90.0,
+                              .maximum = 90.0,
+                              .units = "deg",
+                              .doc = "latitude below the eye, north positive"})
+          .add(&Camera::altitude, {.name = "altitude",
+                                   .minimum = 0.0,
+                                   .units = "m",
+                                   .doc = "height of the eye above the body's radius",
+                                   .exclusiveMinimum = true})
+          .add(&Camera::heading,
+               {.name = "heading", .units = "deg", .doc = "direction the view faces, clockwise from north"})
+          .add(&Camera::tilt, {.name = "tilt",
+                               .minimum = 0.0,
+                               .maximum = 90.0,
+                               .units = "deg",
+                               .doc = "0 looks straight down, 90 at the horizon"})
+          .add(&Camera::fov, {.name = "fov",
+                              .minimum = kLeastFieldOfView,
+                              .maximum = kMostFieldOfView,
+                              .units = "deg",
+                              .doc = "vertical field of view"});
+  return bindings;
+}
+
+const ParameterBindings<PageCacheSettings>& cacheParameters() {
+  static const auto bindings =
+      ParameterBindings<PageCacheSettings>()
+          .convert<std::int64_t>(
+              // 16 MiB hold the upload staging and a few pages of each format.
+              {.name = "budget",
+               .minimum = 16.0,
+               .maximum = double(1 << 20),
+               .units = "MiB",
+               .doc = "GPU memory for pages, upload staging included"},
+              [](const PageCacheSettings& cache) { return std::int64_t(cache.budgetBytes >> kMebibyte); },
+              [](PageCacheSettings& cache, std::int64_t mib) { cache.budgetBytes = std::uint64_t(mib) << kMebibyte; })
+          .add(&PageCacheSettings::uploadsPerFrame, {.name = "uploads_per_frame",
+                                                     .minimum = 1.0,
+                                                     .maximum = 256.0,
+                                                     .units = "pages",
+                                                     .doc = "pages copied to the GPU per frame"})
+          .add(&PageCacheSettings::loaderThreads, {.name = "loader_threads",
+                                                   .minimum = 1.0,
+                                                   .maximum = 64.0,
+                                                   .units = "threads",
+                                                   .doc = "threads reading pages"});
+  return bindings;
+}
+
+const ParameterBindings<ColourSettings>& colourParameters() {
+  static const auto bindings = ParameterBindings<ColourSettings>().add(
+      &ColourSettings::config,
+      {.name = "config",
+       .doc = "an OpenColorIO config (.ocio) colours are managed with; unset: $OCIO's, else Strata's own",
+       .optional = true});
+  return bindings;
+}
+
+const ParameterBindings<SceneDate>& dateParameters() {
+  static const auto bindings = ParameterBindings<SceneDate>().add(
+      &SceneDate::date,
+      {.name = "date", .type = ParameterType::Date, .doc = "the scene's date (UTC), which time series show"});
+  return bindings;
+}
+
+const std::vector<SceneSection>& sceneSections() {
+  static const std::vector<SceneSection> sections{
+      sectionOf("body", "the planet or moon shown: a sphere", bodyParameters().declarations()),
+      sectionOf("camera", "where the first frame is seen from", cameraParameters().declarations()),
+      sectionOf("cache", "the GPU page cache (docs/data.md)", cacheParameters().declarations()),
+      sectionOf("date", "the scene's date, for time series", dateParameters().declarations(), true),
+      sectionOf("colour", "how colours are managed (docs/colour.md)", colourParameters().declarations()),
+  };
+  return sections;
+}
+
+const SceneSection* findSceneSection(const std::string& name) {
+  for (const SceneSection& section : sceneSections())
+    if (section.name == name) return &section;
+  return nullptr;
+}
+
+}  // namespace strata

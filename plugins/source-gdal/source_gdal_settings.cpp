@@ -1,0 +1,51 @@
+#include "source_gdal_settings.hpp"
+
+namespace strata::gdal {
+
+const ParameterBindings<GdalSettings>& gdalParameters() {
+  using S = GdalSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .required(&S::path, {.name = "path",
+                               .doc = "the raster file, or a vector file of polygons (with kind: mask); relative to "
+                                      "the pipeline file"})
+          .choice(&S::kind,
+                  {.name = "kind",
+                   .doc = "what the values are: color (8/16-bit, see colorspace) or one-channel height, scalar, "
+                          "luminance, mask"},
+                  {{"color", LayerKind::Color},
+                   {"height", LayerKind::Height},
+                   {"scalar", LayerKind::Scalar},
+                   {"luminance", LayerKind::Luminance},
+                   {"mask", LayerKind::Mask}})
+          .add(&S::colorspace,
+               {.name = "colorspace",
+                .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's "
+                       "OpenColorIO config (Strata's: srgb, gamma22, linear, raw); converted to scene-linear on the "
+                       "GPU"})
+          .add(&S::scale,
+               {.name = "scale",
+                .doc = "one-channel kinds: multiplies raw values (vertical exaggeration, or counts to metres)"})
+          .add(&S::offset, {.name = "offset", .doc = "one-channel kinds: added after scale (metres for heights)"})
+          .add(&S::extent, {.name = "extent",
+                            .minimum = -360.0,
+                            .maximum = 360.0,
+                            .units = "deg",
+                            .doc = "[west, south, east, north] of a longitude/latitude raster; empty: from its "
+                                   "geotransform (a bare 2:1 raster is global)",
+                            .count = 4})
+          .add(&S::projection, {.name = "projection",
+                                .doc = "the raster's CRS when the file's is missing or wrong: WKT, a PROJ string or "
+                                       "EPSG:code; empty: the file's CRS (none: longitude/latitude)"})
+          .add(&S::vectorLayer, {.name = "vector_layer",
+                                 .doc = "vector files: the layer whose polygons make the mask; empty: the file's "
+                                        "first (GeoJSON and Shapefiles have one)"})
+          .add(&S::texels, {.name = "texels",
+                            .minimum = 16.0,
+                            .maximum = 8192.0,
+                            .doc = "vector files: the mask raster's texels across the polygons' longer side (how "
+                                   "sharp their edges are)"});
+  return bindings;
+}
+
+}  // namespace strata::gdal

@@ -1,0 +1,40 @@
+#pragma once
+#include <array>
+#include <strata/export.hpp>
+#include <vector>
+
+#include <strata/gl/framebuffer.hpp>
+
+STRATA_EXPORTS_BEGIN
+namespace strata {
+
+// The deferred texturing buffer every geometry generator rasterises into ([Kooima 2008, §3.4.2]) and every
+// per-pixel compositor and output reads: the contract between them, written once. Attachments:
+//   color(0) RGBA32F: longitude, latitude measured from View::reference (rad, longitude not wrapped), so
+//                     that float resolves them finely near the eye; planet-fixed unit normal x, y
+//   color(1) RGBA16F: shading normal (planet-fixed, of the displaced surface) xyz, coverage (1 on the body)
+//   depth    DEPTH32F: reversed depth (1 at the near plane), 0 where nothing was drawn
+// then any attachments of the generator's own (`extra`), which readers of the buffer ignore. The shaders
+// write the first two through "strata/surface_buffer.frag".
+class SurfaceBuffer {
+ public:
+  // An attachment of a generator's own after the shared ones, and the value that clears it.
+  struct Attachment {
+    GLenum format;
+    std::array<float, 4> clear;
+  };
+
+  explicit SurfaceBuffer(std::vector<Attachment> extra = {});
+
+  // Before drawing a frame of width x height: (re)makes the attachments when the size changed, binds the
+  // buffer with its viewport and clears it: no surface anywhere, depth at infinity (0, reversed).
+  void begin(int width, int height);
+  const Framebuffer& framebuffer() const { return framebuffer_; }
+
+ private:
+  std::vector<Attachment> extra_;
+  Framebuffer framebuffer_;
+};
+
+}  // namespace strata
+STRATA_EXPORTS_END
