@@ -18,9 +18,9 @@
 
 #include <fly_in_path.hpp>
 #include <planet_model.hpp>
-#include <strata/engine.hpp>
 #include <strata/gl.hpp>
 #include <strata/gl/context.hpp>
+#include <strata/host/engine.hpp>
 
 #include "procedural_mars_pipeline.hpp"
 

@@ -21,10 +21,10 @@
 #include <fstream>
 #include <numbers>
 
-#include <strata/engine.hpp>
 #include <strata/gl.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "headless_main.hpp"
 #include "procedural_mars_pipeline.hpp"

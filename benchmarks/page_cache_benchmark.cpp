@@ -12,8 +12,8 @@
 #include <fstream>
 #include <string>
 
-#include <strata/engine.hpp>
 #include <strata/gl/context.hpp>
+#include <strata/host/engine.hpp>
 
 namespace {
 

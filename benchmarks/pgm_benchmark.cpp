@@ -13,8 +13,8 @@
 #include <string_view>
 #include <vector>
 
-#include <strata/engine.hpp>
 #include <strata/gl.hpp>
+#include <strata/host/engine.hpp>
 
 #include "headless_main.hpp"
 #include "procedural_mars_pipeline.hpp"

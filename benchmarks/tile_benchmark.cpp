@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace {
 

@@ -12,7 +12,7 @@ packages=(
   libopencolorio-dev                            # colour management
   libyaml-cpp-dev                               # pipelines
   libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri  # EGL headless contexts; Mesa llvmpipe without a GPU
-  libepoxy-dev                                  # GL function loader (behind core/include/strata/gl.hpp)
+  libepoxy-dev                                  # GL function loader (behind sdk/include/strata/gl.hpp)
   libcli11-dev                                  # command-line parsing
   libimgui-dev                                  # viewer panels
   libgtest-dev libgmock-dev libbenchmark-dev    # tests and benchmarks

@@ -5,11 +5,11 @@
 #include <fstream>
 #include <memory>
 
-#include <strata/camera_path.hpp>
-#include <strata/engine.hpp>
 #include <strata/error.hpp>
 #include <strata/gl/context.hpp>
-#include <strata/pipeline.hpp>
+#include <strata/host/camera_path.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/host/pipeline.hpp>
 
 #include "bench_csv.hpp"
 #include "bench_frames.hpp"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/camera_path.hpp>
-#include <strata/engine.hpp>
+#include <strata/host/camera_path.hpp>
+#include <strata/host/engine.hpp>
 
 namespace strata::cli {
 

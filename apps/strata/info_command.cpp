@@ -3,8 +3,8 @@
 #include <GLFW/glfw3.h>
 
 #include <strata/gl/context.hpp>
-#include <strata/library_versions.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/library_versions.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "command_options.hpp"
 #include "commands.hpp"

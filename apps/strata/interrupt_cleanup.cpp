@@ -5,7 +5,7 @@
 #include <csignal>
 #include <thread>
 
-#include <strata/output_file.hpp>
+#include <strata/host/output_file.hpp>
 
 namespace strata::cli {
 namespace {

@@ -4,7 +4,7 @@
 namespace strata::cli {
 
 // From here on, SIGINT, SIGTERM and SIGHUP (those not ignored when strata started) are taken by one thread of
-// their own, which removes every scratch folder of unfinished outputs (strata/output_file.hpp) and then ends
+// their own, which removes every scratch folder of unfinished outputs (strata/host/output_file.hpp) and then ends
 // the process as the signal would have: an interrupted command leaves either its finished files or nothing.
 // Call first in main, before any thread starts, so that every thread leaves these signals to that one.
 void removeUnfinishedOutputsOnSignal();

@@ -1,14 +1,14 @@
 #pragma once
 // Where a command writes (render's frames and videos, bench's tables and plots): every file it will write
 // checked before any work, and each written under a scratch name and renamed into place when whole
-// (strata/output_file.hpp).
+// (strata/host/output_file.hpp).
 #include <filesystem>
 #include <functional>
 #include <map>
 #include <set>
 #include <vector>
 
-#include <strata/output_file.hpp>
+#include <strata/host/output_file.hpp>
 
 namespace strata::cli {
 

@@ -2,9 +2,9 @@
 #include <filesystem>
 #include <string>
 
-#include <strata/node_type.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/scene_settings.hpp>
+#include <strata/host/scene_settings.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 // How declarations read to people: in the terminal (`strata plugins --describe`) and as the Markdown of
 // docs/reference/ (`strata plugins --reference DIR`), both from the declarations alone.

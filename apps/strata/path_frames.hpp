@@ -1,5 +1,5 @@
 #pragma once
-#include <strata/camera_path.hpp>
+#include <strata/host/camera_path.hpp>
 
 namespace strata::cli {
 

@@ -1,8 +1,8 @@
 #include <cstdio>
 #include <memory>
 
-#include <strata/node_type.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "command_options.hpp"
 #include "commands.hpp"

@@ -12,7 +12,7 @@
 #include <string>
 
 #include <strata/crs.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "command_options.hpp"
 #include "commands.hpp"

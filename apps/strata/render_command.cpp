@@ -3,12 +3,12 @@
 #include <filesystem>
 #include <memory>
 
-#include <strata/camera_path.hpp>
-#include <strata/engine.hpp>
 #include <strata/error.hpp>
 #include <strata/gl/context.hpp>
-#include <strata/output.hpp>
-#include <strata/pipeline.hpp>
+#include <strata/host/camera_path.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/output.hpp>
 
 #include "command_options.hpp"
 #include "commands.hpp"

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <memory>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "command_options.hpp"
 #include "commands.hpp"

@@ -1,7 +1,7 @@
 #include <cstdio>
 #include <memory>
 
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 #include <strata/viewer/viewer.hpp>
 #include <strata/window/glfw_window.hpp>
 

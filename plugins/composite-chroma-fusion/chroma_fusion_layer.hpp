@@ -1,8 +1,8 @@
 #pragma once
 #include <string>
 
-#include <strata/layer.hpp>
-#include <strata/layer_capabilities.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
 
 namespace strata::composite {
 

@@ -7,7 +7,7 @@
 
 #include <strata/error.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/parameter_bindings.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 namespace strata::composite {
 namespace {

@@ -5,7 +5,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata {
 class ShaderProgram;

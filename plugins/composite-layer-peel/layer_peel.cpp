@@ -3,8 +3,8 @@
 #include <memory>
 #include <set>
 
-#include <strata/node.hpp>
-#include <strata/parameter_bindings.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 #include "declarations.hpp"
 #include "peel_layer.hpp"

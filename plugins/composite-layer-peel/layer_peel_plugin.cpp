@@ -1,6 +1,6 @@
 // composite-layer-peel: stacked height layers peeled apart and seen in relation to each other
 // ([Kooima 2008, §1.1, ch. 6], layered data peeling).
-#include <strata/plugin.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "declarations.hpp"
 

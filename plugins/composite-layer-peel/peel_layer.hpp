@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 #include "cutaway.hpp"
 

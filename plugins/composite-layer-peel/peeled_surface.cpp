@@ -2,8 +2,8 @@
 // surface and its colour on the faces the cut makes ([Kooima 2008, §1.1, ch. 6], layered data peeling).
 #include <memory>
 
-#include <strata/node.hpp>
-#include <strata/parameter_bindings.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 #include "declarations.hpp"
 #include "peeled_surface_layer.hpp"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <strata/gl/shader_program.hpp>
-#include <strata/srgb.hpp>
+#include <strata/plugin/srgb.hpp>
 
 namespace strata::composite {
 namespace {

@@ -3,7 +3,7 @@
 #include <utility>
 #include <vector>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 #include "peel_layer.hpp"
 

@@ -3,11 +3,11 @@
 // [Kooima 2008, §4.2].
 #include <memory>
 
-#include <strata/layer_capabilities.hpp>
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "overlay_mask_layer.hpp"
 #include "plugin_shaders.hpp"

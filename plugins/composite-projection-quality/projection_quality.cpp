@@ -5,11 +5,11 @@
 #include <numbers>
 #include <vector>
 
-#include <strata/layer_capabilities.hpp>
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "plugin_shaders.hpp"
 #include "projection_quality_layer.hpp"

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/layer_capabilities.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
 
 namespace strata::composite {
 

@@ -4,7 +4,7 @@
 
 #include <glm/vec2.hpp>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata::composite {
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "plugin_shaders.hpp"
 #include "relief_layer.hpp"

@@ -8,8 +8,8 @@
 #include <glm/vec4.hpp>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/height_slopes.hpp>
-#include <strata/srgb.hpp>
+#include <strata/plugin/height_slopes.hpp>
+#include <strata/plugin/srgb.hpp>
 
 namespace strata::composite {
 

@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata::composite {
 

@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "dated_files.hpp"
 #include "plugin_shaders.hpp"

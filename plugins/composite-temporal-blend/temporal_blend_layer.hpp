@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/layer.hpp>
-#include <strata/layer_capabilities.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
 
 #include "temporal_series.hpp"
 

@@ -3,7 +3,7 @@
 #include <vector>
 
 #include <strata/date.hpp>
-#include <strata/page_demand.hpp>
+#include <strata/plugin/page_demand.hpp>
 
 namespace strata::composite {
 

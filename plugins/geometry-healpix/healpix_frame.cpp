@@ -2,7 +2,7 @@
 
 namespace strata::healpix {
 
-// z, sin(colatitude) and the longitude are strata/healpix.hpp's; a, c and the ring number are the same
+// z, sin(colatitude) and the longitude are strata/plugin/healpix.hpp's; a, c and the ring number are the same
 // inverse's terms in the form healpix_offset.glsl takes differences of: the cap lies where side * a > 0,
 // and there nr = 1 - |a|.
 HealpixFrame frameAt(const FacePoint& reference) {

@@ -7,16 +7,16 @@
 #include <memory>
 #include <optional>
 
-#include <strata/geometry.hpp>
 #include <strata/gl/gpu_timer.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/gl/surface_buffer.hpp>
-#include <strata/height_input.hpp>
-#include <strata/layer.hpp>
-#include <strata/layer_capabilities.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/height_input.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "node_buffers.hpp"
 #include "plugin_shaders.hpp"

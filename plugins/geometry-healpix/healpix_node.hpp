@@ -7,8 +7,8 @@
 
 #include <glm/vec3.hpp>
 
-#include <strata/healpix.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/healpix.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 namespace strata::healpix {
 

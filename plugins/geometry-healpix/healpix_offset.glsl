@@ -2,7 +2,7 @@
 // float without losing the offset's digits: the unit vector of the face point reference + (dx, dy) minus the
 // reference's own, good to a few float roundings of the difference itself
 // (plugins/geometry-healpix/healpix_frame.hpp computes the reference's terms in double; the tests hold this
-// to the double inverse of strata/healpix.hpp). Evaluated directly in float, a vertex would be placed only to
+// to the double inverse of strata/plugin/healpix.hpp). Evaluated directly in float, a vertex would be placed only to
 // 6e-8 of the radius, 0.4 m on Earth, and not the same way twice.
 //
 // A face point (x, y) has s = x + y and c = x - y. With a = s - 1, the face's zones meet at a = 0: the

@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include <strata/camera.hpp>
-#include <strata/height_input.hpp>
+#include <strata/plugin/height_input.hpp>
 
 #include "healpix_node.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 #include <glm/glm.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 #include "icosahedron.hpp"
 

@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include <strata/height_input.hpp>
+#include <strata/plugin/height_input.hpp>
 
 #include "patch_topology.hpp"
 #include "view_volume.hpp"

@@ -6,13 +6,13 @@
 #include <glm/gtc/constants.hpp>
 
 #include <strata/colour_config.hpp>
-#include <strata/geometry.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/layer.hpp>
-#include <strata/output.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/output.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "plugin_shaders.hpp"
 #include "translucent_surfaces.hpp"

@@ -1,8 +1,8 @@
 #include "translucent_surfaces.hpp"
 
-#include <strata/geometry.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/layer.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata::image {
 namespace {

@@ -2,7 +2,7 @@
 #include <string>
 #include <vector>
 
-#include <strata/node.hpp>
+#include <strata/plugin/node.hpp>
 
 namespace strata {
 class ShaderProgram;

@@ -3,8 +3,8 @@
 #include <string>
 
 #include <strata/colour_config.hpp>
-#include <strata/node.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/port.hpp>
 
 namespace strata::gdal {
 

@@ -7,8 +7,8 @@
 
 #include <gdal_priv.h>
 
-#include <strata/page_source.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/page_source.hpp>
+#include <strata/plugin/port.hpp>
 
 #include "colour_encoding.hpp"
 #include "memory_file.hpp"

@@ -11,7 +11,7 @@
 #include <glm/vec2.hpp>
 
 #include <strata/crs.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 namespace strata::gdal {
 namespace {

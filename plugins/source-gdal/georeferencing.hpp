@@ -5,8 +5,8 @@
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/plugin_registry.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 namespace strata::gdal {
 

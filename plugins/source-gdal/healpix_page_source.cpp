@@ -1,6 +1,6 @@
 #include "healpix_page_source.hpp"
 
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 namespace strata::gdal {
 

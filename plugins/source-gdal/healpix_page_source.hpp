@@ -5,7 +5,7 @@
 
 namespace strata::gdal {
 
-// The pages of a HEALPix pyramid (strata/healpix_pyramid.hpp), read with GDAL as any raster's, down to faces
+// The pages of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp), read with GDAL as any raster's, down to faces
 // of one page: each page lies on one face, and its border beyond the face's edge comes from the
 // neighbouring face on the sphere, so that filtering is seamless across the faces' edges.
 class HealpixPageSource final : public GdalPageSource {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include <strata/crs.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 namespace strata::gdal {
 namespace {

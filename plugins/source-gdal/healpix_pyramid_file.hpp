@@ -6,13 +6,13 @@
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
-#include <strata/healpix_pyramid.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/plugin_registry.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 namespace strata::gdal {
 
-// A HEALPix pyramid as its metadata describes it (strata/healpix_pyramid.hpp).
+// A HEALPix pyramid as its metadata describes it (strata/plugin/healpix_pyramid.hpp).
 struct HealpixPyramidFile {
   std::int64_t nside = 0;
   std::optional<healpix::FaceWindow> window;  // the part of one face it holds, if not the whole strip

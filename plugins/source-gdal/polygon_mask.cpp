@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata::gdal {
 namespace {

@@ -5,8 +5,8 @@
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
-#include <strata/page_source.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/page_source.hpp>
+#include <strata/plugin/port.hpp>
 
 namespace strata::gdal {
 

@@ -5,7 +5,7 @@
 
 #include <cpl_string.h>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata::gdal {
 namespace {

@@ -10,9 +10,9 @@
 #include <memory>
 
 #include <strata/log.hpp>
-#include <strata/paged_raster_layer.hpp>
-#include <strata/plugin.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/paged_raster_layer.hpp>
+#include <strata/plugin/plugin.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "colour_encoding.hpp"
 #include "gdal_page_source.hpp"

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/parameter_bindings.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/port.hpp>
 
 namespace strata::gdal {
 

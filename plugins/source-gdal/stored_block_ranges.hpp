@@ -3,7 +3,7 @@
 
 #include <gdal_priv.h>
 
-#include <strata/block_ranges.hpp>
+#include <strata/plugin/block_ranges.hpp>
 
 namespace strata::gdal {
 

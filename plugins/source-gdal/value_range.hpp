@@ -4,9 +4,9 @@
 
 #include <gdal_priv.h>
 
-#include <strata/block_ranges.hpp>
-#include <strata/healpix_pyramid.hpp>
-#include <strata/layer.hpp>
+#include <strata/plugin/block_ranges.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata::gdal {
 

@@ -3,7 +3,7 @@
 
 #include <glm/glm.hpp>
 #include <strata/camera.hpp>
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata::procedural {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 #include "planet_bounds.hpp"
 

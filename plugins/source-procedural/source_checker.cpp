@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include <strata/node.hpp>
-#include <strata/parameter_bindings.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 #include "checker_layer.hpp"
 

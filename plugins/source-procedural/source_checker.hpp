@@ -1,5 +1,5 @@
 #pragma once
-#include <strata/node_type.hpp>
+#include <strata/plugin/node_type.hpp>
 
 namespace strata::procedural {
 

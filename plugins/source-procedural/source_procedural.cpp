@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <memory>
 
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
 
 #include "plugin_shaders.hpp"
 #include "procedural_layer.hpp"

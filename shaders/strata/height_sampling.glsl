@@ -2,7 +2,7 @@
 // sampled at a point given from the reference, and the displaced surface's shading normal. The including
 // program defines STRATA_GEOMETRY_STAGE and STRATA_HEIGHT_FUNCTION (and STRATA_HEIGHT_FACE_FUNCTION where the
 // layer's texels are HEALPix faces), pastes the layer's GLSL before this
-// file (strata/height_input.hpp gives both) and declares the uniforms
+// file (strata/plugin/height_input.hpp gives both) and declares the uniforms
 //   vec2 referenceLonlat  rad: the point below the eye (View::reference)
 //   float radius          m: the body's, to turn height differences into slopes
 

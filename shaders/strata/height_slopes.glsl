@@ -1,4 +1,4 @@
-// The pieces of strata::heightSlopesGlsl (strata/height_slopes.hpp): a height layer's slopes at a surface
+// The pieces of strata::heightSlopesGlsl (strata/plugin/height_slopes.hpp): a height layer's slopes at a surface
 // point, from its samples one footprint away along the ground each way.
 
 // The sample's footprint along the ground, rad: the longer of its two steps (SurfacePoint), so that the

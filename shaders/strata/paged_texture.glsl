@@ -31,7 +31,7 @@ ivec2 levelTexel(TexelAddress address, int level, out vec2 part) {
 ivec2 pageAt(ivec2 whole, ivec2 low, ivec2 high) { return clamp(whole >> kPagePayloadBits, low, high); }
 
 // The pages a sample of a level `levelSize` texels across may take: all of them, or with face >= 0 those of
-// one face of a HEALPix pyramid (strata/healpix_pyramid.hpp: faces side by side, each levelSize.y across),
+// one face of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp: faces side by side, each levelSize.y across),
 // so that a point on a face's edge is filtered in its own face's page, whose border holds the texels of the
 // neighbouring face on the sphere, and not in the page of the next face along the strip.
 void pageRange(ivec2 levelSize, int face, out ivec2 low, out ivec2 high) {

@@ -11,7 +11,7 @@
 #include <limits>
 #include <string>
 
-#include <strata/block_ranges.hpp>
+#include <strata/plugin/block_ranges.hpp>
 
 #include "strata_command.hpp"
 #include "test_rasters.hpp"
@@ -149,7 +149,7 @@ TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
   expectRefused(result, {"2000000000x1000000000", "more than the page index holds", "gdal_translate -outsize"});
 }
 
-// Block ranges `strata tile` stored (strata/block_ranges.hpp) in a raster too large to count (4100 x 4100
+// Block ranges `strata tile` stored (strata/plugin/block_ranges.hpp) in a raster too large to count (4100 x 4100
 // zeros), saying `value` in every block, as a file rescaled after tiling keeps them.
 std::string claimingBlocks(float value) {
   BlockRanges ranges(4100, 4100);

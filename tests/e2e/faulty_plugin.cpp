@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <string>
 
-#include <strata/layer.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/plugin.hpp>
 
 namespace strata::e2e {
 namespace {

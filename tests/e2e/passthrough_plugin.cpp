@@ -3,8 +3,8 @@
 // inputs form a cycle, and no plugin shipped with Strata has one yet.
 #include <memory>
 
-#include <strata/layer.hpp>
-#include <strata/plugin.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/plugin.hpp>
 
 namespace strata::e2e {
 namespace {

@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include <strata/block_ranges.hpp>
 #include <strata/crs.hpp>
-#include <strata/healpix.hpp>
-#include <strata/healpix_pyramid.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/block_ranges.hpp>
+#include <strata/plugin/healpix.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "strata_command.hpp"
 #include "test_rasters.hpp"
@@ -138,7 +138,7 @@ void expectBlocksHoldTheirTexels(GDALDataset& tiled) {
           << "block " << column << ", " << row;
 }
 
-// One-channel pyramids carry the value ranges of their blocks of level-0 texels (strata/block_ranges.hpp), which
+// One-channel pyramids carry the value ranges of their blocks of level-0 texels (strata/plugin/block_ranges.hpp), which
 // bound a patch's heights by its data in a raster of any size: those of the texels written, reprojected too.
 TEST_F(TileCommand, OneChannelPyramidsCarryTheirBlocksRanges) {
   writeRasterFile(file("in.tif"), kLongLat);
@@ -221,7 +221,7 @@ struct StripTexel {
   int face, column, row;
 };
 
-// The NESTED pixel a texel holds (strata/healpix_pyramid.hpp): f nside^2 + the bits of the column (even
+// The NESTED pixel a texel holds (strata/plugin/healpix_pyramid.hpp): f nside^2 + the bits of the column (even
 // positions) and of nside - 1 - row (odd positions) interleaved.
 std::int64_t nestedPixelOf(std::int64_t nside, StripTexel texel) {
   const std::int64_t ix = texel.column, iy = nside - 1 - texel.row;

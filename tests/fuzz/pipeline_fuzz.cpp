@@ -6,8 +6,8 @@
 #include <string_view>
 #include <vector>
 
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include <cpl_vsi.h>
 #include <gdal_priv.h>
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "gdal_page_source.hpp"
 #include "georeferencing.hpp"

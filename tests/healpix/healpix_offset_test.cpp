@@ -1,8 +1,8 @@
-// plugins/geometry-healpix/healpix_offset.glsl run in float on the headless context, against strata/healpix.hpp's
-// inverse in double: the unit vector of a point of a node of a base face minus that of the node's centre,
-// for nodes of every face from the whole face (level 0) down to level 26 (2^-26 of a face, about 10 cm on
-// Earth), at random places, at the poles, at the corners and astride the boundary between the polar caps
-// and the equatorial zone, where the inverse changes its formula.
+// plugins/geometry-healpix/healpix_offset.glsl run in float on the headless context, against
+// strata/plugin/healpix.hpp's inverse in double: the unit vector of a point of a node of a base face minus that of the
+// node's centre, for nodes of every face from the whole face (level 0) down to level 26 (2^-26 of a face, about 10 cm
+// on Earth), at random places, at the poles, at the corners and astride the boundary between the polar caps and the
+// equatorial zone, where the inverse changes its formula.
 //
 // The frame's terms are rounded to float, each by 6e-8 of itself, and each enters the difference as a
 // factor: the difference is then good to a few times 6e-8 of itself, whatever its size. Measured on
@@ -20,7 +20,7 @@
 #include <strata/gl.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/healpix.hpp>
+#include <strata/plugin/healpix.hpp>
 
 #include "healpix_frame.hpp"
 #include "rendering.hpp"

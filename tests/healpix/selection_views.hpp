@@ -8,7 +8,7 @@
 #include <vector>
 
 #include <strata/camera.hpp>
-#include <strata/height_input.hpp>
+#include <strata/plugin/height_input.hpp>
 
 #include "node_selection.hpp"
 

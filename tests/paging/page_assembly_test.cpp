@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include "paging/page_assembly.hpp"
 
@@ -52,7 +52,7 @@ struct Slot {
   }
 };
 
-// Twelve HEALPix faces side by side (strata/healpix_pyramid.hpp), whose texels say where they are.
+// Twelve HEALPix faces side by side (strata/plugin/healpix_pyramid.hpp), whose texels say where they are.
 class FaceStripSource final : public PositionSource {
  public:
   explicit FaceStripSource(int nside)

@@ -1,4 +1,4 @@
-// Rendering through the page cache (strata/page_cache.hpp) on the headless context: a budget that holds
+// Rendering through the page cache (strata/host/page_cache.hpp) on the headless context: a budget that holds
 // a fraction of a raster's pages stays within itself, evicts as the view moves and still draws what a
 // roomy cache draws; a page that cannot be read is stood in for by the coarser level.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 
 #include <gdal_priv.h>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "rendering.hpp"
 #include "temporary_directory.hpp"

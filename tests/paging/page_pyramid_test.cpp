@@ -1,7 +1,7 @@
-// The page pyramid's arithmetic (strata/page_pyramid.hpp): levels, their sizes and page counts.
+// The page pyramid's arithmetic (strata/plugin/page_pyramid.hpp): levels, their sizes and page counts.
 #include <gtest/gtest.h>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata {
 namespace {

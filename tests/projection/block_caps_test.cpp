@@ -11,8 +11,8 @@
 
 #include <glm/glm.hpp>
 
-#include <strata/healpix_pyramid.hpp>
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 #include "layers/block_caps.hpp"
 #include "layers/healpix_page_caps.hpp"

@@ -1,4 +1,4 @@
-// A raster's block ranges stored in a file's metadata (strata/block_ranges.hpp) and read back: every value a
+// A raster's block ranges stored in a file's metadata (strata/plugin/block_ranges.hpp) and read back: every value a
 // block holds stays within its stored range although floats hold the extremes, blocks with gaps keep them,
 // a raster too large for the file's share is stored in larger blocks, and items that do not fit the raster
 // or are damaged are refused rather than trusted.
@@ -10,7 +10,7 @@
 #include <random>
 #include <string>
 
-#include <strata/block_ranges.hpp>
+#include <strata/plugin/block_ranges.hpp>
 
 namespace strata {
 namespace {

@@ -1,4 +1,4 @@
-// The HEALPix grid (strata/healpix.hpp) against two references: the HEALPix library's own C implementation,
+// The HEALPix grid (strata/plugin/healpix.hpp) against two references: the HEALPix library's own C implementation,
 // chealpix (pixel indices, pixel centres, NESTED <-> RING), and PROJ's +proj=healpix +R=1 (the planar
 // projection, both ways); then round trips through the face coordinates.
 //
@@ -20,7 +20,7 @@
 
 #include <chealpix.h>
 #include <glm/geometric.hpp>
-#include <strata/healpix.hpp>
+#include <strata/plugin/healpix.hpp>
 
 #include "proj_reference.hpp"
 

@@ -1,5 +1,5 @@
-// The layout of a HEALPix pyramid (strata/healpix_pyramid.hpp): the strip's projection against the HEALPix
-// grid (strata/healpix.hpp, itself checked against chealpix and PROJ in healpix_grid_test.cpp), its texels
+// The layout of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp): the strip's projection against the HEALPix
+// grid (strata/plugin/healpix.hpp, itself checked against chealpix and PROJ in healpix_grid_test.cpp), its texels
 // against chealpix's NESTED pixel centres, and the texels across each face's edges. Tolerance 1e-12 (radians,
 // strip units) as in healpix_grid_test.cpp: the formulas lose a few units of 2^-53, so 1e-12 leaves room for
 // no error of substance.
@@ -14,8 +14,8 @@
 #include <random>
 
 #include <glm/geometric.hpp>
-#include <strata/healpix.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include "projection_cases.hpp"
 

@@ -9,7 +9,7 @@
 #include <random>
 
 #include <strata/crs.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "layers/local_texture_frame.hpp"
 

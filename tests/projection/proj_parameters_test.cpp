@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <strata/error.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata::test {
 namespace {

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include "projection_cases.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <glm/vec2.hpp>
 
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 #include "proj_reference.hpp"
 

@@ -30,7 +30,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/gl/texture.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include "projection_cases.hpp"
 #include "rendering.hpp"
@@ -180,7 +180,7 @@ TEST(GlslLongitudeWrap, RastersFrom0To360Degrees) {
   }
 }
 
-// The strip of a HEALPix pyramid (strata/healpix_pyramid.hpp), on a sphere and an ellipsoid, against its
+// The strip of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp), on a sphere and an ellipsoid, against its
 // C++ form over random places, leaving out those within kEdgeMargin of a face's edge, which float rounding
 // may put on the other face. Tolerance as above, in strip units (a face is one unit across).
 TEST(GlslHealpixStrip, MatchesTheStripProjection) {

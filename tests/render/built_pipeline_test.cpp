@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <strata/error.hpp>
-#include <strata/pipeline_builder.hpp>
+#include <strata/host/pipeline_builder.hpp>
 
 #include "rendering.hpp"
 #include "temporary_directory.hpp"

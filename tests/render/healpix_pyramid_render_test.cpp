@@ -1,4 +1,4 @@
-// A HEALPix pyramid (strata/healpix_pyramid.hpp) read by every generator (issue 6): heights of one smooth
+// A HEALPix pyramid (strata/plugin/healpix_pyramid.hpp) read by every generator (issue 6): heights of one smooth
 // field in a global longitude/latitude raster of 4096 x 2048, and in the pyramid of nside 512 that `strata
 // tile --to healpix` makes of it, give the same planet. geometry.icosahedral and geometry.pgm read the
 // pyramid through the strip's projection; geometry.healpix reads it by face point, with no projection
@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "rendering.hpp"
 #include "temporary_directory.hpp"

@@ -28,10 +28,10 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include <strata/geometry.hpp>
-#include <strata/output.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/output.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"

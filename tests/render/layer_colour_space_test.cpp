@@ -33,8 +33,8 @@
 #include <string>
 
 #include <strata/error.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"

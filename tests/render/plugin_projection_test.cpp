@@ -11,7 +11,7 @@
 #include <memory>
 #include <numbers>
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "board_judging.hpp"
 #include "rendering.hpp"

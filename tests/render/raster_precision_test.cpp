@@ -15,8 +15,8 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "board_judging.hpp"
 #include "rendering.hpp"

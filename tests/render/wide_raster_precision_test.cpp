@@ -23,12 +23,12 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/packing.hpp>
 
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/paged_raster_layer.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/raster_georeference.hpp>
-#include <strata/srgb.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/paged_raster_layer.hpp>
+#include <strata/plugin/plugin_registry.hpp>
+#include <strata/plugin/raster_georeference.hpp>
+#include <strata/plugin/srgb.hpp>
 
 #include "board_judging.hpp"
 #include "rendering.hpp"

@@ -1,6 +1,6 @@
 #include "rendering.hpp"
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::test {
 

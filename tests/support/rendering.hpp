@@ -3,9 +3,9 @@
 #include <memory>
 #include <string>
 
-#include <strata/engine.hpp>
 #include <strata/gl/context.hpp>
 #include <strata/gl/shader_library.hpp>
+#include <strata/host/engine.hpp>
 
 #include "test_rasters.hpp"
 

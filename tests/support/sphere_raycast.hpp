@@ -28,7 +28,7 @@ std::optional<SurfaceHit> raycastTerrain(const View& view, double radius,
                                          double step, double x, double y, double* radiusAt = nullptr);
 
 // The distance from the eye along the ray through the centre of pixel (x, y) of a reversed depth read back
-// from a geometry's buffer (strata/output.hpp, readDepth); infinity where it is 0 (nothing drawn).
+// from a geometry's buffer (strata/plugin/output.hpp, readDepth); infinity where it is 0 (nothing drawn).
 double rayDistance(const View& view, float depth, double x, double y);
 
 // The expected radius in pixels of a sphere of `radius` seen from distance `distance` to its centre.

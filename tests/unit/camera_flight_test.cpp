@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include <strata/camera_path.hpp>
+#include <strata/host/camera_path.hpp>
 
 namespace strata {
 namespace {

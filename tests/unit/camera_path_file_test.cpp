@@ -2,8 +2,8 @@
 // with what would fix it.
 #include <gtest/gtest.h>
 
-#include <strata/camera_path.hpp>
 #include <strata/error.hpp>
+#include <strata/host/camera_path.hpp>
 
 namespace strata {
 namespace {

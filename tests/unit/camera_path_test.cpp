@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include <strata/camera_path.hpp>
+#include <strata/host/camera_path.hpp>
 
 namespace strata {
 namespace {

@@ -1,4 +1,4 @@
-// ParameterBindings (strata/parameter_bindings.hpp): a settings struct's members declared once as
+// ParameterBindings (strata/plugin/parameter_bindings.hpp): a settings struct's members declared once as
 // parameters, read back typed, with their defaults from the struct and their locations for messages.
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <strata/parameter_bindings.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 namespace strata::testing {
 namespace {

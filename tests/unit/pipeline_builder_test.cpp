@@ -1,6 +1,6 @@
 // PipelineBuilder: a pipeline built in code is the document a file would hold, validated the same way;
 // its errors name the builder (and the node) where a file's name the file, line and column.
-#include <strata/pipeline_builder.hpp>
+#include <strata/host/pipeline_builder.hpp>
 
 #include "pipeline_test_fixtures.hpp"
 

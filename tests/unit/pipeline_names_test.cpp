@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include <strata/node_type.hpp>
+#include <strata/plugin/node_type.hpp>
 
 namespace strata {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata {
 namespace {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::testing {
 

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <set>
 
-#include <strata/node.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata {
 namespace {

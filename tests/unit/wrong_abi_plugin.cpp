@@ -1,5 +1,5 @@
 // A plugin module that claims a plugin ABI version this Strata does not have, for plugin_loading_test.
-#include <strata/plugin.hpp>
+#include <strata/plugin/plugin.hpp>
 
 namespace {
 void registerNothing(strata::PluginRegistrar*) {}

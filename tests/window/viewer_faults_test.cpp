@@ -6,7 +6,7 @@
 #include <chrono>
 #include <filesystem>
 
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 #include <strata/viewer/viewer.hpp>
 
 #include "shared_window.hpp"

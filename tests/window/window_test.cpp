@@ -2,7 +2,7 @@
 // back buffer equal those of the output's framebuffer.
 #include <gtest/gtest.h>
 
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 #include <strata/window/glfw_window.hpp>
 
 #include "shared_window.hpp"

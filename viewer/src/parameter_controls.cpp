@@ -1,10 +1,10 @@
 #include <strata/viewer/parameter_controls.hpp>
 
 #include <strata/date.hpp>
-#include <strata/node_type.hpp>
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/scene_settings.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/host/scene_settings.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::viewer {
 namespace {

@@ -3,8 +3,8 @@
 #include <imgui.h>
 
 #include <strata/date.hpp>
-#include <strata/page_cache.hpp>
-#include <strata/pipeline.hpp>
+#include <strata/host/page_cache.hpp>
+#include <strata/host/pipeline.hpp>
 
 namespace strata::viewer {
 namespace {

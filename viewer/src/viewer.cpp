@@ -4,8 +4,8 @@
 
 #include <strata/error.hpp>
 #include <strata/gl.hpp>
+#include <strata/host/pipeline.hpp>
 #include <strata/log.hpp>
-#include <strata/pipeline.hpp>
 #include <strata/viewer/orbit_controls.hpp>
 #include <strata/viewer/scene_panel.hpp>
 

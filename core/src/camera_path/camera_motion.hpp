@@ -2,7 +2,7 @@
 #include <memory>
 #include <vector>
 
-#include <strata/camera_path.hpp>
+#include <strata/host/camera_path.hpp>
 
 namespace strata {
 

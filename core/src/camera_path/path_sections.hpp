@@ -1,7 +1,7 @@
 #pragma once
 #include <yaml-cpp/yaml.h>
 
-#include <strata/camera_path.hpp>
+#include <strata/host/camera_path.hpp>
 
 #include "pipeline/source_map.hpp"
 

@@ -1,4 +1,4 @@
-#include <strata/srgb.hpp>
+#include <strata/plugin/srgb.hpp>
 
 #include <cmath>
 

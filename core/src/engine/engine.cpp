@@ -5,13 +5,13 @@
 #include <thread>
 #include <vector>
 
-#include <strata/engine.hpp>
 #include <strata/gl.hpp>
 #include <strata/gl/shader_library.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/host/page_cache.hpp>
+#include <strata/host/pipeline_builder.hpp>
 #include <strata/log.hpp>
-#include <strata/output.hpp>
-#include <strata/page_cache.hpp>
-#include <strata/pipeline_builder.hpp>
+#include <strata/plugin/output.hpp>
 
 #include "engine/host_gl_state.hpp"
 #include "engine/live_parameter.hpp"

@@ -2,7 +2,7 @@
 #include <gdal.h>
 #include <proj.h>
 
-#include <strata/library_versions.hpp>
+#include <strata/host/library_versions.hpp>
 #include <strata/version.hpp>
 
 namespace strata {

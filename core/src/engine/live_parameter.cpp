@@ -2,7 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/node_type.hpp>
+#include <strata/plugin/node_type.hpp>
 
 #include "pipeline/overrides.hpp"
 #include "pipeline/parameter_parsing.hpp"

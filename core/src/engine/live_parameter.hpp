@@ -2,9 +2,9 @@
 #include <optional>
 #include <string>
 
-#include <strata/parameter.hpp>
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/parameter.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata {
 

@@ -3,7 +3,7 @@
 #include <string>
 
 #include <strata/error.hpp>
-#include <strata/pipeline.hpp>
+#include <strata/host/pipeline.hpp>
 
 namespace strata {
 

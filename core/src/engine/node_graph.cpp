@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <map>
 
-#include <strata/geometry.hpp>
-#include <strata/layer.hpp>
-#include <strata/node_type.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/node_type.hpp>
 
 #include "engine/node_failure.hpp"
 

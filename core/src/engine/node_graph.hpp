@@ -2,9 +2,9 @@
 #include <memory>
 #include <vector>
 
-#include <strata/node.hpp>
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "engine/worker_pool.hpp"
 

@@ -1,4 +1,4 @@
-#include <strata/node.hpp>
+#include <strata/plugin/node.hpp>
 
 namespace strata {
 

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include <strata/error.hpp>
-#include <strata/output.hpp>
+#include <strata/plugin/output.hpp>
 
 namespace strata {
 namespace {

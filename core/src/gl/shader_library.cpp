@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include <strata/gl/shader_library.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata {
 namespace detail {

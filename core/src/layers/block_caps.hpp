@@ -4,9 +4,9 @@
 #include <memory>
 #include <vector>
 
-#include <strata/block_ranges.hpp>
-#include <strata/raster_georeference.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/block_ranges.hpp>
+#include <strata/plugin/raster_georeference.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 namespace strata {
 

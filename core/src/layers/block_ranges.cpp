@@ -1,4 +1,4 @@
-#include <strata/block_ranges.hpp>
+#include <strata/plugin/block_ranges.hpp>
 
 #include <algorithm>
 #include <bit>

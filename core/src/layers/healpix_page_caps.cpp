@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata {
 

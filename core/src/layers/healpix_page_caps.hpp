@@ -1,8 +1,8 @@
 #pragma once
 #include <memory>
 
-#include <strata/healpix_pyramid.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 #include "layers/block_caps.hpp"
 

@@ -1,4 +1,4 @@
-#include <strata/height_input.hpp>
+#include <strata/plugin/height_input.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <numbers>
 #include <optional>
 
-#include <strata/layer.hpp>
-#include <strata/layer_capabilities.hpp>
-#include <strata/node.hpp>
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 namespace strata {
 namespace {

@@ -1,6 +1,6 @@
-#include <strata/height_slopes.hpp>
+#include <strata/plugin/height_slopes.hpp>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata {
 

@@ -1,4 +1,4 @@
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata {
 

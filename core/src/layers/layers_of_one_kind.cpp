@@ -1,6 +1,6 @@
 #include <strata/error.hpp>
-#include <strata/layer.hpp>
-#include <strata/node.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/node.hpp>
 
 namespace strata {
 

@@ -1,7 +1,7 @@
 #include <algorithm>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/paged_raster_layer.hpp>
+#include <strata/plugin/paged_raster_layer.hpp>
 
 #include "layers/healpix_page_caps.hpp"
 

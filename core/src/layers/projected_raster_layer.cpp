@@ -2,8 +2,8 @@
 #include <cmath>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/healpix_pyramid.hpp>
-#include <strata/projected_raster_layer.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/projected_raster_layer.hpp>
 
 #include "layers/block_caps.hpp"
 #include "layers/local_texture_frame.hpp"

@@ -1,7 +1,7 @@
 // Placing rasters: a projection plus a geotransform, with periodic projections centred on the raster.
 #include <strata/crs.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/plugin_registry.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 namespace strata {
 

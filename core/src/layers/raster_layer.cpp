@@ -2,7 +2,7 @@
 #include <string_view>
 
 #include <strata/gl/shader_program.hpp>
-#include <strata/raster_layer.hpp>
+#include <strata/plugin/raster_layer.hpp>
 
 namespace strata {
 namespace {

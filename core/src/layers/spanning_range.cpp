@@ -1,6 +1,6 @@
 #include <algorithm>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 namespace strata {
 

@@ -1,4 +1,4 @@
-#include <strata/spherical_cap.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 #include <algorithm>
 #include <cmath>

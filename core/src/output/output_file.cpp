@@ -1,4 +1,4 @@
-#include <strata/output_file.hpp>
+#include <strata/host/output_file.hpp>
 
 #include <fcntl.h>  // AT_FDCWD, for renameat2
 

@@ -3,7 +3,7 @@
 #include <span>
 #include <strata/export.hpp>
 
-#include <strata/page_source.hpp>
+#include <strata/plugin/page_source.hpp>
 
 // Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
 STRATA_EXPORTS_BEGIN

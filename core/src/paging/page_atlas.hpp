@@ -5,7 +5,7 @@
 #include <vector>
 
 #include <strata/gl.hpp>
-#include <strata/page_source.hpp>
+#include <strata/plugin/page_source.hpp>
 
 #include "paging/page_loader.hpp"
 

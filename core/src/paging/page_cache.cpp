@@ -7,8 +7,8 @@
 #include <utility>
 
 #include <strata/gl/shader_program.hpp>
+#include <strata/host/page_cache.hpp>
 #include <strata/log.hpp>
-#include <strata/page_cache.hpp>
 
 #include "paging/page_assembly.hpp"
 #include "paging/page_atlas.hpp"

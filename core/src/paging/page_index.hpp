@@ -4,7 +4,7 @@
 #include <vector>
 
 #include <strata/gl.hpp>
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata::paging {
 

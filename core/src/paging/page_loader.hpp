@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata::paging {
 

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata {
 

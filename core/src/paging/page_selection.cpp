@@ -6,7 +6,7 @@
 #include <limits>
 #include <optional>
 
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata::paging {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
-#include <strata/page_pyramid.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/page_pyramid.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 #include "paging/page_loader.hpp"
 

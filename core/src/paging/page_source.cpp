@@ -1,4 +1,4 @@
-#include <strata/page_source.hpp>
+#include <strata/plugin/page_source.hpp>
 
 namespace strata {
 

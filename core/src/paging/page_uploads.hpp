@@ -4,7 +4,7 @@
 #include <vector>
 
 #include <strata/gl.hpp>
-#include <strata/page_source.hpp>
+#include <strata/plugin/page_source.hpp>
 
 namespace strata::paging {
 

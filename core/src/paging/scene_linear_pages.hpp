@@ -6,7 +6,7 @@
 
 #include <strata/gl.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/page_source.hpp>
+#include <strata/plugin/page_source.hpp>
 
 namespace strata::paging {
 

@@ -1,7 +1,7 @@
 #include <charconv>
 #include <type_traits>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata {
 namespace {

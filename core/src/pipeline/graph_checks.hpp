@@ -3,7 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/pipeline.hpp>
+#include <strata/host/pipeline.hpp>
 
 #include "pipeline/node_parsing.hpp"
 #include "pipeline/source_map.hpp"

@@ -1,6 +1,6 @@
 #include "pipeline/interval.hpp"
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata::loader {
 namespace {

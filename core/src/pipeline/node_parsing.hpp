@@ -5,9 +5,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/node_type.hpp>
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "pipeline/source_map.hpp"
 

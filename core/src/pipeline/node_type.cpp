@@ -1,6 +1,6 @@
 // The names of the SDK's enumerations, as users read and write them, and lookups in a node type's
 // declaration.
-#include <strata/node_type.hpp>
+#include <strata/plugin/node_type.hpp>
 
 #include <algorithm>
 #include <array>

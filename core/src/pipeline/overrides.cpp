@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include <strata/scene_settings.hpp>
+#include <strata/host/scene_settings.hpp>
 
 #include "pipeline/suggestions.hpp"
 

@@ -3,7 +3,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 #include "pipeline/value_reading.hpp"
 

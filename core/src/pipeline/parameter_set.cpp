@@ -1,7 +1,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata {
 namespace {

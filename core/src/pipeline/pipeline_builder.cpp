@@ -1,6 +1,6 @@
 // A pipeline built in code: the document a pipeline file would hold, as a yaml-cpp tree whose scalars are
 // tagged as plain (unquoted) ones, so that the loader reads each value exactly as it reads one in a file.
-#include <strata/pipeline_builder.hpp>
+#include <strata/host/pipeline_builder.hpp>
 
 #include <type_traits>
 #include <utility>

@@ -5,8 +5,8 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::loader {
 

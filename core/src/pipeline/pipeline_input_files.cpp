@@ -1,11 +1,11 @@
-// The files a loaded pipeline reads, which no output may replace (strata/output_file.hpp).
+// The files a loaded pipeline reads, which no output may replace (strata/host/output_file.hpp).
 #include <gdal_priv.h>
 
 #include <memory>
 #include <string>
 #include <variant>
 
-#include <strata/pipeline.hpp>
+#include <strata/host/pipeline.hpp>
 
 #include "pipeline/files_gdal_reads.hpp"
 

@@ -2,7 +2,7 @@
 //
 //   strata: 1                                  # required: the format version; only 1 exists
 //   body: {name: Earth, radius: 6371000}       # optional: the scene's sections, declared in
-//   camera: {lon: 10, lat: 20, altitude: 2e7}  #   strata/scene_settings.hpp (`strata plugins --describe
+//   camera: {lon: 10, lat: 20, altitude: 2e7}  #   strata/host/scene_settings.hpp (`strata plugins --describe
 //   cache: {budget: 256}                       #   scene`, docs/reference/scene.md)
 //   date: 2004-06-15
 //   colour: {config: my.ocio}
@@ -17,8 +17,8 @@
 // (graph_checks.hpp). In every map a key may appear only once, and an unknown key gets a did-you-mean.
 #include <utility>
 
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "pipeline/graph_checks.hpp"
 #include "pipeline/overrides.hpp"

@@ -5,13 +5,13 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <strata/pipeline.hpp>
-#include <strata/scene_settings.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/host/scene_settings.hpp>
 
 #include "pipeline/source_map.hpp"
 
 // The scene's sections of a pipeline (body, camera, cache, colour, date), read against their declarations
-// (strata/scene_settings.hpp) by the code that reads node parameters. Every section is optional, and so is
+// (strata/host/scene_settings.hpp) by the code that reads node parameters. Every section is optional, and so is
 // every key in one: what is absent keeps its default.
 namespace strata::loader {
 

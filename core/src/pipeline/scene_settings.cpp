@@ -1,6 +1,6 @@
 // The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:` and `date:` take, with
 // each default's reason beside it in the settings structs (body.hpp, camera.hpp, page_cache_settings.hpp).
-#include <strata/scene_settings.hpp>
+#include <strata/host/scene_settings.hpp>
 
 #include <cstdint>
 

@@ -3,7 +3,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata {
 namespace {

@@ -1,5 +1,5 @@
 // The projection half of the plugin registry: built-in projections first, then those plugins add.
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "projection/builtin_projections.hpp"
 

@@ -2,7 +2,7 @@
 #include <strata/export.hpp>
 #include <vector>
 
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 // Not part of the SDK: exported from libstrata_core for Strata's own tests and tools.
 STRATA_EXPORTS_BEGIN

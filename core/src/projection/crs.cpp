@@ -4,7 +4,7 @@
 #include <ogr_spatialref.h>
 
 #include <strata/crs.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 #include "projection/projection_terms.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata {
 

@@ -1,10 +1,10 @@
-// The HEALPix grid (strata/healpix.hpp). Sources: the face-local forward and inverse in the HEALPix library's
+// The HEALPix grid (strata/plugin/healpix.hpp). Sources: the face-local forward and inverse in the HEALPix library's
 // closed forms ([Gorski et al. 2005]; [Westerteiger et al. 2011] uses them but prints none, docs/references.md,
 // Errata), whose round trip agrees to 5e-15; the pixel numbering of [Gorski et al. 2005, §4, §5]; the planar
 // projection of [Calabretta & Roukema 2007] (H = 4, K = 3). The pixel indices floor the same products, in the
 // same order, as the HEALPix library does, so that a place on a pixel edge falls into the pixel the library
 // puts it in.
-#include <strata/healpix.hpp>
+#include <strata/plugin/healpix.hpp>
 
 #include <algorithm>
 #include <array>

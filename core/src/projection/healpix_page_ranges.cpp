@@ -1,5 +1,5 @@
-// The true value ranges of a HEALPix pyramid's pages (strata/healpix_pyramid.hpp, PageRanges).
-#include <strata/healpix_pyramid.hpp>
+// The true value ranges of a HEALPix pyramid's pages (strata/plugin/healpix_pyramid.hpp, PageRanges).
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include <algorithm>
 #include <bit>

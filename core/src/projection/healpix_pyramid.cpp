@@ -1,7 +1,7 @@
-// The layout of a HEALPix pyramid (strata/healpix_pyramid.hpp): the twelve faces of [Westerteiger et al. 2011, §3]
-// side by side, numbered as strata/healpix.hpp numbers them.
-#include <strata/healpix.hpp>
-#include <strata/healpix_pyramid.hpp>
+// The layout of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp): the twelve faces of [Westerteiger et al. 2011,
+// §3] side by side, numbered as strata/plugin/healpix.hpp numbers them.
+#include <strata/plugin/healpix.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include <algorithm>
 #include <bit>

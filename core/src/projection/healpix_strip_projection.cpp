@@ -1,8 +1,8 @@
-// The projection of a HEALPix pyramid's strip of faces (strata/healpix_pyramid.hpp): the planar HEALPix
+// The projection of a HEALPix pyramid's strip of faces (strata/plugin/healpix_pyramid.hpp): the planar HEALPix
 // projection (Calabretta & Roukema 2007), whose faces are squares turned by 45 degrees, then each face turned
 // back into its column of the strip.
-#include <strata/healpix.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include <strata/error.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata {
 namespace {

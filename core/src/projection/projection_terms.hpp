@@ -8,7 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include <strata/error.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata {
 

@@ -6,8 +6,8 @@
 #include <gdal_priv.h>
 
 #include <strata/error.hpp>
-#include <strata/healpix_pyramid.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace strata::tiling {
 

@@ -1,4 +1,4 @@
-// The HEALPix pyramid (strata/healpix_pyramid.hpp) written with GDAL's warper. Each base face is a square
+// The HEALPix pyramid (strata/plugin/healpix_pyramid.hpp) written with GDAL's warper. Each base face is a square
 // grid turned by 45 degrees in the planar HEALPix projection (Calabretta & Roukema 2007) centred on the
 // meridian of its column of faces, which a rotated geotransform describes exactly; so warping the input into
 // that grid gives each face texel the input's bilinear value at its pixel's centre.
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include <strata/crs.hpp>
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 #include "projection/projection_terms.hpp"
 #include "tiling/block_range_scan.hpp"

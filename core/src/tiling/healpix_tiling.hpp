@@ -1,10 +1,10 @@
 #pragma once
-// `strata tile --to healpix`: the HEALPix pyramid of strata/healpix_pyramid.hpp, written face by face with
+// `strata tile --to healpix`: the HEALPix pyramid of strata/plugin/healpix_pyramid.hpp, written face by face with
 // GDAL's warper so that resampling, datums and the antimeridian are GDAL's.
 #include <gdal_priv.h>
 
-#include <strata/plugin_registry.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/tiling.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::tiling {
 

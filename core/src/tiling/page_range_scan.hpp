@@ -3,7 +3,7 @@
 
 #include <gdal_priv.h>
 
-#include <strata/healpix_pyramid.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
 
 namespace strata::tiling {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include <strata/error.hpp>
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 namespace strata::tiling {
 

@@ -5,8 +5,8 @@
 #include <memory>
 
 #include <strata/crs.hpp>
-#include <strata/output_file.hpp>
-#include <strata/tiling.hpp>
+#include <strata/host/output_file.hpp>
+#include <strata/host/tiling.hpp>
 
 #include "pipeline/files_gdal_reads.hpp"
 #include "tiling/block_range_scan.hpp"
@@ -45,7 +45,7 @@ void checkBands(GDALDataset& dataset, const SourceLocation& where) {
 }
 
 // The COG of `input` in `target` (empty: its own CRS). A one-channel raster carries its blocks' ranges
-// (strata/block_ranges.hpp), which bound a patch's heights by its data at any size; they are those of the
+// (strata/plugin/block_ranges.hpp), which bound a patch's heights by its data at any size; they are those of the
 // texels written, so a reprojected raster is written twice: warped, then again with the ranges of what was
 // warped.
 Dataset writePyramid(GDALDataset& input, const std::filesystem::path& partial, const std::string& target,
@@ -82,7 +82,7 @@ TilingResult tileInto(const PluginRegistry& plugins, GDALDataset& input, TilingR
 }  // namespace
 
 // Written under a scratch name beside the output and renamed into place when whole and closed, so that an
-// interrupted or failed run leaves the finished file or nothing (strata/output_file.hpp).
+// interrupted or failed run leaves the finished file or nothing (strata/host/output_file.hpp).
 TilingResult tileRaster(const PluginRegistry& plugins, const TilingRequest& request) {
   const SourceLocation where{request.input.string()}, output{request.output.string()};
   checkOutputTarget(request.output, {request.overwrite, {request.input}}, output);

@@ -4,11 +4,11 @@
 
 #include <ogr_spatialref.h>
 
-#include <strata/plugin_registry.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 namespace strata::tiling {
 
-// The --to name of the HEALPix pyramid (strata/healpix_pyramid.hpp), a layout rather than a projection: the
+// The --to name of the HEALPix pyramid (strata/plugin/healpix_pyramid.hpp), a layout rather than a projection: the
 // planar HEALPix projection is the CRS "+proj=healpix".
 inline constexpr const char* kHealpixPyramid = "healpix";
 

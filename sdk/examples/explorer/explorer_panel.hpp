@@ -4,7 +4,7 @@
 #include <vector>
 
 #include <strata/date.hpp>
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 
 namespace explorer {
 

@@ -6,10 +6,10 @@
 #include <exception>
 #include <stdexcept>
 
-#include <strata/engine.hpp>
 #include <strata/error.hpp>
 #include <strata/gl.hpp>
-#include <strata/output.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/plugin/output.hpp>
 
 #include "explorer_options.hpp"
 #include "explorer_panel.hpp"

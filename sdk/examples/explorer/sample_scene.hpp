@@ -1,5 +1,5 @@
 #pragma once
-#include <strata/pipeline_builder.hpp>
+#include <strata/host/pipeline_builder.hpp>
 
 namespace explorer {
 

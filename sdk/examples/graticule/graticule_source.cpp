@@ -7,10 +7,10 @@
 #include <vector>
 
 #include <strata/error.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
-#include <strata/plugin_registry.hpp>
-#include <strata/raster_layer.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
+#include <strata/plugin/plugin_registry.hpp>
+#include <strata/plugin/raster_layer.hpp>
 
 namespace graticule {
 namespace {

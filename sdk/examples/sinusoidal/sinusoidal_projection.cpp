@@ -16,8 +16,8 @@
 #include <string>
 
 #include <strata/error.hpp>
-#include <strata/plugin.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/plugin.hpp>
+#include <strata/plugin/projection.hpp>
 
 namespace sinusoidal {
 namespace {

@@ -12,11 +12,11 @@
 
 #include <strata/body.hpp>
 #include <strata/gl/shader_program.hpp>
-#include <strata/height_slopes.hpp>
-#include <strata/layer.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/plugin.hpp>
-#include <strata/srgb.hpp>
+#include <strata/plugin/height_slopes.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
+#include <strata/plugin/srgb.hpp>
 
 #include "plugin_shaders.hpp"
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include <strata/error.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 class OGRSpatialReference;
 

@@ -1,4 +1,4 @@
-// The strip of a HEALPix pyramid (strata/healpix_pyramid.hpp): face + face point x, and face point y, of a
+// The strip of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp): face + face point x, and face point y, of a
 // longitude/latitude, through the planar HEALPix projection (healpix.glsl) and then faceOfPlane of
 // core/src/projection/healpix_grid.cpp: on the plane the faces' edge lines are straight, and a face is where
 // an ascending and a descending one cross.

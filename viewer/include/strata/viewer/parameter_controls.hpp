@@ -2,8 +2,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/engine.hpp>
-#include <strata/parameter.hpp>
+#include <strata/host/engine.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata::viewer {
 

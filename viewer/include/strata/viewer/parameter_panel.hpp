@@ -3,7 +3,7 @@
 #include <string>
 #include <utility>
 
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 #include <strata/viewer/parameter_controls.hpp>
 
 namespace strata::viewer {

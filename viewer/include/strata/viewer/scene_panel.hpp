@@ -1,5 +1,5 @@
 #pragma once
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 
 namespace strata::viewer {
 

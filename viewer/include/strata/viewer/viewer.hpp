@@ -2,7 +2,7 @@
 #include <filesystem>
 #include <string>
 
-#include <strata/engine.hpp>
+#include <strata/host/engine.hpp>
 #include <strata/viewer/panel_overlay.hpp>
 #include <strata/viewer/parameter_panel.hpp>
 #include <strata/viewer/pipeline_watcher.hpp>

@@ -18,13 +18,13 @@ struct TilingRequest {
   std::filesystem::path output;  // the Cloud Optimized GeoTIFF to write
   // Empty: keep the input's CRS when it is a registered projection, else reproject into the best-suited
   // one. Otherwise a projection name (equirectangular, polar-north, polar-south), any CRS GDAL reads (WKT,
-  // PROJ string, EPSG:code), used as given, or "healpix": the HEALPix pyramid of strata/healpix_pyramid.hpp.
+  // PROJ string, EPSG:code), used as given, or "healpix": the HEALPix pyramid of strata/plugin/healpix_pyramid.hpp.
   std::string target;
   bool overwrite = false;  // without it an existing output is an error: nothing a user wrote is replaced
   // Called with the fraction done; empty: quiet.
   std::function<void(double)> progress;
   // The HEALPix pyramid's nside: a power of two from healpix::kLeastNside to 2^30 (above 2^26, a window of
-  // one face: strata/healpix_pyramid.hpp). 0: the least whose texels are no larger than the input's finest.
+  // one face: strata/plugin/healpix_pyramid.hpp). 0: the least whose texels are no larger than the input's finest.
   std::int64_t nside = 0;
 };
 

@@ -6,8 +6,8 @@
 #include <vector>
 
 #include <strata/gl/texture.hpp>
-#include <strata/projected_raster_layer.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/projected_raster_layer.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -7,9 +7,9 @@
 
 #include <glm/glm.hpp>
 
-#include <strata/layer.hpp>
-#include <strata/layer_capabilities.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -67,7 +67,7 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   // Bounds regions by `caps` (which valuesWithin() asks), where the source knows its values otherwise than
   // by BlockRanges; after place().
   void setBlockCaps(std::shared_ptr<const BlockCaps> caps) { blockCaps_ = std::move(caps); }
-  // Whether the raster is a HEALPix pyramid's whole strip of faces (strata/healpix_pyramid.hpp), not a
+  // Whether the raster is a HEALPix pyramid's whole strip of faces (strata/plugin/healpix_pyramid.hpp), not a
   // window of one face.
   bool onHealpixFaces() const;
   bool repeatX() const { return repeatX_; }

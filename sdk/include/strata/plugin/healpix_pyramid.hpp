@@ -23,8 +23,8 @@
 
 #include <glm/vec2.hpp>
 
-#include <strata/page_pyramid.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/page_pyramid.hpp>
+#include <strata/plugin/projection.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata::healpix {

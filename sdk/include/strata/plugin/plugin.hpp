@@ -1,8 +1,8 @@
 #pragma once
 #include <strata/export.hpp>
-#include <strata/node.hpp>
-#include <strata/node_type.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/node.hpp>
+#include <strata/plugin/node_type.hpp>
+#include <strata/plugin/projection.hpp>
 #include <strata/version.hpp>
 
 STRATA_EXPORTS_BEGIN

@@ -35,7 +35,7 @@ enum class ImageFormat { Png, Tiff };
 ImageFormat imageFormatOf(const std::filesystem::path& file);
 // Writes RGBA8 rows (top row first) as an 8-bit image through GDAL, in the format its extension names
 // (imageFormatOf); throws strata::Error naming the file. It writes `file` as given: callers that must not
-// leave a partial image under a user's name write into a ScratchDirectory (strata/output_file.hpp).
+// leave a partial image under a user's name write into a ScratchDirectory (strata/host/output_file.hpp).
 void writeImage(const std::filesystem::path& file, int width, int height, const std::vector<unsigned char>& rgba);
 
 }  // namespace strata

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include <strata/page_demand.hpp>
-#include <strata/port.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/page_demand.hpp>
+#include <strata/plugin/port.hpp>
+#include <strata/plugin/projection.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -25,7 +25,7 @@ struct ValueRange {
 
 // A layer is a GLSL sampling function over a projection, plus the GPU resources behind it
 // (docs/architecture.md, "Nodes and what flows between them"). What only some layers can do besides is in
-// small interfaces they opt into (strata/layer_capabilities.hpp), which consumers ask for with as().
+// small interfaces they opt into (strata/plugin/layer_capabilities.hpp), which consumers ask for with as().
 // Consumers paste glslOnce() into their programs after "strata/surface_point.glsl" and call
 //   vec4 <samplingFunction()>(SurfacePoint p)
 // which returns the value in .rgb (.r for one-channel kinds: heights in metres, already scaled) and the
@@ -51,7 +51,7 @@ class Layer {
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
-  // The capability `Capability` (strata/layer_capabilities.hpp: texels, a projection's aspect, values by
+  // The capability `Capability` (strata/plugin/layer_capabilities.hpp: texels, a projection's aspect, values by
   // region, HEALPix faces) where this layer offers it, else nullptr.
   template <class Capability>
   const Capability* as() const {

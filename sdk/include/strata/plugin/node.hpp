@@ -8,11 +8,11 @@
 #include <vector>
 
 #include <strata/body.hpp>
-#include <strata/colour_settings.hpp>
 #include <strata/date.hpp>
 #include <strata/error.hpp>
-#include <strata/frame.hpp>
-#include <strata/parameter.hpp>
+#include <strata/host/colour_settings.hpp>
+#include <strata/plugin/frame.hpp>
+#include <strata/plugin/parameter.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -45,7 +45,7 @@ struct NodeSetup {
 // What the GL-thread hooks receive.
 struct GpuContext {
   ShaderLibrary* shaders = nullptr;
-  PageCache* pages = nullptr;  // where paged layers attach (strata/paged_raster_layer.hpp)
+  PageCache* pages = nullptr;  // where paged layers attach (strata/plugin/paged_raster_layer.hpp)
 };
 
 // One node of a pipeline. The scheduler calls, in this order:

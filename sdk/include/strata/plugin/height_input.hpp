@@ -7,9 +7,9 @@
 
 #include <strata/body.hpp>
 #include <strata/error.hpp>
-#include <strata/parameter.hpp>
-#include <strata/parameter_bindings.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/parameter.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/port.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

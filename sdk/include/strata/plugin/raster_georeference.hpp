@@ -3,7 +3,7 @@
 #include <memory>
 #include <strata/export.hpp>
 
-#include <strata/projection.hpp>
+#include <strata/plugin/projection.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -21,9 +21,9 @@ const char* toString(ParameterType type);
 
 using ParameterValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
 
-// One parameter of a node type or of the scene (strata/scene_settings.hpp), declared once: validation,
+// One parameter of a node type or of the scene (strata/host/scene_settings.hpp), declared once: validation,
 // error messages, `strata plugins --describe`, docs/reference/ and the viewer's controls all derive from this
-// declaration. Nodes read their values typed, through ParameterBindings (strata/parameter_bindings.hpp).
+// declaration. Nodes read their values typed, through ParameterBindings (strata/plugin/parameter_bindings.hpp).
 struct ParameterDeclaration {
   std::string name;
   ParameterType type = ParameterType::Real;

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include <strata/parameter.hpp>
-#include <strata/port.hpp>
+#include <strata/plugin/parameter.hpp>
+#include <strata/plugin/port.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

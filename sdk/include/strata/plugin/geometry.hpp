@@ -24,7 +24,7 @@ class SurfaceGeometry {
  public:
   virtual ~SurfaceGeometry() = default;
   virtual const Framebuffer& gbuffer() const = 0;
-  // The heights its surface keeps within, once the node has opened (strata/height_input.hpp settles them):
+  // The heights its surface keeps within, once the node has opened (strata/plugin/height_input.hpp settles them):
   // the page cache measures distances to the ground they bound (groundLevelNear). The bare sphere: {0, 0}.
   virtual HeightRange heights() const { return {}; }
   // On the GL thread, after the frame: GPU times wait for the GPU to finish it.

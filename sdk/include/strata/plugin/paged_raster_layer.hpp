@@ -3,9 +3,9 @@
 #include <strata/export.hpp>
 #include <string>
 
-#include <strata/healpix_pyramid.hpp>
-#include <strata/page_cache.hpp>
-#include <strata/projected_raster_layer.hpp>
+#include <strata/host/page_cache.hpp>
+#include <strata/plugin/healpix_pyramid.hpp>
+#include <strata/plugin/projected_raster_layer.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -28,7 +28,7 @@ class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
 
-  // A HEALPix pyramid's pages' true ranges (strata/healpix_pyramid.hpp), which faceNodeValues() reads.
+  // A HEALPix pyramid's pages' true ranges (strata/plugin/healpix_pyramid.hpp), which faceNodeValues() reads.
   void setPageRanges(std::shared_ptr<const healpix::PageRanges> ranges) { pageRanges_ = std::move(ranges); }
   std::optional<ValueRange> faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const override;
 

@@ -6,10 +6,10 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
-#include <strata/colour_settings.hpp>
 #include <strata/date.hpp>
-#include <strata/page_cache_settings.hpp>
-#include <strata/parameter_bindings.hpp>
+#include <strata/host/colour_settings.hpp>
+#include <strata/host/page_cache_settings.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -8,11 +8,11 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
-#include <strata/colour_settings.hpp>
 #include <strata/date.hpp>
 #include <strata/error.hpp>
-#include <strata/page_cache_settings.hpp>
-#include <strata/parameter.hpp>
+#include <strata/host/colour_settings.hpp>
+#include <strata/host/page_cache_settings.hpp>
+#include <strata/plugin/parameter.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -56,7 +56,7 @@ Pipeline loadPipeline(const std::filesystem::path& file, const std::vector<std::
 Pipeline parsePipeline(const std::string& text, const std::filesystem::path& fileName,
                        const std::vector<std::string>& overrides, const PluginRegistry& registry);
 
-// The files `pipeline` reads, for OutputRules::inputs (strata/output_file.hpp): its own file, every file a
+// The files `pipeline` reads, for OutputRules::inputs (strata/host/output_file.hpp): its own file, every file a
 // node's parameter names, and what GDAL reads for those (a VRT's sources, overviews, side-cars). A time
 // series' file-name pattern (composite.temporal_blend's `files`) names no one file and is not expanded.
 std::vector<std::filesystem::path> pipelineInputFiles(const Pipeline& pipeline);

@@ -7,11 +7,11 @@
 #include <vector>
 
 #include <strata/camera.hpp>
-#include <strata/geometry.hpp>
-#include <strata/output.hpp>
-#include <strata/page_cache.hpp>
-#include <strata/pipeline.hpp>
-#include <strata/plugin_registry.hpp>
+#include <strata/host/page_cache.hpp>
+#include <strata/host/pipeline.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/output.hpp>
+#include <strata/plugin/plugin_registry.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -44,7 +44,7 @@ class Engine {
   // Validates the pipeline, makes its nodes, reads their data (worker threads) and creates their GPU
   // resources. Throws strata::Error; on failure the previously loaded pipeline stays.
   void load(const std::filesystem::path& pipeline, const std::vector<std::string>& overrides = {});
-  // The same for a pipeline built in code (strata/pipeline_builder.hpp). The engine keeps a copy of the
+  // The same for a pipeline built in code (strata/host/pipeline_builder.hpp). The engine keeps a copy of the
   // builder, which set() and reload() build again; later changes to `pipeline` reach the engine only
   // through another load().
   void load(const PipelineBuilder& pipeline, const std::vector<std::string>& overrides = {});

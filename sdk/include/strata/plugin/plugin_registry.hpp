@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <strata/plugin.hpp>
+#include <strata/plugin/plugin.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -4,15 +4,15 @@
 #include <strata/export.hpp>
 #include <string>
 
-#include <strata/layer.hpp>
-#include <strata/projection.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/projection.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
 struct SphericalCap;
 
-// What some layers can do beyond sampling (strata/layer.hpp), each a small interface a layer class opts
+// What some layers can do beyond sampling (strata/plugin/layer.hpp), each a small interface a layer class opts
 // into by deriving from it beside Layer. Consumers ask `layer.as<Capability>()` and do without where a
 // layer lacks it. A function that names a GLSL function may still return "" where this layer's data do not
 // allow it (a time series whose steps lack it, a paged raster that does not lie on HEALPix faces). A new
@@ -53,7 +53,7 @@ class RegionalValueLayer {
   virtual std::optional<ValueRange> valuesWithin(const SphericalCap& cap) const = 0;
 };
 
-// Layers whose texels are the faces of a HEALPix pyramid (strata/healpix_pyramid.hpp), which can be sampled by
+// Layers whose texels are the faces of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp), which can be sampled by
 // face point with no projection on the way (geometry.healpix does so):
 //   vec4 <faceSamplingFunction()>(vec3 point, float footprint)
 // point = (face, x, y) as healpix::FacePoint has them, footprint = the face-point distance to the next

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include <strata/parameter.hpp>
+#include <strata/plugin/parameter.hpp>
 
 namespace strata {
 

@@ -7,10 +7,10 @@
 
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
-#include <strata/page_cache_settings.hpp>
-#include <strata/page_demand.hpp>
-#include <strata/page_source.hpp>
-#include <strata/raster_georeference.hpp>
+#include <strata/host/page_cache_settings.hpp>
+#include <strata/plugin/page_demand.hpp>
+#include <strata/plugin/page_source.hpp>
+#include <strata/plugin/raster_georeference.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

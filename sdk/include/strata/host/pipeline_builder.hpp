@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-#include <strata/pipeline.hpp>
+#include <strata/host/pipeline.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {

@@ -7,7 +7,7 @@
 
 #include <glm/vec2.hpp>
 
-#include <strata/page_pyramid.hpp>
+#include <strata/plugin/page_pyramid.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -45,7 +45,7 @@ class PageSource {
   virtual void read(const LevelWindow& window, std::span<std::byte> texels) const = 0;
 
   // A pyramid whose levels are several grids side by side (the twelve faces of a HEALPix pyramid,
-  // strata/healpix_pyramid.hpp) says which grid page `key` lies on, and which level texel lies on the body
+  // strata/plugin/healpix_pyramid.hpp) says which grid page `key` lies on, and which level texel lies on the body
   // next to a texel one beyond that grid's edge: the cache fills the page's border from there, so that
   // filtering runs on across the edge. By default a level is one grid, and beyond its edges the border
   // repeats the edge (or wraps round, for a raster around the body).

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include <strata/layer.hpp>
+#include <strata/plugin/layer.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
