@@ -92,7 +92,7 @@ void strataTile(benchmark::State& state, const fs::path& input, const fs::path& 
   });
 }
 
-// issue 3's command line, with the creation options core/src/tiling/tile_raster.cpp passes, so that both
+// issue 3's command line, with the creation options core/tiling/src/tile_raster.cpp passes, so that both
 // write the same file. strata tile also sets GDAL_NUM_THREADS while it translates (docs/benchmarks.md).
 void gdalTranslateCog(benchmark::State& state, const fs::path& input, const fs::path& output, double megapixels) {
   const std::vector<std::string> arguments{"-of", "COG",

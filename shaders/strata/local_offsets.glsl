@@ -1,7 +1,7 @@
 // A surface point's offset from the frame's reference (View::reference) in the reference's tangent plane:
 // east and north on the unit sphere, from its longitude/latitude offsets (SurfacePoint::fromReference),
 // computed from small quantities only, so that float keeps them to micrometres on Earth. The CPU side
-// inverts it (core/src/layers/local_texture_frame.cpp, lonlatOfTangentOffset). `latitude`: the reference's
+// inverts it (core/layers/src/local_texture_frame.cpp, lonlatOfTangentOffset). `latitude`: the reference's
 // sin and cos.
 //   e = cos(lat) sin(dlon)
 //   n = cos(lat0) sin(lat) - sin(lat0) cos(lat) cos(dlon) = sin(dlat) + 2 sin(lat0) cos(lat) sin^2(dlon / 2)

@@ -1,7 +1,7 @@
-// Virtual texturing through the page cache ([Kooima 2008, §4.3.2]; core/src/paging). A layer's pages
+// Virtual texturing through the page cache ([Kooima 2008, §4.3.2]; core/paging). A layer's pages
 // sit in an atlas (a 2D array texture of 514x514 slots: 512 texels and a 1-texel border) and the index
 // of page references, shared by every layer, says which slot holds each page of each level, or which
-// coarser page stands in for it (core/src/paging/page_index.hpp gives the layout).
+// coarser page stands in for it (core/paging/src/page_index.hpp gives the layout).
 #include "strata/texel_address.glsl"
 
 uniform usampler2D strata_pageIndex;

@@ -123,5 +123,17 @@ TEST(ColourConfig, TakesTheConfigOcioNamesAndSaysWhatIsWrongWithIt) {
   EXPECT_EQ(ColourConfig::load({}, kWhere).origin(), "Strata's built-in config");
 }
 
+// A folder given as the config (the folder a config came in) is named as a folder, with the file to give.
+TEST(ColourConfig, RefusesAFolderAsTheConfig) {
+  test::TemporaryDirectory directory;
+  try {
+    ColourConfig::load(directory.path(), kWhere);
+    ADD_FAILURE() << "a folder was taken for a config";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.problem(), "'" + directory.path().string() + "' is a folder, not an OpenColorIO config");
+    EXPECT_NE(error.fix().find("config.ocio"), std::string::npos) << error.fix();
+  }
+}
+
 }  // namespace
 }  // namespace strata

@@ -1,4 +1,4 @@
-// Assembling a page with its border (core/src/paging/page_assembly.hpp) from a source whose texels say
+// Assembling a page with its border (core/paging/include/paging/page_assembly.hpp) from a source whose texels say
 // where they are: value = level column, coverage = level row + 1. A source may have one column it cannot
 // read, as a damaged tile would.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// A raster's block ranges placed on the body (core/src/layers/block_caps.cpp): whatever texel a point of a
+// A raster's block ranges placed on the body (core/layers/src/block_caps.cpp): whatever texel a point of a
 // cap samples, the cap's values hold it, and a cap that reaches beyond the raster says so; small caps get
 // ranges about as tight as their blocks. Through the built-in projections' own inverse and forward, on a
 // global longitude/latitude map seen across its seam and at its poles, a polar stereographic cap map and a
@@ -137,7 +137,7 @@ TEST(BlockCaps, ASmallMapTellsCapsInsideFromCapsAcrossItsEdge) {
   EXPECT_FALSE(beyond.counted());
 }
 
-// A HEALPix pyramid's strip of faces bounded by its stored page ranges (core/src/layers/healpix_page_caps.cpp),
+// A HEALPix pyramid's strip of faces bounded by its stored page ranges (core/layers/src/healpix_page_caps.cpp),
 // as an icosahedral patch over it asks them: every texel a cap's points sample lies in the cap's range, across
 // the faces' edges (where the strip puts faces side by side that do not meet on the body) and at the poles,
 // and caps over face 4, which holds no data, find gaps. The values rise from south to north, so that a cap's

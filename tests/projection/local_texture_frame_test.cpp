@@ -1,4 +1,4 @@
-// Texture coordinates about the frame's reference (core/src/layers/local_texture_frame.cpp), in double
+// Texture coordinates about the frame's reference (core/layers/src/local_texture_frame.cpp), in double
 // through the built-in projections' own forward mappings: within the reach the polynomial agrees with the
 // exact mapping to the tolerance asked (a hundredth of a texel of a 1 cm raster 10 m across), in the
 // coordinates that reach farther on the ground.

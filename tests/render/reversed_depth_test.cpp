@@ -1,4 +1,4 @@
-// Reversed depth with an infinite far plane (core/src/view/view.cpp) keeps surfaces apart at every scale a
+// Reversed depth with an infinite far plane (core/foundation/src/view.cpp) keeps surfaces apart at every scale a
 // view spans: a 1 cm step 2 m below the eye, and surfaces 1 km apart 20,000 km away. Two planes facing the
 // eye are drawn through the view's own projection into the DEPTH32F target the generators use, with the
 // engine's GL_GREATER test and [0, 1] clip depth, in both orders: the nearer must win each time.

@@ -1,6 +1,7 @@
 # Checks docs/architecture.md's map of libraries and folders against the tree: every folder the picture
-# under "## Libraries and folders" names exists, and every library target the build declares (add_library
-# or strata_add_plugin outside tests/ and sdk/examples/) is named on the page. Run by ctest as
+# under "## Libraries and folders" names exists, and every library target the build declares
+# (add_library, strata_concern_library or strata_add_plugin outside tests/ and sdk/examples/) is named on
+# the page. Run by ctest as
 #   cmake -DSOURCE_DIR=<repository> -P architecture_map.cmake
 file(READ ${SOURCE_DIR}/docs/architecture.md page)
 string(FIND "${page}" "## Libraries and folders" start)
@@ -32,7 +33,7 @@ foreach(list_file IN LISTS lists)
   endif()
   file(READ ${SOURCE_DIR}/${list_file} text)
   string(REGEX REPLACE "#[^\n]*" "" text "${text}")
-  string(REGEX MATCHALL "(add_library|strata_add_plugin)\\([A-Za-z0-9_-]+[ \t\n]+[A-Za-z]" declarations "${text}")
+  string(REGEX MATCHALL "(add_library|strata_add_plugin|strata_concern_library)\\([A-Za-z0-9_-]+[ \t\n]+[A-Za-z]" declarations "${text}")
   foreach(declaration IN LISTS declarations)
     string(REGEX REPLACE "^[a-z_]+\\(([A-Za-z0-9_-]+).*" "\\1" target "${declaration}")
     if(NOT declaration MATCHES "\\(${target}[ \t\n]+(ALIAS|IMPORTED)" AND NOT page MATCHES "[^A-Za-z0-9_-]${target}[^A-Za-z0-9_-]")

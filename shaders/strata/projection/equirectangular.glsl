@@ -1,5 +1,5 @@
 // Equirectangular projection, geographic (+proj=longlat) and PROJ's eqc: the single-precision form of
-// core/src/projection/equirectangular.cpp (Snyder 1987, ch. 12, eqs. 12-1 and 12-2).
+// core/projection/src/equirectangular.cpp (Snyder 1987, ch. 12, eqs. 12-1 and 12-2).
 #include "strata/constants.glsl"
 
 // Map coordinates of `lonlat` over the radius (a, or degrees per radian); .z is 1 everywhere.

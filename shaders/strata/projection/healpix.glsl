@@ -1,5 +1,5 @@
 // HEALPix projection [Calabretta & Roukema 2007], sphere or ellipsoid through the authalic latitude as PROJ
-// maps it: the single-precision form of core/src/projection/healpix.cpp.
+// maps it: the single-precision form of core/projection/src/healpix.cpp.
 #include "strata/constants.glsl"
 
 // atanh(u) / u by its Taylor series, for |u| < 0.4 (eccentricities of planets): GLSL's atanh goes through

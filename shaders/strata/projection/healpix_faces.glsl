@@ -1,6 +1,6 @@
 // The strip of a HEALPix pyramid (strata/plugin/healpix_pyramid.hpp): face + face point x, and face point y, of a
 // longitude/latitude, through the planar HEALPix projection (healpix.glsl) and then faceOfPlane of
-// core/src/projection/healpix_grid.cpp: on the plane the faces' edge lines are straight, and a face is where
+// core/projection/src/healpix_grid.cpp: on the plane the faces' edge lines are straight, and a face is where
 // an ascending and a descending one cross.
 #include "strata/projection/healpix.glsl"
 

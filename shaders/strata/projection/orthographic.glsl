@@ -1,5 +1,5 @@
 // Orthographic projection, sphere or ellipsoid (EPSG Guidance Note 7-2, section 3.3.5): the single-precision
-// form of core/src/projection/orthographic.cpp.
+// form of core/projection/src/orthographic.cpp.
 #include "strata/constants.glsl"
 
 // Map coordinates of `lonlat` over a; .z is 0 on the far side.

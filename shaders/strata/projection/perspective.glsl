@@ -1,5 +1,5 @@
 // Near-side perspective, vertical or tilted (PROJ's nsper and tpers; Snyder 1987, ch. 23), on the sphere of
-// radius a: the single-precision form of core/src/projection/perspective.cpp.
+// radius a: the single-precision form of core/projection/src/perspective.cpp.
 #include "strata/constants.glsl"
 
 // Map coordinates of `lonlat` over the horizon's radius; .z is 0 beyond the horizon and behind the camera.

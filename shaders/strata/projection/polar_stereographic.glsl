@@ -1,5 +1,5 @@
 // Polar stereographic projection, north or south, sphere or ellipsoid: the single-precision form of
-// core/src/projection/polar_stereographic.cpp (Snyder 1987, ch. 21, eqs. 21-33, 21-34 with t of eq. 15-9).
+// core/projection/src/polar_stereographic.cpp (Snyder 1987, ch. 21, eqs. 21-33, 21-34 with t of eq. 15-9).
 #include "strata/constants.glsl"
 
 // Map coordinates of `lonlat` over a; .z is 0 at the opposite pole, which lies at infinity.
