@@ -43,7 +43,8 @@ BenchFrame measuredFrame(Engine& engine, double frameMs, std::uint64_t uploadedB
           .uploadedThisFrame = pages.uploaded - uploadedBefore,
           .gpuBytes = pages.gpuBytes,
           .processBytes = processResidentBytes(),
-          .openFiles = openFileCount()};
+          .openFiles = openFileCount(),
+          .passes = engine.passTimes()};
 }
 
 }  // namespace

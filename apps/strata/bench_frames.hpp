@@ -33,6 +33,7 @@ struct BenchFrame {
   std::uint64_t gpuBytes = 0;      // the page cache's atlases, index and upload buffers
   std::uint64_t processBytes = 0;  // resident set of the process (VmRSS)
   int openFiles = 0;               // the process's open file descriptors (/proc/self/fd)
+  std::vector<PassTime> passes;    // each node's GPU time (Engine::passTimes)
 };
 
 // Renders `frames` frames evenly spaced in time along `path`, flown `laps` times one after another, as a

@@ -28,9 +28,10 @@ namespace {
 
 // The node's settings as a pipeline writes them, each default's reason beside it.
 struct IcosahedralSettings {
-  int patches = 300;    // Kooima 2008's np
-  int depth = 5;        // Kooima 2008's default
-  int operations = 64;  // keeps the tree's CPU time near half a millisecond and still follows a 30 Hz fly-in
+  int patches = 300;        // Kooima 2008's np, now a cap: the pixel error asks for fewer wherever it can
+  double pixelError = 1.0;  // px: an error under a pixel does not show
+  int depth = 5;            // Kooima 2008's default
+  int operations = 64;      // keeps the tree's CPU time near half a millisecond and still follows a 30 Hz fly-in
 };
 
 const ParameterBindings<IcosahedralSettings>& icosahedralParameters() {
@@ -40,7 +41,17 @@ const ParameterBindings<IcosahedralSettings>& icosahedralParameters() {
           .add(&S::patches, {.name = "patches",
                              .minimum = 20.0,
                              .maximum = 20000.0,
-                             .doc = "visible patches to keep, of about equal size on screen (300 is Kooima 2008's np)"})
+                             .doc = "the most visible patches the tree may hold, of about equal size on screen (300 is "
+                                    "Kooima 2008's np); the pixel error asks for fewer wherever it can"})
+          .add(&S::pixelError,
+               {.name = "pixel_error",
+                .minimum = 0.0,
+                .maximum = 100.0,
+                .units = "px",
+                .doc = "the geometric error a patch may show on screen, from the sphere's chords and the "
+                       "terrain's relief within it: the tree refines until no visible patch shows more, "
+                       "or it holds `patches` (1: an error under a pixel does not show)",
+                .exclusiveMinimum = true})
           .add(&S::depth, {.name = "depth",
                            .minimum = 1.0,
                            .maximum = 8.0,
@@ -112,7 +123,10 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
         radius_(setup.body->radius),
         table_(settings.depth),
         windings_(table_),
-        treeSettings_{.patches = settings.patches, .operationsPerFrame = settings.operations} {}
+        treeSettings_{.patches = settings.patches,
+                      .operationsPerFrame = settings.operations,
+                      .pixelError = settings.pixelError,
+                      .depth = settings.depth} {}
 
   void plantTree();
 

@@ -1,8 +1,10 @@
 #include "patch_tree.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 namespace strata::icosahedral {
@@ -10,8 +12,9 @@ namespace {
 
 constexpr double kFollowingStep = 0.02;  // a frame's change of the detail scale: morphs move 6 % of their way
 constexpr double kSettlingStep = 1.0;    // settle(): the scale may double or halve per round
-constexpr int kSettlingRounds = 40;      // enough for the scale to cross its whole range and settle
-constexpr double kRestingShare = 0.8;    // the count may fall to this share of `patches` before the scale grows
+constexpr int kSettlingRounds = 60;      // enough for the scale to cross its whole range, then close in
+constexpr double kSplitMargin = 1.25;    // a patch whose error shows is split this far inside its split distance,
+                                         // so that a frame's small step of the scale does not merge it again
 
 }  // namespace
 
@@ -21,18 +24,23 @@ PatchTree::PatchTree(double radius, HeightRange heights, PatchTreeSettings setti
 int PatchTree::update(std::span<const ViewVolume> views, int operations) {
   views_ = views;
   const int made = refine(operations);
-  if (made < operations) followCount(kFollowingStep);  // the count means something once the tree kept up
+  if (made < operations) followError(kFollowingStep);  // the errors mean something once the tree kept up
   views_ = {};                                         // the views are the caller's: only this call may look at them
   return made;
 }
 
+// Large steps of the detail scale first; where they stop (the splits of a large step would pass `patches`),
+// ever smaller ones, down to update()'s, so that a still view's updates find nothing left to do.
 void PatchTree::settle(std::span<const ViewVolume> views) {
   views_ = views;
+  double step = kSettlingStep;
   for (int round = 0; round < kSettlingRounds; ++round) {
     const double before = detail_;
     const int made = refine(std::numeric_limits<int>::max());
-    followCount(kSettlingStep);
-    if (made == 0 && detail_ == before) break;
+    followError(step);
+    if (made > 0 || detail_ != before) continue;
+    if (step == kFollowingStep) break;
+    step = std::max(step / 4.0, kFollowingStep);
   }
   views_ = {};
 }
@@ -159,20 +167,67 @@ int PatchTree::splitNear(int operations) {
   return made;
 }
 
-// Moves the detail scale toward `patches` visible patches by at most the factor 1 + largestStep. The count
-// grows about as the square of the scale (each level's ring of patches does), hence the square root. Over
-// `patches` it shrinks; under kRestingShare of them it grows, unless the splits that would bring would
-// pass `patches`: seen from afar, a whole level splits at once, and the count would swing between a
-// quarter and four times the aim.
-void PatchTree::followCount(double largestStep) {
+// Moves the detail scale toward the one the pixel error asks for by at most the factor 1 + largestStep. Over
+// `patches` visible patches it shrinks instead (the count grows about as the square of the scale, each level's
+// ring of patches does, hence the square root); it grows only while the splits that would bring keep within
+// `patches`: seen from afar, a whole level splits at once, and the count would swing across the cap.
+void PatchTree::followError(double largestStep) {
   const double count = std::max(visibleCount_, 1);
-  if (count > settings_.patches)
+  if (count > settings_.patches) {
     detail_ *= std::max(std::sqrt(settings_.patches / count), 1.0 / (1.0 + largestStep));
-  else if (count < kRestingShare * settings_.patches) {
-    const double grown = detail_ * std::min(std::sqrt(settings_.patches / count), 1.0 + largestStep);
-    if (visibleCount_ + 3 * splitsAt(grown) <= settings_.patches) detail_ = grown;
+  } else {
+    const double toward = std::clamp(wantedDetail(), detail_ / (1.0 + largestStep), detail_ * (1.0 + largestStep));
+    if (toward < detail_ || visibleCount_ + 3 * splitsAt(toward) <= settings_.patches) detail_ = toward;
   }
   detail_ = std::clamp(detail_, kLeastDetail, kMostDetail);
+}
+
+// The least detail scale at which every visible patch whose error would show more than the pixel error is
+// split: the visible leaves, and the parents of leaves only (an ancestor is nearer in split distances than
+// its children and is split whenever they are). Its error seen from a patch's distance, ε·ppr/d, is the
+// screen-space error of [Cignoni et al. 2003, §4.3] with the face-on distance the split measures.
+double PatchTree::wantedDetail() {
+  const double pixelsPerRadian = this->pixelsPerRadian();
+  double wanted = kLeastDetail;
+  for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
+    const PatchNode& node = topology_[id];
+    if (!node.alive || node.level >= kDeepestLevel) continue;
+    std::optional<double> distance;
+    if (node.leaf() && node.visible)
+      distance = node.distance;
+    else if (mergeable(id))
+      distance = viewedDistance(shellOf(id));
+    if (!distance || errorOf(id) * pixelsPerRadian <= settings_.pixelError * *distance) continue;
+    wanted = std::max(wanted, kSplitMargin * *distance / splitDistance(node.level, 1.0));
+  }
+  return std::min(wanted, kMostDetail);
+}
+
+// The views' finest angular resolution.
+double PatchTree::pixelsPerRadian() const {
+  double finest = 0.0;
+  for (const ViewVolume& view : views_) finest = std::max(finest, view.pixelsPerRadian());
+  return finest;
+}
+
+// The sphere's error: a chord of the vertex spacing a (rad) misses the sphere by R a^2 / 8, and so do the
+// longitude and latitude interpolated along it, except that longitude bends along a chord as the cotangent of
+// its distance θ from the pole (floored at one spacing, where the pole itself is a vertex). The terrain's: the
+// relief a spacing may hide, from the relief within the patch scaled down to one spacing as for terrain as rough
+// as Brownian relief (height differences growing as the square root of distance), an estimate since the heights
+// between two vertices are unknown: it shrinks as the patch does on smooth terrain and stays large on rough, and
+// keeps the vertices, whose normals shade the relief, within a pixel or two of each other where relief shows.
+double PatchTree::errorOf(std::int32_t id) {
+  const PatchShell shell = shellOf(id);
+  const double patchAngle = std::ldexp(kFaceEdgeAngle, -topology_[id].level);
+  const double spacing = std::ldexp(patchAngle, -settings_.depth);
+  double fromPole = std::numbers::pi;
+  for (const glm::dvec3& corner : shell.corners)
+    fromPole = std::min(fromPole, std::acos(std::min(std::abs(corner.z), 1.0)));
+  const double theta = std::max(fromPole - patchAngle, spacing);
+  const double sphere = radius_ * spacing * spacing / 8.0 * (1.0 + 1.0 / std::tan(theta));
+  const double terrain = (shell.outerRadius - shell.innerRadius) / std::sqrt(std::ldexp(1.0, settings_.depth));
+  return std::max(sphere, terrain);
 }
 
 // The visible leaves that would split at the detail scale `detail`.

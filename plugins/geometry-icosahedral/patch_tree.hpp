@@ -13,8 +13,10 @@
 namespace strata::icosahedral {
 
 struct PatchTreeSettings {
-  int patches = 300;            // visible patches to keep: [Kooima 2008, §2.4.1] sets np to about 300
+  int patches = 300;            // the most visible patches: [Kooima 2008, §2.4.1] sets np to about 300
   int operationsPerFrame = 64;  // splits and merges one frame may make: bounds the CPU's share of it
+  double pixelError = 1.0;      // px: the geometric error a patch may show; one pixel is what the eye cannot resolve
+  int depth = 5;                // the subdivisions each patch is drawn with: its vertex spacing sets its error
 };
 
 // The heights of the terrain within a patch (HeightInput::within), asked once per patch.
@@ -34,7 +36,9 @@ struct Patch {
 // size, and four siblings are merged when their parent would not be split: the largest patches in solid
 // angle split first, as in [Kooima 2008], but by a threshold on a measure each vertex also has, which is what
 // geomorphing needs (docs/geometry.md; the split distances are CDLOD's, Strugar 2009, on the sphere).
-// The detail scale follows the count of visible patches slowly toward `patches`. A patch is visible when its shell
+// The detail scale follows, slowly, the least that keeps every visible patch's projected error under
+// `pixelError` pixels (level of detail by screen-space error, [Cignoni et al. 2003, §4.3]), with `patches` as a
+// cap on the count of visible patches. A patch is visible when its shell
 // [Kooima 2008, §3.2.3] rises above the horizon and reaches into a view's frustum. Neighbouring leaves differ
 // by at most one level [Kooima 2008, §3.4.1]: a split first splits coarser neighbours, and a merge that would
 // break the rule is not made (how the tree of [Kooima 2008, §3.2.1] keeps the rule is left unsaid there).
@@ -45,12 +49,12 @@ class PatchTree {
   PatchTree(double radius, HeightRange heights, PatchTreeSettings settings = {}, PatchHeights patchHeights = {});
 
   // Reclassifies the leaves for the views, merges and splits at most `operations` times, and, when that
-  // was enough to follow the views, moves the detail scale a step toward `patches` visible patches.
+  // was enough to follow the views, moves the detail scale a step toward the one the pixel error asks for.
   // Returns the splits and merges made.
   int update(std::span<const ViewVolume> views, int operations);
   int update(std::span<const ViewVolume> views) { return update(views, settings_.operationsPerFrame); }
-  // Updates without bounds and lets the detail scale jump, until the tree holds about `patches`: for a
-  // first frame, or a still image.
+  // Updates without bounds and lets the detail scale jump, until the tree is what the pixel error asks for:
+  // for a first frame, or a still image.
   void settle(std::span<const ViewVolume> views);
 
   // The visible leaves, depth first from the icosahedron's faces.
@@ -65,14 +69,18 @@ class PatchTree {
   double splitDistance(int level) const;
   // The split distance of the icosahedron's faces: every level's is this halved `level` times.
   double splitDistanceAtLevelZero() const { return splitDistance(0); }
+  // The geometric error of a patch drawn with `depth` subdivisions, m: the larger of the sphere's error (the
+  // chords' sagitta, grown toward a pole where longitude bends fastest) and the terrain's (its relief over
+  // the patch spread over its vertex spacings).
+  double errorOf(std::int32_t id);
 
   // Splits below this level would make patches narrower than about 7 mm (the icosahedron's 7054 km
   // edges on Earth halved 30 times): finer than depth 5's vertices need for a 1 cm pattern seen from
   // 2 m, and well within what double normals resolve.
   static constexpr int kDeepestLevel = 30;
   // The detail scale's bounds, in nominal patch sizes: a patch nearest the eye is about 1 / scale rad
-  // across. Below 1 it would fill a view; beyond 64 it would cover under 2 percent of one, finer than 300
-  // patches can cover a view with.
+  // across. Below 1 it would fill a view (so the bare sphere rests at 1: about 20 patches, whatever the
+  // view); beyond 64 it would cover under 2 percent of one, finer than 300 patches can cover a view with.
   static constexpr double kLeastDetail = 1.0, kMostDetail = 64.0;
 
  private:
@@ -87,7 +95,9 @@ class PatchTree {
   void merge(std::int32_t parent);
   int mergeFar(int operations);
   int splitNear(int operations);
-  void followCount(double largestStep);
+  void followError(double largestStep);
+  double wantedDetail();
+  double pixelsPerRadian() const;
   int splitsAt(double detail) const;
   double splitDistance(int level, double detail) const;
 

@@ -16,6 +16,8 @@ class ViewVolume {
   explicit ViewVolume(const View& view);
 
   const glm::dvec3& eye() const { return eye_; }
+  // Pixels per radian at the centre of the view: what turns an angle into pixels on screen.
+  double pixelsPerRadian() const { return pixelsPerRadian_; }
   // Whether some of the shell may lie inside the frustum: false only when it is all outside one plane.
   bool mayHold(const PatchShell& shell) const;
 
@@ -25,6 +27,7 @@ class ViewVolume {
     double offset;      // inside where dot(normal, p) + offset >= 0
   };
   glm::dvec3 eye_;
+  double pixelsPerRadian_;
   std::array<Plane, 5> planes_;
 };
 

@@ -72,6 +72,12 @@ TEST_F(StrataCommandTest, BenchWritesARowPerFrameAndAPlot) {
     EXPECT_GT(row.at("process_rss_bytes"), 1.0e6) << frame;
     EXPECT_GT(row.at("gpu_bytes"), 0.0) << frame;
     EXPECT_GE(row.at("open_files"), 3.0) << "stdin, stdout and stderr at least: " << frame;
+    double passes = 0.0;  // each node's GPU time, a column per node of the pipeline
+    for (const char* node : {"global", "strip", "laid", "relief", "terrain", "frame"}) {
+      EXPECT_GE(row.at(std::string("gpu_ms_") + node), 0.0) << node << ", frame " << frame;
+      passes += row.at(std::string("gpu_ms_") + node);
+    }
+    EXPECT_GT(passes, 0.0) << frame;
     if (frame > 0) {
       EXPECT_GT(row.at("seconds"), rows[std::size_t(frame - 1)].at("seconds"));
       EXPECT_GE(row.at("pages_uploaded_total"), rows[std::size_t(frame - 1)].at("pages_uploaded_total"));

@@ -1,6 +1,7 @@
-// The patch tree (plugins/geometry-icosahedral/patch_tree.hpp) from orbit and from the ground: it keeps
-// near its number of visible patches and stays put while the view does, neighbouring leaves differ by at
-// most one level with the coarser edges flagged, and no terrain the eye can see is culled.
+// The patch tree (plugins/geometry-icosahedral/patch_tree.hpp) from orbit and from the ground: it refines
+// until no visible patch shows more than its pixel error, keeps within its number of visible patches and
+// stays put while the view does, neighbouring leaves differ by at most one level with the coarser edges
+// flagged, and no terrain the eye can see is culled.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +22,10 @@ namespace {
 constexpr double kEarth = 6371000.0;
 
 View viewFrom(const Camera& camera) { return makeView(Body{"Earth", kEarth}, camera, 1280, 720); }
+
+// No error is small enough: `patches` caps the tree wherever it looks, as it did before the tree followed the
+// error, and still does for a view whose error asks for more than the cap.
+constexpr PatchTreeSettings kCappedByPatches{.patches = 300, .pixelError = 0.0};
 
 // Settles the tree, which a still view must then leave as it is.
 void settle(PatchTree& tree, std::span<const ViewVolume> views) {
@@ -48,7 +53,7 @@ std::int32_t leafHolding(const PatchTree& tree, const std::vector<std::int32_t>&
 // Seen from afar, patches lie at nearly one distance and a whole level splits at once: the count may
 // rest anywhere from a quarter of `patches` up, but never above, and must not swing.
 TEST(PatchTree, FromOrbitItKeepsWithinItsNumberOfPatchesAndStaysPut) {
-  PatchTree tree(kEarth, {0.0, 0.0}, {.patches = 300});
+  PatchTree tree(kEarth, {0.0, 0.0}, kCappedByPatches);
   const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 20, .lat = 40, .altitude = 2e7}))};
   settle(tree, views);
   EXPECT_LE(tree.visibleCount(), 300);
@@ -58,11 +63,47 @@ TEST(PatchTree, FromOrbitItKeepsWithinItsNumberOfPatchesAndStaysPut) {
 
 // Low and tilted, the patches span many distances: the count follows the detail scale closely.
 TEST(PatchTree, FromALowTiltedViewItKeepsNearItsNumberOfPatches) {
-  PatchTree tree(kEarth, {0.0, 0.0}, {.patches = 300});
+  PatchTree tree(kEarth, {0.0, 0.0}, kCappedByPatches);
   const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 20, .lat = 40, .altitude = 3e3, .tilt = 70}))};
   settle(tree, views);
   EXPECT_LE(tree.visibleCount(), 300) << "detail scale " << tree.splitDistanceAtLevelZero() / (kEarth * kFaceEdgeAngle);
   EXPECT_GE(tree.visibleCount(), 240);
+}
+
+// The whole Earth from 20,000 km, the peer benchmark's view (a): the bare sphere's chords miss it by under a
+// pixel with the icosahedron's faces themselves, so the tree rests at the least detail, a fifth of the
+// patches it kept when it filled `patches` (about 300, each 4^5 triangles).
+TEST(PatchTree, FromOrbitTheBareSphereTakesAFifthOfItsPatches) {
+  const std::vector<ViewVolume> views{ViewVolume(viewFrom({.lon = 10, .lat = 20, .altitude = 2e7, .fov = 36}))};
+  PatchTree byError(kEarth, {0.0, 0.0});
+  settle(byError, views);
+  PatchTree byCount(kEarth, {0.0, 0.0}, kCappedByPatches);
+  settle(byCount, views);
+  std::printf("visible patches: %d by the pixel error, %d up to the cap\n", byError.visibleCount(),
+              byCount.visibleCount());
+  EXPECT_LE(byError.visibleCount(), 60);
+  EXPECT_LE(5 * byError.visibleCount(), byCount.visibleCount());
+}
+
+// Every visible leaf's error, seen from its face-on distance, is at most the pixel error, from orbit, from a
+// low tilted view and near a pole, with a cap the tree never reaches.
+TEST(PatchTree, NoVisiblePatchShowsMoreThanItsPixelError) {
+  constexpr PatchTreeSettings settings{.patches = 20000, .pixelError = 2.0};
+  for (const Camera& camera : {Camera{.lon = 10, .lat = 20, .altitude = 2e6, .fov = 36},
+                               Camera{.lon = 137.4, .lat = -4.6, .altitude = 5e3, .tilt = 60, .fov = 36},
+                               Camera{.lon = -60, .lat = 88, .altitude = 1e5, .tilt = 30, .fov = 36}}) {
+    const View view = viewFrom(camera);
+    PatchTree tree(kEarth, {0.0, 0.0}, settings);
+    settle(tree, std::vector<ViewVolume>{ViewVolume(view)});
+    ASSERT_LT(tree.visibleCount(), settings.patches);
+    const double pixelsPerRadian = ViewVolume(view).pixelsPerRadian();
+    for (const std::int32_t id : leaves(tree)) {
+      const PatchNode& node = tree.topology()[id];
+      if (!node.visible || node.level == PatchTree::kDeepestLevel) continue;
+      EXPECT_LE(tree.errorOf(id) * pixelsPerRadian / node.distance, settings.pixelError)
+          << "level " << node.level << " at lat " << camera.lat;
+    }
+  }
 }
 
 // A patch splits where its face-on distance falls below its split distance, and its level's split distance halves
@@ -117,6 +158,16 @@ int deepestLevel(const PatchTree& tree) {
   return level;
 }
 
+// Each patch's heights, as geometry.icosahedral takes them from source.procedural (planet_bounds.hpp):
+// the planet's bounds over the patch's sampled cap, within the whole range.
+PatchHeights proceduralHeights(const procedural::PlanetModel& planet, const HeightRange& range) {
+  return [&planet, range](const SphericalTriangle& corners) {
+    const SphericalCap cap = sampledCap(corners, 5);
+    const procedural::HeightBounds bounds = procedural::heightsWithin(planet, cap.centre, cap.angle);
+    return HeightRange{std::max(bounds.least, range.lowest), std::min(bounds.greatest, range.highest)};
+  };
+}
+
 // The same fly-in with each patch measured on the planet's own heights (source.procedural's bounds over its
 // sampled cap, planet_bounds.hpp), as geometry.icosahedral measures it. The path falls geometrically in
 // altitude above the sphere, so measured from the ground its last frame closes from 733 m to 300 m above it
@@ -127,16 +178,12 @@ TEST(PatchTree, OnTheProceduralPlanetsOwnHeightsTheFlyInSplitsAsAboveTheGround) 
   const FlyInPath flight{-74.0, 4.0, 8672.0};
   const procedural::PlanetModel planet({}, FlyInPath::kMarsRadius);
   const HeightRange range{-12000.0, 12000.0};
-  const PatchHeights own = [&](const SphericalTriangle& corners) {
-    const SphericalCap cap = sampledCap(corners, 5);
-    const procedural::HeightBounds bounds = procedural::heightsWithin(planet, cap.centre, cap.angle);
-    return HeightRange{std::max(bounds.least, range.lowest), std::min(bounds.greatest, range.highest)};
-  };
+  const PatchHeights own = proceduralHeights(planet, range);
   const Body mars{"Mars", FlyInPath::kMarsRadius};
   const auto viewsAt = [&](const Camera& camera) {
     return std::vector<ViewVolume>{ViewVolume(makeView(mars, camera, 1280, 720, range))};
   };
-  PatchTree tree(FlyInPath::kMarsRadius, range, {}, own);
+  PatchTree tree(FlyInPath::kMarsRadius, range, kCappedByPatches, own);
   tree.settle(viewsAt(flight.cameraAt(0)));
   int busiest = 0;
   for (int frame = 1; frame < FlyInPath::kFramesEachWay - 1; ++frame)
@@ -148,14 +195,34 @@ TEST(PatchTree, OnTheProceduralPlanetsOwnHeightsTheFlyInSplitsAsAboveTheGround) 
   settle(tree, viewsAt(bottom));
   Camera aboveSphere = bottom;
   aboveSphere.altitude -= planet.height(directionOf(glm::radians(glm::dvec2(bottom.lon, bottom.lat))));
-  PatchTree bare(FlyInPath::kMarsRadius, {0.0, 0.0});
+  PatchTree bare(FlyInPath::kMarsRadius, {0.0, 0.0}, kCappedByPatches);
   settle(bare, std::vector<ViewVolume>{ViewVolume(makeView(mars, aboveSphere, 1280, 720))});
-  PatchTree onSphere(FlyInPath::kMarsRadius, range);
+  PatchTree onSphere(FlyInPath::kMarsRadius, range, kCappedByPatches);
   settle(onSphere, viewsAt(bottom));
   std::printf("deepest levels: %d on the planet's heights, %d %.0f m above the sphere, %d measured on the sphere\n",
               deepestLevel(tree), deepestLevel(bare), aboveSphere.altitude, deepestLevel(onSphere));
   EXPECT_NEAR(deepestLevel(tree), deepestLevel(bare), 1);
   EXPECT_LE(deepestLevel(onSphere), deepestLevel(tree) - 4);
+}
+
+// Rough terrain close by shows its relief as error, which the bare sphere has not: at the fly-in's last
+// frame, 300 m above the procedural planet's summit, the tree on the planet's own heights takes more than
+// twice the patches of the bare sphere seen from as high above it, each with the default pixel error.
+TEST(PatchTree, RoughTerrainCloseByTakesMorePatchesThanTheBareSphere) {
+  const FlyInPath flight{-74.0, 4.0, 8672.0};
+  const procedural::PlanetModel planet({}, FlyInPath::kMarsRadius);
+  const HeightRange range{-12000.0, 12000.0};
+  const Body mars{"Mars", FlyInPath::kMarsRadius};
+  const Camera bottom = flight.cameraAt(FlyInPath::kFramesEachWay - 1);
+  PatchTree rough(FlyInPath::kMarsRadius, range, {}, proceduralHeights(planet, range));
+  settle(rough, std::vector<ViewVolume>{ViewVolume(makeView(mars, bottom, 1280, 720, range))});
+  Camera aboveSphere = bottom;
+  aboveSphere.altitude -= planet.height(directionOf(glm::radians(glm::dvec2(bottom.lon, bottom.lat))));
+  PatchTree bare(FlyInPath::kMarsRadius, {0.0, 0.0});
+  settle(bare, std::vector<ViewVolume>{ViewVolume(makeView(mars, aboveSphere, 1280, 720))});
+  std::printf("visible patches: %d over the rough planet, %d over the bare sphere\n", rough.visibleCount(),
+              bare.visibleCount());
+  EXPECT_GT(rough.visibleCount(), 2 * bare.visibleCount());
 }
 
 // Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser
@@ -205,13 +272,13 @@ TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
       if (std::acos(std::min(glm::dot(corner, below), 1.0)) * kEarth > 20e3) return terrain;
     return HeightRange{3000.0, 3000.0};
   };
-  PatchTree bare(kEarth, {0.0, 0.0});
+  PatchTree bare(kEarth, {0.0, 0.0}, kCappedByPatches);
   settle(bare, std::vector<ViewVolume>{ViewVolume(viewFrom(overSphere))});
   const std::vector<ViewVolume> plateauViews{
       ViewVolume(makeView(Body{"Earth", kEarth}, overPlateau, 1280, 720, terrain))};
-  PatchTree own(kEarth, terrain, {}, plateau);
+  PatchTree own(kEarth, terrain, kCappedByPatches, plateau);
   settle(own, plateauViews);
-  PatchTree whole(kEarth, terrain);
+  PatchTree whole(kEarth, terrain, kCappedByPatches);
   settle(whole, plateauViews);
   EXPECT_GE(deepestLevel(bare), 20);
   EXPECT_NEAR(deepestLevel(own), deepestLevel(bare), 1);
@@ -256,7 +323,7 @@ TEST(PatchTree, NoTerrainTheEyeCanSeeIsCulled) {
 }
 
 TEST(PatchTree, EveryViewIsServedAtOnce) {
-  PatchTree tree(kEarth, {0.0, 0.0});
+  PatchTree tree(kEarth, {0.0, 0.0}, kCappedByPatches);
   const std::vector<ViewVolume> views{
       ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 90, .tilt = 80})),
       ViewVolume(viewFrom({.lon = 0, .lat = 0, .altitude = 5e5, .heading = 270, .tilt = 80}))};

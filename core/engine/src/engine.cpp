@@ -217,6 +217,11 @@ GeometryStatistics Engine::geometryStatistics() const {
   return sum;
 }
 
+std::vector<PassTime> Engine::passTimes() const {
+  if (!impl_->graph) throw std::logic_error("Engine::passTimes() before a pipeline was loaded");
+  return impl_->graph->passTimes();
+}
+
 const PageCacheStatistics& Engine::pageCacheStatistics() const {
   if (!impl_->pages) throw std::logic_error("Engine::pageCacheStatistics() before a pipeline was loaded");
   return impl_->pages->statistics();

@@ -65,6 +65,7 @@ NodeGraph::NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, W
   make(pipeline, registry);
   open(workers);
   createResources(gpu);
+  clock_.emplace(entries_.size());
 }
 
 void NodeGraph::make(const Pipeline& pipeline, const PluginRegistry& registry) {
@@ -116,8 +117,19 @@ void NodeGraph::prepare(const FrameState& frame, WorkerPool& workers) {
 }
 
 void NodeGraph::render(const FrameState& frame) {
-  for (Entry& entry : entries_)
+  clock_->mark(0);
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    Entry& entry = entries_[i];
     guardNode(*entry.description, "failed to render a frame", [&] { entry.node->render(frame); });
+    clock_->mark(i + 1);
+  }
+}
+
+std::vector<PassTime> NodeGraph::passTimes() const {
+  const std::vector<double> milliseconds = clock_->milliseconds();
+  std::vector<PassTime> passes;
+  for (std::size_t i = 0; i < entries_.size(); ++i) passes.push_back({entries_[i].description->id, milliseconds[i]});
+  return passes;
 }
 
 void NodeGraph::update(const std::string& id, const ParameterSet& parameters) {

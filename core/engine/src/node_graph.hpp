@@ -1,11 +1,14 @@
 #pragma once
 #include <memory>
+#include <optional>
 #include <vector>
 
+#include <strata/host/engine.hpp>
 #include <strata/host/pipeline.hpp>
 #include <strata/plugin/node.hpp>
 #include <strata/plugin/plugin_registry.hpp>
 
+#include "pass_clock.hpp"
 #include "worker_pool.hpp"
 
 namespace strata {
@@ -19,7 +22,9 @@ class NodeGraph {
   NodeGraph(const Pipeline& pipeline, const PluginRegistry& registry, WorkerPool& workers, GpuContext& gpu);
 
   void prepare(const FrameState& frame, WorkerPool& workers);
+  // Renders the nodes in order, each pass between two GPU timestamps.
   void render(const FrameState& frame);
+  std::vector<PassTime> passTimes() const;
   // Hands node `id` its changed live parameters (Node::update), on the GL thread between frames.
   void update(const std::string& id, const ParameterSet& parameters);
   FrameOutput& output() const { return *output_; }
@@ -39,6 +44,7 @@ class NodeGraph {
 
   std::vector<Entry> entries_;
   FrameOutput* output_ = nullptr;
+  std::optional<PassClock> clock_;  // one pass per entry
 };
 
 }  // namespace strata

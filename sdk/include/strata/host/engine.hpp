@@ -23,6 +23,12 @@ struct EngineOptions {
   unsigned workerThreads = 0;                            // 0: one per hardware thread
 };
 
+// One node's render pass in a frame: the GPU time from the end of the pass before it to the end of its own.
+struct PassTime {
+  std::string node;    // the node's id in the pipeline
+  double gpuMs = 0.0;  // GL_TIMESTAMP queries around the pass (the page uploads before the first are not in it)
+};
+
 // Per-frame timings and counts.
 struct FrameStatistics {
   std::uint64_t frame = 0;
@@ -85,6 +91,8 @@ class Engine {
   const FrameStatistics& statistics() const;
   // The geometry generators' statistics for the last frame, summed; waits for the GPU to finish it.
   GeometryStatistics geometryStatistics() const;
+  // Each node's render pass in the last frame, in the order they ran; waits for the GPU to finish it.
+  std::vector<PassTime> passTimes() const;
   const PageCacheStatistics& pageCacheStatistics() const;
 
  private:
