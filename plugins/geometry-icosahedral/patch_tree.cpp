@@ -187,7 +187,7 @@ void PatchTree::followError(double largestStep) {
 // its children and is split whenever they are). Its error seen from a patch's distance, ε·ppr/d, is the
 // screen-space error of [Cignoni et al. 2003, §4.3] with the face-on distance the split measures.
 double PatchTree::wantedDetail() {
-  const double pixelsPerRadian = this->pixelsPerRadian();
+  const double finest = pixelsPerRadian();
   double wanted = kLeastDetail;
   for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
     const PatchNode& node = topology_[id];
@@ -197,7 +197,7 @@ double PatchTree::wantedDetail() {
       distance = node.distance;
     else if (mergeable(id))
       distance = viewedDistance(shellOf(id));
-    if (!distance || errorOf(id) * pixelsPerRadian <= settings_.pixelError * *distance) continue;
+    if (!distance || errorOf(id) * finest <= settings_.pixelError * *distance) continue;
     wanted = std::max(wanted, kSplitMargin * *distance / splitDistance(node.level, 1.0));
   }
   return std::min(wanted, kMostDetail);
