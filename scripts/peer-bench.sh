@@ -9,13 +9,14 @@
 # Usage: scripts/peer-bench.sh RUNNER_DIR [--out DIR] [--frames N] [--msaa N]
 #   --out     where the runner's copy, its results and Strata's CSVs go (default out/peer-bench)
 #   --frames  frames timed per view, both sides (default 50: the runner's sync frames)
-#   --msaa    CesiumJS's MSAA samples (default 0: none, as Strata draws today; the peer's own default is 4)
+#   --msaa    MSAA samples on both sides: CesiumJS's msaaSamples and Strata's output.image antialiasing
+#             (0: none; default 4, both sides' own default)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 usage() { echo "usage: scripts/peer-bench.sh RUNNER_DIR [--out DIR] [--frames N] [--msaa N]" >&2; exit 2; }
 [[ $# -ge 1 ]] || usage
 runner=$(realpath "$1"); shift
-out=out/peer-bench; frames=50; msaa=0
+out=out/peer-bench; frames=50; msaa=4
 while [[ $# -gt 0 ]]; do
   case $1 in
     --out) out=$2; shift 2 ;;
@@ -47,9 +48,11 @@ median_of() { # csv column
   awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next } { print $c }' "$1" |
     sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
 }
+antialiasing=$([[ $msaa -le 1 ]] && echo none || echo "${msaa}x")
 for pipeline in peer_imagery demo; do
   for v in a b c; do
-    build/bin/strata bench "pipelines/$pipeline.yaml" --path "$out/path-$v.yaml" --size 1280x720 \
+    build/bin/strata bench "pipelines/$pipeline.yaml" --set "nodes.frame.antialiasing=$antialiasing" \
+      --path "$out/path-$v.yaml" --size 1280x720 \
       --frames "$frames" --average 1 --overwrite -o "$out/$pipeline-$v.csv" >"$out/$pipeline-$v.log" 2>&1
   done
 done
@@ -57,7 +60,7 @@ done
 # The table: CesiumJS's sync frame (render + readPixels) against Strata's frame (render + glFinish).
 cesium_ms() { node -e "const r = require('$out/cesium/out/peer/results.json'); console.log(r.summary['$1'].sync.medianOfMedians.toFixed(1))"; }
 {
-  echo "| view | CesiumJS ms (MSAA $msaa) | Strata image ms | triangles | ratio | Strata demo ms | ratio |"
+  echo "| view | CesiumJS ms (MSAA $msaa) | Strata image ms (antialiasing $antialiasing) | triangles | ratio | Strata demo ms | ratio |"
   echo "| --- | --- | --- | --- | --- | --- | --- |"
   for v in a b c; do
     c=$(cesium_ms "$v"); i=$(median_of "$out/peer_imagery-$v.csv" frame_ms); d=$(median_of "$out/demo-$v.csv" frame_ms)

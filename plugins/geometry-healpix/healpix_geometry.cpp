@@ -143,7 +143,7 @@ void HealpixGeometry::useSurface(const View& view) {
 void HealpixGeometry::render(const FrameState& frame) {
   const View& view = frame.view;
   buffers_->upload(batch_);
-  gbuffer_.begin(view.width, view.height);
+  gbuffer_.begin(view.width, view.height, samples());
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray

@@ -163,7 +163,7 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   buffers_->subdivide();
   subdivisionTimer_->end();
 
-  gbuffer_.begin(frame.view.width, frame.view.height);
+  gbuffer_.begin(frame.view.width, frame.view.height, samples());
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // The far side of the body faces away: half the triangles need no fragments. From below the highest

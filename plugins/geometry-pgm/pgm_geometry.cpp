@@ -99,7 +99,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
           gpu.shaders->expand("geometry-pgm/pgm_surface_buffer.frag")}});
     castBuffers_.emplace(grid_);
     mesh_.emplace(grid_);
-    visibleRadius_.emplace(*gpu.shaders);
+    visibleRadius_.emplace(*gpu.shaders, samples());
     gridTimer_.emplace();
     rasterisationTimer_.emplace();
   }
@@ -183,7 +183,7 @@ void PgmGeometry::makeGrid(const View& view) {
 }
 
 void PgmGeometry::rasterise(const View& view) {
-  gbuffer_.begin(view.width, view.height);
+  gbuffer_.begin(view.width, view.height, samples());
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray

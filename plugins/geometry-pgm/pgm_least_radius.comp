@@ -8,7 +8,10 @@
 // texel to the bit, whatever order the workgroups finish in.
 layout(local_size_x = 16, local_size_y = 16) in;
 
-layout(binding = 0) uniform sampler2D heights;  // m above the body's radius; +infinity uncovered
+// m above the body's radius, +infinity uncovered: STRATA_HEIGHTS_SAMPLER is sampler2D, or sampler2DMS where the
+// frame is multisampled, STRATA_HEIGHT_SAMPLES samples per pixel.
+layout(binding = 0) uniform STRATA_HEIGHTS_SAMPLER heights;
+const int kSamples = STRATA_HEIGHT_SAMPLES;
 layout(std430, binding = 0) buffer Least { uint least; };  // orderedBits of the minimum; cleared to +inf's
 
 uniform ivec2 size;  // the part of `heights` to reduce, from its corner (0, 0)
@@ -17,6 +20,13 @@ const uint kGroupSize = 256u;
 const float kUncovered = uintBitsToFloat(0x7f800000u);  // +infinity
 
 shared float partial[kGroupSize];
+
+// The least of a pixel's samples: every one of them shows terrain.
+float leastOfPixel(ivec2 texel) {
+  float least = texelFetch(heights, texel, 0).r;
+  for (int i = 1; i < kSamples; ++i) least = min(least, texelFetch(heights, texel, i).r);
+  return least;
+}
 
 // A uint that compares as the float does: positives get the sign bit set, negatives are flipped whole.
 uint orderedBits(float value) {
@@ -27,7 +37,7 @@ uint orderedBits(float value) {
 void main() {
   const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   const uint index = gl_LocalInvocationIndex;
-  partial[index] = all(lessThan(texel, size)) ? texelFetch(heights, texel, 0).r : kUncovered;
+  partial[index] = all(lessThan(texel, size)) ? leastOfPixel(texel) : kUncovered;
   memoryBarrierShared();
   barrier();
   for (uint stride = kGroupSize / 2u; stride > 0u; stride /= 2u) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "reference_spheres.hpp"
 
@@ -25,9 +26,11 @@ float fromOrderedBits(std::uint32_t ordered) {
 
 }  // namespace
 
-VisibleRadius::VisibleRadius(const ShaderLibrary& library)
+VisibleRadius::VisibleRadius(const ShaderLibrary& library, int samples)
     : program_({{GL_COMPUTE_SHADER, "geometry-pgm/pgm_least_radius.comp",
-                 library.expand("geometry-pgm/pgm_least_radius.comp")}}) {
+                 library.expand("geometry-pgm/pgm_least_radius.comp",
+                                {{"STRATA_HEIGHTS_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
+                                 {"STRATA_HEIGHT_SAMPLES", std::to_string(samples)}})}}) {
   glCreateBuffers(1, &least_);
   glNamedBufferStorage(least_, sizeof(std::uint32_t), nullptr, 0);
   const GLbitfield access = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;

@@ -25,12 +25,14 @@ class VisibleRadius {
   // Frames a reduction may stay in flight: a fifth reduce() drops the oldest unread one.
   static constexpr std::size_t kSlots = 4;
 
-  explicit VisibleRadius(const ShaderLibrary& library);
+  // For a height texture of `samples` per pixel (multisampled where over 1).
+  VisibleRadius(const ShaderLibrary& library, int samples);
   ~VisibleRadius();
   VisibleRadius(const VisibleRadius&) = delete;
   VisibleRadius& operator=(const VisibleRadius&) = delete;
 
-  // Reduces texels [0, width) x [0, height) of the R32F texture `heights`, drawn for frame `frame`.
+  // Reduces texels [0, width) x [0, height) of the R32F texture `heights` (every sample of each), drawn for
+  // frame `frame`.
   void reduce(GLuint heights, int width, int height, std::uint64_t frame = 0);
 
   // The least height (m) of the most recent reduction the GPU has finished; the one before while the

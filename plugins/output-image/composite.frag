@@ -9,9 +9,14 @@
 // vec4 strataDisplay(vec4): scene-linear to the display's encoding, OpenColorIO's code (docs/colour.md).
 STRATA_DISPLAY_GLSL
 
-uniform sampler2D surfaceBuffer;
-uniform sampler2D shadingBuffer;
-uniform sampler2D depthBuffer;
+// The deferred buffers' sampler: sampler2D, or sampler2DMS where the frame is multisampled (output.image's
+// `antialiasing`: STRATA_SAMPLES per pixel); texelFetch's last argument is then the sample, else the level 0.
+#define DeferredBuffer STRATA_DEFERRED_SAMPLER
+const int kSamples = STRATA_SAMPLES;
+
+uniform DeferredBuffer surfaceBuffer;
+uniform DeferredBuffer shadingBuffer;
+uniform DeferredBuffer depthBuffer;
 
 uniform vec3 lightDirection;  // planet-fixed, unit, toward the light
 uniform float ambient;        // share of light that reaches surfaces facing away
@@ -24,21 +29,24 @@ out vec4 colour;
 
 // The change of longitude and latitude to the next pixel along `step`, computed from the deferred
 // coordinates ([Kooima 2008, §3.4.3]) rather than by the dFdx of §4.1.2: the 2 pi jump where patches unwrap
-// longitude differently is removed, and at the body's edge the pixel on the other side is used.
-vec2 footprint(sampler2D surfaces, sampler2D shading, ivec2 pixel, ivec2 step, vec2 here) {
-  vec4 ahead = texelFetch(shading, pixel + step, 0);
-  vec2 d = ahead.a > 0.0 ? texelFetch(surfaces, pixel + step, 0).xy - here
-                         : here - texelFetch(surfaces, pixel - step, 0).xy;
-  return vec2(d.x - TWO_PI * round(d.x / TWO_PI), d.y);
+// longitude differently is removed. Of the pixels ahead and behind, the nearer on the surface is taken: at
+// the body's edge or a silhouette the other one lies on the sky or on farther ground. Sample `s` of each.
+vec2 footprint(DeferredBuffer surfaces, DeferredBuffer shading, ivec2 pixel, int s, ivec2 step, vec2 here) {
+  vec2 ahead = texelFetch(surfaces, pixel + step, s).xy - here, behind = here - texelFetch(surfaces, pixel - step, s).xy;
+  ahead.x -= TWO_PI * round(ahead.x / TWO_PI);
+  behind.x -= TWO_PI * round(behind.x / TWO_PI);
+  if (texelFetch(shading, pixel + step, s).a == 0.0) return behind;
+  if (texelFetch(shading, pixel - step, s).a == 0.0) return ahead;
+  return dot(ahead, ahead) < dot(behind, behind) ? ahead : behind;
 }
 
-// The surface point a geometry's deferred buffers (`surfaces`, `shading`) hold at `pixel`.
-SurfacePoint surfacePointAt(sampler2D surfaces, sampler2D shading, ivec2 pixel) {
-  vec4 s = texelFetch(surfaces, pixel, 0);
-  vec2 lonlat = referenceLonlat + s.xy;
-  float nz = sign(lonlat.y) * sqrt(max(0.0, 1.0 - s.z * s.z - s.w * s.w));  // the sign of z is that of latitude
-  return SurfacePoint(lonlat, vec3(s.z, s.w, nz), footprint(surfaces, shading, pixel, ivec2(1, 0), s.xy),
-                      footprint(surfaces, shading, pixel, ivec2(0, 1), s.xy), s.xy);
+// The surface point sample `s` of a geometry's deferred buffers (`surfaces`, `shading`) holds at `pixel`.
+SurfacePoint surfacePointAt(DeferredBuffer surfaces, DeferredBuffer shading, ivec2 pixel, int s) {
+  vec4 here = texelFetch(surfaces, pixel, s);
+  vec2 lonlat = referenceLonlat + here.xy;
+  float nz = sign(lonlat.y) * sqrt(max(0.0, 1.0 - here.z * here.z - here.w * here.w));  // z's sign is latitude's
+  return SurfacePoint(lonlat, vec3(here.z, here.w, nz), footprint(surfaces, shading, pixel, s, ivec2(1, 0), here.xy),
+                      footprint(surfaces, shading, pixel, s, ivec2(0, 1), here.xy), here.xy);
 }
 
 // The light on a surface of shading normal `normal`.
@@ -48,21 +56,67 @@ float lightOn(vec3 normal) {
 
 STRATA_SURFACE_LAYERS_GLSL
 
-// vec3 translucentOver(ivec2 pixel, vec3 colour, float depth): the translucent surfaces nearer than `depth`
-// laid over `colour` (plugins/output-image/translucent_surfaces.cpp).
+// vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth): the translucent surfaces nearer than
+// `depth` at sample `s` laid over `colour` (plugins/output-image/translucent_surfaces.cpp).
 STRATA_TRANSLUCENT_GLSL
 
+// The light leaving sample `s` of `pixel`, scene-linear and clamped to what the display shows; in `reach` the
+// longer of its footprint's steps (rad), 0 off the body.
+vec3 lightAt(ivec2 pixel, int s, out float reach) {
+  vec4 shading = texelFetch(shadingBuffer, pixel, s);
+  reach = 0.0;
+  if (shading.a == 0.0) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
+  SurfacePoint p = surfacePointAt(surfaceBuffer, shadingBuffer, pixel, s);
+  reach = max(length(p.lonlatDx), length(p.lonlatDy));
+  vec4 accumulated = vec4(0.0);
+  STRATA_SURFACE_LAYERS_ACCUMULATE
+  vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
+  float depth = texelFetch(depthBuffer, pixel, s).r;
+  return clamp(translucentOver(pixel, s, albedo * lightOn(shading.xyz), depth), 0.0, 1.0);
+}
+
+// Samples of one surface lie within a pixel's footprint of each other: each holds its triangle's values at
+// the pixel's centre, extrapolated where that triangle covers only part of the pixel, which across the edge
+// between two triangles of one surface moves them by a small share of a footprint. Across a silhouette
+// (nearer ground before farther) they lie farther apart.
+const float kSameSurface = 1.0;
+
+// Whether sample `s` of `pixel` shows the same surface as sample `t` within `reach` (rad): both on the body or
+// both off it, and on the body lying together.
+bool sameSurface(ivec2 pixel, int s, int t, float reach) {
+  bool onBody = texelFetch(shadingBuffer, pixel, s).a > 0.0;
+  if (onBody != (texelFetch(shadingBuffer, pixel, t).a > 0.0)) return false;
+  if (!onBody) return true;
+  vec2 apart = texelFetch(surfaceBuffer, pixel, s).xy - texelFetch(surfaceBuffer, pixel, t).xy;
+  apart.x -= TWO_PI * round(apart.x / TWO_PI);
+  return length(apart) <= reach;
+}
+
+// The samples of `pixel` not in `done` (a bit each) that show the surface sample `s` shows, within `reach`.
+int samplesLike(ivec2 pixel, int s, float reach, int done) {
+  int like = 1 << s;
+  for (int t = 0; t < kSamples; ++t)
+    if ((done & (1 << t)) == 0 && t != s && sameSurface(pixel, t, s, reach)) like |= 1 << t;
+  return like;
+}
+
+// Multisample antialiasing in a deferred frame: the first sample not yet accounted for is composed, and counts
+// for every sample showing its surface (within its own footprint); until none is left. The pixel is the mean of
+// its samples' light (a box filter in scene-linear light). Inside a surface that is one composition; only
+// pixels across the body's edge or a silhouette compose more, and a loop of as many rounds as surfaces costs
+// them alone, where a branch per sample would cost every pixel on a SIMD renderer (llvmpipe runs both ways).
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  vec4 shadingSample = texelFetch(shadingBuffer, pixel, 0);
-  vec3 lit = background;
-  if (shadingSample.a > 0.0) {
-    SurfacePoint p = surfacePointAt(surfaceBuffer, shadingBuffer, pixel);
-    vec4 accumulated = vec4(0.0);
-    STRATA_SURFACE_LAYERS_ACCUMULATE
-    vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
-    lit = albedo * lightOn(shadingSample.xyz);
-  }
-  float depth = shadingSample.a > 0.0 ? texelFetch(depthBuffer, pixel, 0).r : 0.0;
-  colour = vec4(strataDisplay(vec4(clamp(translucentOver(pixel, lit, depth), 0.0, 1.0), 1.0)).rgb, 1.0);
+  const int every = (1 << kSamples) - 1;
+  vec3 sum = vec3(0.0);
+  int done = 0;
+  do {
+    int s = findLSB(~done & every);
+    float reach;
+    vec3 light = lightAt(pixel, s, reach);
+    int like = samplesLike(pixel, s, kSameSurface * reach, done);
+    sum += float(bitCount(like)) * light;
+    done |= like;
+  } while (done != every);
+  colour = vec4(strataDisplay(vec4(sum / float(kSamples), 1.0)).rgb, 1.0);
 }

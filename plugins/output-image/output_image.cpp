@@ -1,7 +1,9 @@
 // output.image: composes the surface layers per pixel over a geometry's deferred texturing buffer, lights
 // the result and delivers 8-bit sRGB frames (PNG files through `strata render`, or a window).
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include <glm/gtc/constants.hpp>
 
@@ -29,6 +31,9 @@ struct ImageSettings {
   double lightElevation = 45.0;
   double ambient = 0.25;
   double opacity = 0.5;  // what lies behind shows as clearly as the translucent surface itself
+  // Four samples: the limb's and silhouettes' steps fall to a quarter, and llvmpipe and every GL 4.5 GPU
+  // offer them (GL_MAX_SAMPLES is at least 4).
+  int samples = 4;
   std::string display;
   std::string view;
 };
@@ -66,6 +71,11 @@ const ParameterBindings<ImageSettings>& imageParameters() {
                              .maximum = 1.0,
                              .doc = "how much of what lies behind each translucent surface it hides",
                              .live = true})
+          .choice(&S::samples,
+                  {.name = "antialiasing",
+                   .doc = "multisample antialiasing, samples per pixel: the body's edge and silhouettes drawn "
+                          "without steps; only pixels across them compose more than once"},
+                  {{"none", 1}, {"2x", 2}, {"4x", 4}, {"8x", 8}})
           .add(&S::display, {.name = "display",
                              .doc = "the OpenColorIO display the frame is for; empty: the config's default "
                                     "(Strata's: sRGB)"})
@@ -80,12 +90,16 @@ class ImageOutput : public Node, public FrameOutput {
   explicit ImageOutput(const NodeSetup& setup)
       : geometry_(setup.input("geometry")->geometry()),
         settings_(imageParameters().read(setup.parameters)),
+        samplesWhere_(imageParameters().where(setup.parameters, &ImageSettings::samples)),
         displayGlsl_(displayGlsl(setup)),
         translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
+    geometry_->requestSamples(settings_.samples);
+    translucent_.requestSamples(settings_.samples);
   }
 
   void createResources(GpuContext& gpu) override {
+    const int samples = checkedSamples();
     std::string layersGlsl, accumulate;
     for (const Layer* layer : surface_) {
       layersGlsl += layer->glslOnce();
@@ -94,13 +108,16 @@ class ImageOutput : public Node, public FrameOutput {
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
                     (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
     }
-    program_ = ShaderProgram(
-        {{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
-         {GL_FRAGMENT_SHADER, "output-image/composite.frag",
-          gpu.shaders->expand("output-image/composite.frag", {{"STRATA_DISPLAY_GLSL", displayGlsl_},
-                                                              {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                                                              {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                                                              {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+    program_ =
+        ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
+                       {GL_FRAGMENT_SHADER, "output-image/composite.frag",
+                        gpu.shaders->expand("output-image/composite.frag",
+                                            {{"STRATA_DEFERRED_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
+                                             {"STRATA_SAMPLES", std::to_string(samples)},
+                                             {"STRATA_DISPLAY_GLSL", displayGlsl_},
+                                             {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                             {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                                             {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
   }
 
@@ -148,6 +165,26 @@ class ImageOutput : public Node, public FrameOutput {
         imageParameters().where(setup.parameters, view.empty() ? &ImageSettings::display : &ImageSettings::view));
   }
 
+  // The samples per pixel of the geometries' buffers: what this node asked for, or more where another reader
+  // asked for more. Throws strata::Error at `antialiasing` where the GL offers fewer, or where the translucent
+  // geometries were asked for other samples than the opaque one.
+  int checkedSamples() const {
+    const int samples = geometry_->samples();
+    GLint colour = 1, depth = 1;
+    glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &colour);
+    glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depth);
+    const int offered = std::min(colour, depth);
+    if (samples > offered)
+      throw Error(
+          samplesWhere_,
+          "this GL draws at most " + std::to_string(offered) + " samples per pixel, not " + std::to_string(samples),
+          "set antialiasing to " + std::to_string(offered) + "x or fewer");
+    if (!translucent_.sampledAs(samples))
+      throw Error(samplesWhere_, "the translucent geometries draw other samples per pixel than the opaque one",
+                  "give every output that reads these geometries the same antialiasing");
+    return samples;
+  }
+
   // The light, given in the view (azimuth clockwise from the top of the image, elevation above the image
   // plane toward the viewer), turned into planet-fixed axes.
   glm::vec3 lightDirection(const View& view) const {
@@ -160,6 +197,7 @@ class ImageOutput : public Node, public FrameOutput {
 
   SurfaceGeometry* geometry_;
   ImageSettings settings_;
+  SourceLocation samplesWhere_;  // the node's `antialiasing`, for errors about it
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
   TranslucentSurfaces translucent_;

@@ -1,5 +1,7 @@
 #include "translucent_surfaces.hpp"
 
+#include <algorithm>
+
 #include <strata/gl/shader_program.hpp>
 #include <strata/plugin/geometry.hpp>
 #include <strata/plugin/layer.hpp>
@@ -25,21 +27,29 @@ TranslucentSurfaces::TranslucentSurfaces(const NodeSetup& setup) {
                 "give one colour layer per translucent geometry, in the same order");
 }
 
+void TranslucentSurfaces::requestSamples(int samples) {
+  for (SurfaceGeometry* geometry : geometries_) geometry->requestSamples(samples);
+}
+
+bool TranslucentSurfaces::sampledAs(int samples) const {
+  return std::ranges::all_of(geometries_, [samples](const SurfaceGeometry* g) { return g->samples() == samples; });
+}
+
 // The colour of translucent surface i at `pixel`, lit as the opaque one is, and its layer's coverage: where
 // that has no data the surface is not there (its geometry holds the bare sphere).
 std::string TranslucentSurfaces::colourOf(std::size_t i) const {
   const std::string n = index(i);
   return "vec4 translucentColour" + n +
-         "(ivec2 pixel) {\n"
+         "(ivec2 pixel, int s) {\n"
          "  SurfacePoint p = surfacePointAt(translucentSurface" +
          n + ", translucentShading" + n +
-         ", pixel);\n"
+         ", pixel, s);\n"
          "  vec4 v = " +
          layers_[i]->samplingFunction() +
          "(p);\n"
          "  return vec4(v.rgb * lightOn(texelFetch(translucentShading" +
          n +
-         ", pixel, 0).xyz), v.a);\n"
+         ", pixel, s).xyz), v.a);\n"
          "}\n";
 }
 
@@ -51,11 +61,11 @@ std::string TranslucentSurfaces::over() const {
   for (std::size_t i = 0; i < geometries_.size(); ++i) {
     const std::string k = index(i);
     depths += "  d[" + k + "] = texelFetch(translucentShading" + k +
-              ", pixel, 0).a > 0.0 ? texelFetch(translucentDepth" + k + ", pixel, 0).r : 0.0;\n  order[" + k +
+              ", pixel, s).a > 0.0 ? texelFetch(translucentDepth" + k + ", pixel, s).r : 0.0;\n  order[" + k +
               "] = " + k + ";\n";
-    colours += "    if (order[k] == " + k + ") c = translucentColour" + k + "(pixel);\n";
+    colours += "    if (order[k] == " + k + ") c = translucentColour" + k + "(pixel, s);\n";
   }
-  return "vec3 translucentOver(ivec2 pixel, vec3 colour, float depth) {\n"
+  return "vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth) {\n"
          "  float d[" +
          n +
          "];\n"
@@ -80,12 +90,13 @@ std::string TranslucentSurfaces::over() const {
 }
 
 std::string TranslucentSurfaces::glsl() const {
-  if (geometries_.empty()) return "vec3 translucentOver(ivec2 pixel, vec3 colour, float depth) { return colour; }\n";
+  if (geometries_.empty())
+    return "vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth) { return colour; }\n";
   std::string code = "uniform float translucentOpacity;\n";
   for (std::size_t i = 0; i < geometries_.size(); ++i)
-    code += layers_[i]->glslOnce() + "uniform sampler2D translucentSurface" + index(i) +
-            ";\nuniform sampler2D translucentShading" + index(i) + ";\nuniform sampler2D translucentDepth" + index(i) +
-            ";\n" + colourOf(i);
+    code += layers_[i]->glslOnce() + "uniform DeferredBuffer translucentSurface" + index(i) +
+            ";\nuniform DeferredBuffer translucentShading" + index(i) + ";\nuniform DeferredBuffer translucentDepth" +
+            index(i) + ";\n" + colourOf(i);
   return code + over();
 }
 

@@ -24,8 +24,13 @@ class TranslucentSurfaces {
   // the node when the counts differ).
   explicit TranslucentSurfaces(const NodeSetup& setup);
 
+  // Asks each geometry for `samples` per pixel (SurfaceGeometry::requestSamples); whether each draws `samples`.
+  void requestSamples(int samples);
+  bool sampledAs(int samples) const;
+
   // What composite.frag's STRATA_TRANSLUCENT_GLSL becomes: the layers' GLSL and
-  //   vec3 translucentOver(ivec2 pixel, vec3 colour, float depth)
+  //   vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth)
+  // for sample `s` of `pixel`.
   std::string glsl() const;
   // Binds each geometry's buffers and layer, and the opacity: how much of what lies behind each it hides.
   void bind(ShaderProgram& program, TextureUnits& units, double opacity) const;

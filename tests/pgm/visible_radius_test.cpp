@@ -10,7 +10,9 @@
 #include <random>
 #include <vector>
 
+#include <strata/gl/framebuffer.hpp>
 #include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
 #include <strata/gl/texture.hpp>
 
 #include "reference_spheres.hpp"
@@ -75,7 +77,7 @@ class PgmVisibleRadius : public ::testing::Test {
 };
 
 TEST_F(PgmVisibleRadius, FindsThePlantedMinimumOnAScreen) {
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   for (unsigned seed : {1u, 2u, 3u}) {
     const Heights heights = randomHeights(1280, 720, -8123.4567f, seed);
     radius.reduce(heights.texture.id(), 1280, 720);
@@ -90,13 +92,13 @@ TEST_F(PgmVisibleRadius, FindsAPositiveMinimum) {
   for (float& texel : raised)
     if (texel != 12.5f && texel != kUncovered) texel = 13.0f + (texel + 8000.0f);
   glTextureSubImage2D(heights.texture.id(), 0, 0, 0, 1280, 720, GL_RED, GL_FLOAT, raised.data());
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   radius.reduce(heights.texture.id(), 1280, 720);
   EXPECT_EQ(finished(radius), std::optional<double>(12.5f));
 }
 
 TEST_F(PgmVisibleRadius, HandlesSizesThatDoNotFillAWorkgroup) {
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   const int sizes[][2] = {{1, 1}, {3, 5}, {1281, 721}, {17, 1}, {1, 33}};
   unsigned seed = 10;
   for (const auto& [width, height] : sizes) {
@@ -114,15 +116,40 @@ TEST_F(PgmVisibleRadius, ReducesOnlyThePartAsked) {
   texels[std::size_t(28) * 40 + 38] = 7.0f;   // the last texel inside
   Texture texture(GL_R32F, 40, 30);
   glTextureSubImage2D(texture.id(), 0, 0, 0, 40, 30, GL_RED, GL_FLOAT, texels.data());
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   radius.reduce(texture.id(), 39, 29);
   EXPECT_EQ(finished(radius), std::optional<double>(7.0));
   radius.reduce(texture.id(), 40, 30);
   EXPECT_EQ(finished(radius), std::optional<double>(-1.0));
 }
 
+// In a multisampled frame (output.image's antialiasing) every sample counts: a height held by one sample of
+// one pixel, the others higher, is the least.
+TEST_F(PgmVisibleRadius, FindsAMinimumHeldByOneSampleOfOnePixel) {
+  constexpr int kSamples = 4;
+  const Framebuffer heights(64, 48, {GL_R32F}, 0, kSamples);
+  const float cleared[4] = {300.0f, 0.0f, 0.0f, 0.0f};
+  glClearNamedFramebufferfv(heights.id(), GL_COLOR, 0, cleared);
+  const ShaderProgram planting({{GL_VERTEX_SHADER, "strata/fullscreen.vert", library_.expand("strata/fullscreen.vert")},
+                                {GL_FRAGMENT_SHADER, "planting.frag",
+                                 "#version 450 core\nout float height;\nvoid main() { height = -42.5; }\n"}});
+  heights.bind();
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(37, 21, 1, 1);
+  glEnable(GL_SAMPLE_MASK);
+  glSampleMaski(0, 1u << 2);
+  planting.use();
+  const FullscreenTriangle triangle;
+  triangle.draw();
+  glDisable(GL_SAMPLE_MASK);
+  glDisable(GL_SCISSOR_TEST);
+  VisibleRadius radius(library_, kSamples);
+  radius.reduce(heights.color(0).id(), 64, 48);
+  EXPECT_EQ(finished(radius), std::optional<double>(-42.5));
+}
+
 TEST_F(PgmVisibleRadius, GivesNothingBeforeTheFirstReductionOrWhenNothingIsCovered) {
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   EXPECT_EQ(finished(radius), std::nullopt);
   const Heights covered = randomHeights(1280, 720, -8100.0f, 5);
   radius.reduce(covered.texture.id(), 1280, 720);
@@ -138,7 +165,7 @@ TEST_F(PgmVisibleRadius, ReadsBackWithoutWaiting) {
   const Heights first = randomHeights(1280, 720, -8001.0f, 6), second = randomHeights(1280, 720, -8002.0f, 7);
   for (bool warm : {false, true}) {
     SCOPED_TRACE(warm);
-    VisibleRadius radius(library_);
+    VisibleRadius radius(library_, 1);
     if (warm) {  // a finished value is kept while the next one runs
       radius.reduce(first.texture.id(), 1280, 720);
       ASSERT_EQ(finished(radius), leastOf(first));
@@ -162,7 +189,7 @@ TEST_F(PgmVisibleRadius, ReadsBackWithoutWaiting) {
 
 // More reductions in flight than slots: the oldest unread ones are dropped, the newest still arrives.
 TEST_F(PgmVisibleRadius, KeepsTheNewestWhenTheRingComesRound) {
-  VisibleRadius radius(library_);
+  VisibleRadius radius(library_, 1);
   std::vector<Heights> frames;
   for (unsigned frame = 0; frame < 7; ++frame)
     frames.push_back(randomHeights(320, 180, -8000.5f - float(frame), 20 + frame));

@@ -46,7 +46,7 @@ std::string pipelineWith(const std::string& geometry) {
          "  terrain: {type: " +
          geometry +
          ", height: relief, lowest: -240000, highest: 240000}\n"
-         "  frame: {type: output.image, geometry: terrain, surface: [colours]}\n";
+         "  frame: {type: output.image, geometry: terrain, surface: [colours], antialiasing: none}\n";
 }
 
 class GeneratorAgreement : public ::testing::TestWithParam<std::string> {};

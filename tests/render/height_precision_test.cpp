@@ -161,7 +161,7 @@ TEST_P(HeightPrecision, QuarterMetreDemLiesWithinOneCentimetreFromTenMetres) {
                           "  terrain: {type: " +
                           geometry +
                           ", height: strip}\n"
-                          "  frame: {type: output.image, geometry: terrain, shading: none}\n");
+                          "  frame: {type: output.image, geometry: terrain, shading: none, antialiasing: none}\n");
   engine->load(pipeline);
   const FrameOutput& output = engine->renderComplete(kSize, kSize);
   ASSERT_NE(output.surface(), nullptr);

@@ -11,7 +11,8 @@
 // material as the floor), and, where the cut has an edge, the wall sloping across it (the upper layer's
 // face, green). A vertical wall (no edge) is not judged: the mesh samples the step at its vertices.
 //
-// Judged: pixels farther than kBand pixels from any pixel expected to show something else, since a
+// Judged: each pixel's centre, as the reference is (so without antialiasing, which would average the samples
+// around it), where it lies farther than kBand pixels from any pixel expected to show something else, since a
 // generator's mesh samples the region's boundary at its vertices, some kilometres apart (with a band of 3
 // pixels geometry.healpix showed 6 pixels of the rim wrong; with 6, no generator shows any). Tolerance: 2
 // levels per channel (the colours are exact 8-bit sRGB, decoded to linear and encoded again). Measured on
@@ -165,7 +166,7 @@ class LayerPeel : public ::testing::TestWithParam<std::string> {
            "  middle-globe: " +
            globe +
            "middle}\n"
-           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none" +
+           "  frame: {type: output.image, geometry: globe, surface: [coloured], shading: none, antialiasing: none" +
            cut.frame + "}\n";
   }
 

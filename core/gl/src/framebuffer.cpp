@@ -6,19 +6,20 @@
 
 namespace strata {
 
-Framebuffer::Framebuffer(int width, int height, const std::vector<GLenum>& colorFormats, GLenum depthFormat)
-    : width_(width), height_(height) {
+Framebuffer::Framebuffer(int width, int height, const std::vector<GLenum>& colorFormats, GLenum depthFormat,
+                         int samples)
+    : width_(width), height_(height), samples_(samples) {
   glCreateFramebuffers(1, &id_);
   std::vector<GLenum> drawBuffers;
   for (GLenum format : colorFormats) {
-    colors_.emplace_back(format, width, height);
+    colors_.push_back(Texture::multisampled(format, width, height, samples));
     auto attachment = static_cast<GLenum>(GL_COLOR_ATTACHMENT0 + drawBuffers.size());
     glNamedFramebufferTexture(id_, attachment, colors_.back().id(), 0);
     drawBuffers.push_back(attachment);
   }
   glNamedFramebufferDrawBuffers(id_, static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
   if (depthFormat) {
-    depth_ = Texture(depthFormat, width, height);
+    depth_ = Texture::multisampled(depthFormat, width, height, samples);
     glNamedFramebufferTexture(id_, GL_DEPTH_ATTACHMENT, depth_.id(), 0);
   }
   GLenum status = glCheckNamedFramebufferStatus(id_, GL_FRAMEBUFFER);
@@ -35,6 +36,7 @@ Framebuffer::Framebuffer(Framebuffer&& other) noexcept
     : id_(std::exchange(other.id_, 0)),
       width_(other.width_),
       height_(other.height_),
+      samples_(other.samples_),
       colors_(std::move(other.colors_)),
       depth_(std::move(other.depth_)) {}
 
@@ -42,6 +44,7 @@ Framebuffer& Framebuffer::operator=(Framebuffer&& other) noexcept {
   std::swap(id_, other.id_);
   std::swap(width_, other.width_);
   std::swap(height_, other.height_);
+  std::swap(samples_, other.samples_);
   std::swap(colors_, other.colors_);
   std::swap(depth_, other.depth_);
   return *this;

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <cstring>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include <strata/error.hpp>
 #include <strata/plugin/output.hpp>
@@ -40,6 +42,9 @@ std::vector<unsigned char> readPixels(const Framebuffer& framebuffer) {
 }
 
 std::vector<float> readDepth(const Framebuffer& framebuffer) {
+  if (framebuffer.samples() > 1)
+    throw std::invalid_argument("readDepth: the framebuffer holds " + std::to_string(framebuffer.samples()) +
+                                " depths per pixel; draw it with antialiasing: none to read depths at pixel centres");
   const int width = framebuffer.width(), height = framebuffer.height();
   std::vector<float> bottomUp(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
   glPixelStorei(GL_PACK_ALIGNMENT, 4);

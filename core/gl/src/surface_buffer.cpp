@@ -11,11 +11,12 @@ constexpr int kSharedAttachments = 2;  // the surface point and the shading norm
 
 SurfaceBuffer::SurfaceBuffer(std::vector<Attachment> extra) : extra_(std::move(extra)) {}
 
-void SurfaceBuffer::begin(int width, int height) {
-  if (framebuffer_.width() != width || framebuffer_.height() != height || framebuffer_.id() == 0) {
+void SurfaceBuffer::begin(int width, int height, int samples) {
+  if (framebuffer_.width() != width || framebuffer_.height() != height || framebuffer_.samples() != samples ||
+      framebuffer_.id() == 0) {
     std::vector<GLenum> formats{GL_RGBA32F, GL_RGBA16F};
     for (const Attachment& attachment : extra_) formats.push_back(attachment.format);
-    framebuffer_ = Framebuffer(width, height, formats, GL_DEPTH_COMPONENT32F);
+    framebuffer_ = Framebuffer(width, height, formats, GL_DEPTH_COMPONENT32F, samples);
   }
   framebuffer_.bind();
   const float noSurface[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far

@@ -8,11 +8,12 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// An off-screen render target: colour attachments of the given formats and an optional depth attachment.
+// An off-screen render target: colour attachments of the given formats and an optional depth attachment,
+// `samples` per pixel (multisampled textures where it is over 1).
 class Framebuffer {
  public:
   Framebuffer() = default;
-  Framebuffer(int width, int height, const std::vector<GLenum>& colorFormats, GLenum depthFormat = 0);
+  Framebuffer(int width, int height, const std::vector<GLenum>& colorFormats, GLenum depthFormat = 0, int samples = 1);
   ~Framebuffer();
   Framebuffer(Framebuffer&& other) noexcept;
   Framebuffer& operator=(Framebuffer&& other) noexcept;
@@ -22,6 +23,7 @@ class Framebuffer {
   GLuint id() const { return id_; }
   int width() const { return width_; }
   int height() const { return height_; }
+  int samples() const { return samples_; }
   const Texture& color(int index) const { return colors_.at(index); }
   const Texture& depth() const { return depth_; }
   // Binds for drawing and sets the viewport to the whole target.
@@ -31,6 +33,7 @@ class Framebuffer {
   GLuint id_ = 0;
   int width_ = 0;
   int height_ = 0;
+  int samples_ = 1;
   std::vector<Texture> colors_;
   Texture depth_;
 };

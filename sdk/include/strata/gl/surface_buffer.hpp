@@ -15,7 +15,9 @@ namespace strata {
 //   color(1) RGBA16F: shading normal (planet-fixed, of the displaced surface) xyz, coverage (1 on the body)
 //   depth    DEPTH32F: reversed depth (1 at the near plane), 0 where nothing was drawn
 // then any attachments of the generator's own (`extra`), which readers of the buffer ignore. The shaders
-// write the first two through "strata/surface_buffer.frag".
+// write the first two through "strata/surface_buffer.frag". With more than one sample per pixel
+// (multisample antialiasing, SurfaceGeometry::samples) every attachment is multisampled: a fragment's values,
+// interpolated at the pixel's centre, go to each sample it covers, and depth is tested per sample.
 class SurfaceBuffer {
  public:
   // An attachment of a generator's own after the shared ones, and the value that clears it.
@@ -26,9 +28,10 @@ class SurfaceBuffer {
 
   explicit SurfaceBuffer(std::vector<Attachment> extra = {});
 
-  // Before drawing a frame of width x height: (re)makes the attachments when the size changed, binds the
-  // buffer with its viewport and clears it: no surface anywhere, depth at infinity (0, reversed).
-  void begin(int width, int height);
+  // Before drawing a frame of width x height, `samples` per pixel: (re)makes the attachments when the size
+  // or the samples changed, binds the buffer with its viewport and clears it: no surface anywhere, depth at
+  // infinity (0, reversed).
+  void begin(int width, int height, int samples);
   const Framebuffer& framebuffer() const { return framebuffer_; }
 
  private:

@@ -5,11 +5,15 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
-// Owns one GL texture name (GL_TEXTURE_2D, immutable storage).
+// Owns one GL texture name (GL_TEXTURE_2D, or GL_TEXTURE_2D_MULTISAMPLE with `samples` > 1; immutable
+// storage).
 class Texture {
  public:
   Texture() = default;
   Texture(GLenum internalFormat, int width, int height, int levels = 1);
+  // A multisampled render target of `samples` per texel at the standard sample positions (read in GLSL
+  // through a sampler2DMS); 1: a plain texture of one level.
+  static Texture multisampled(GLenum internalFormat, int width, int height, int samples);
   ~Texture();
   Texture(Texture&& other) noexcept;
   Texture& operator=(Texture&& other) noexcept;
@@ -19,12 +23,14 @@ class Texture {
   GLuint id() const { return id_; }
   int width() const { return width_; }
   int height() const { return height_; }
+  int samples() const { return samples_; }
   explicit operator bool() const { return id_ != 0; }
 
  private:
   GLuint id_ = 0;
   int width_ = 0;
   int height_ = 0;
+  int samples_ = 1;
 };
 
 // Levels of a full mip chain for a width x height image.

@@ -1,4 +1,5 @@
 #pragma once
+#include <algorithm>
 #include <cstdint>
 #include <strata/export.hpp>
 
@@ -29,6 +30,15 @@ class SurfaceGeometry {
   virtual HeightRange heights() const { return {}; }
   // On the GL thread, after the frame: GPU times wait for the GPU to finish it.
   virtual GeometryStatistics statistics() const { return {}; }
+
+  // Samples per pixel of the deferred buffer (multisample antialiasing): the most any reader asked for.
+  // Readers ask while they are made (output.image's `antialiasing`), before any node creates its GPU
+  // resources; the generator draws its buffer with samples().
+  void requestSamples(int samples) { samples_ = std::max(samples_, samples); }
+  int samples() const { return samples_; }
+
+ private:
+  int samples_ = 1;
 };
 
 }  // namespace strata

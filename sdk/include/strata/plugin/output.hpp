@@ -27,7 +27,9 @@ class FrameOutput {
 // Reads back colour attachment 0 of `framebuffer` as rows of RGBA8, top row first.
 std::vector<unsigned char> readPixels(const Framebuffer& framebuffer);
 // Reads back the depth attachment of `framebuffer` as rows of floats, top row first: a geometry's reversed
-// depth (View::projection: near / distance along the view axis, 0 where nothing was drawn).
+// depth (View::projection: near / distance along the view axis, 0 where nothing was drawn). The depth at
+// each pixel's centre: a multisampled framebuffer (output.image's `antialiasing`) has none, and is refused
+// (std::invalid_argument).
 std::vector<float> readDepth(const Framebuffer& framebuffer);
 // The image formats frames are written in, chosen by the file's extension.
 enum class ImageFormat { Png, Tiff };
