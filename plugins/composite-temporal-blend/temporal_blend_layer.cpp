@@ -29,6 +29,29 @@ std::string TemporalBlendLayer::stepDispatch(FunctionOf of, const std::string& n
   return code + "  }\n  return " + type + "(0.0);\n}\n";
 }
 
+// `vec4 <layer><suffix>(parameters)`: the two steps around the date through `dispatch`, blended. One call of the
+// dispatch, in a loop of one round on a step's date and two between: each step's GLSL is pasted into the program
+// once, not once for each bracket (a series of a dozen steps with anisotropic filtering's loops kept Mesa's
+// compiler busy for minutes), and a do-while, whose test comes last, costs llvmpipe no masked extra round.
+std::string TemporalBlendLayer::bracketingSteps(const std::string& dispatch, const std::string& parameters,
+                                                const std::string& arguments, const std::string& suffix) const {
+  const std::string& p = prefix_;
+  return "vec4 " + p + suffix + "(" + parameters +
+         ") {\n"
+         "  vec4 bracket[2] = vec4[2](vec4(0.0), vec4(0.0));\n"
+         "  int steps = " +
+         p +
+         "_fraction > 0.0 ? 2 : 1;  // on a step's date: one step's work\n"
+         "  int i = 0;\n"
+         "  do {\n"
+         "    bracket[i] = " +
+         dispatch + "(i == 0 ? " + p + "_earlier : " + p + "_later, " + arguments +
+         ");\n"
+         "  } while (++i < steps);\n"
+         "  return steps == 1 ? bracket[0] : temporalBlend(bracket[0], bracket[1], " +
+         p + "_fraction);\n}\n";
+}
+
 // The earlier step's texels stand for the layer's: the steps of a series share their grid as a rule.
 std::string TemporalBlendLayer::texelStepsFunction() const {
   return everyStepHas(texelStepsFunctionOf) ? prefix_ + "_texelSteps" : std::string();
@@ -67,18 +90,7 @@ std::string TemporalBlendLayer::glsl() const {
       p + "_fraction;\n" +
       stepDispatch([](const Layer& step) { return step.samplingFunction(); }, p + "_step", "vec4", "SurfacePoint p",
                    "p") +
-      "vec4 " + p +
-      "(SurfacePoint p) {\n"
-      "  vec4 earlier = " +
-      p + "_step(" + p +
-      "_earlier, p);\n"
-      "  if (" +
-      p +
-      "_fraction <= 0.0) return earlier;  // on a step's date: one step's work\n"
-      "  return temporalBlend(earlier, " +
-      p + "_step(" + p + "_later, p), " + p +
-      "_fraction);\n"
-      "}\n";
+      bracketingSteps(p + "_step", "SurfacePoint p", "p");
   if (!texelStepsFunction().empty())
     code += stepDispatch(texelStepsFunctionOf, p + "_stepTexels", "vec4", "SurfacePoint p", "p") + "vec4 " + p +
             "_texelSteps(SurfacePoint p) { return " + p + "_stepTexels(" + p + "_earlier, p); }\n";
@@ -90,16 +102,7 @@ std::string TemporalBlendLayer::glsl() const {
   if (!faceSamplingFunction().empty())
     code += stepDispatch(faceSamplingFunctionOf, p + "_stepFace", "vec4", "vec3 point, float footprint",
                          "point, footprint") +
-            "vec4 " + p +
-            "_faceSample(vec3 point, float footprint) {\n"
-            "  vec4 earlier = " +
-            p + "_stepFace(" + p +
-            "_earlier, point, footprint);\n"
-            "  if (" +
-            p +
-            "_fraction <= 0.0) return earlier;\n"
-            "  return temporalBlend(earlier, " +
-            p + "_stepFace(" + p + "_later, point, footprint), " + p + "_fraction);\n}\n";
+            bracketingSteps(p + "_stepFace", "vec3 point, float footprint", "point, footprint", "_faceSample");
   return code;
 }
 

@@ -43,6 +43,8 @@ class TemporalBlendLayer : public Layer, public TexelledLayer, public ProjectedL
   bool everyStepHas(FunctionOf of) const;
   std::string stepDispatch(FunctionOf of, const std::string& name, const std::string& type,
                            const std::string& parameters, const std::string& arguments) const;
+  std::string bracketingSteps(const std::string& dispatch, const std::string& parameters, const std::string& arguments,
+                              const std::string& suffix = "") const;
 
   std::string prefix_;
   std::vector<const Layer*> steps_;

@@ -2,6 +2,7 @@
 // sit in an atlas (a 2D array texture of 514x514 slots: 512 texels and a 1-texel border) and the index
 // of page references, shared by every layer, says which slot holds each page of each level, or which
 // coarser page stands in for it (core/paging/src/page_index.hpp gives the layout).
+#include "strata/anisotropic_taps.glsl"
 #include "strata/texel_address.glsl"
 
 uniform usampler2D strata_pageIndex;
@@ -85,18 +86,58 @@ vec4 samplePagedTexels(sampler2DArray atlas, uint indexBase, int levels, ivec2 s
   return mix(fine, samplePagedLevel(atlas, indexBase, size, level + 1, address, face), fract(lod));
 }
 
+// `address` taken into the one period [0, width) of a raster around the body.
+TexelAddress wrappedAround(TexelAddress address, int width) {
+  float carried = floor(address.part.x);
+  int x = address.whole.x + int(carried);
+  if (x < 0) x += width * ((width - 1 - x) / width);  // % is defined for operands >= 0 only
+  address.whole.x = x % width;
+  address.part.x -= carried;
+  return address;
+}
+
+// `address` moved onto face `face` of a strip of HEALPix faces `side` texels across each, where it lies off it.
+TexelAddress clampedToFace(TexelAddress address, int face, int side) {
+  vec2 carried = floor(address.part);
+  ivec2 whole = address.whole + ivec2(carried), low = ivec2(face * side, 0), high = low + side - 1;
+  vec2 part = address.part - carried;
+  bvec2 below = lessThan(whole, low), above = greaterThan(whole, high);
+  return TexelAddress(clamp(whole, low, high), mix(mix(part, vec2(0.0), below), vec2(0.999), above));
+}
+
+// The value at level-0 texel `address` over the footprint whose steps to the next sample are `stepX` and `stepY`
+// (level-0 texels), filtered anisotropically (strata/anisotropic_taps.glsl). `repeatX`: each tap wraps around the
+// body. `faceSide` > 0: the raster is a strip of HEALPix faces that many texels across each, and the taps stay
+// on the face of the footprint's centre and its pages, whose borders hold its neighbours on the sphere; the next
+// face along the strip is not one.
+vec4 samplePagedAnisotropic(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address,
+                            vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
+  AnisotropicTaps taps = anisotropicTaps(stepX, stepY);
+  int face = faceSide > 0 ? (address.whole.x + int(floor(address.part.x))) / faceSide : -1;
+  vec4 sum = vec4(0.0);
+  int tap = 0;
+  do {  // do-while: llvmpipe runs a loop's body once more, masked, when its test comes first
+    TexelAddress at = address;
+    at.part += tapOffset(taps, tap);
+    if (repeatX) at = wrappedAround(at, size.x);
+    if (face >= 0) at = clampedToFace(at, face, faceSide);
+    sum += samplePagedTexels(atlas, indexBase, levels, size, at, taps.width, face);
+  } while (++tap < taps.count);
+  return sum / float(taps.count);
+}
+
 // The same for a raster's own texels, the footprint given as texture coordinates' steps to the next sample;
-// a raster around the body (`repeatX`) wraps the address into its one period.
+// a raster around the body (`repeatX`) wraps the address into its one period. Fragment stages filter
+// anisotropically (`faceSide`: as samplePagedAnisotropic's); geometry stages (heights for vertices)
+// trilinearly at the longer step, their spacing.
 vec4 samplePaged(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address, vec2 stepX,
-                 vec2 stepY, bool repeatX) {
-  if (repeatX) {
-    float carried = floor(address.part.x);
-    int x = address.whole.x + int(carried);
-    if (x < 0) x += size.x * ((size.x - 1 - x) / size.x);  // % is defined for operands >= 0 only
-    address.whole.x = x % size.x;
-    address.part.x -= carried;
-  }
+                 vec2 stepY, bool repeatX, int faceSide) {
   vec2 texels = vec2(size);
-  return samplePagedTexels(atlas, indexBase, levels, size, address,
+#ifdef STRATA_GEOMETRY_STAGE
+  return samplePagedTexels(atlas, indexBase, levels, size, repeatX ? wrappedAround(address, size.x) : address,
                            max(length(stepX * texels), length(stepY * texels)), -1);
+#else
+  return samplePagedAnisotropic(atlas, indexBase, levels, size, address, stepX * texels, stepY * texels, repeatX,
+                                faceSide);
+#endif
 }

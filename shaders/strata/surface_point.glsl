@@ -10,6 +10,8 @@ struct SurfacePoint {
   vec2 fromReference;
 };
 
+#include "strata/anisotropic_taps.glsl"
+
 #ifdef STRATA_GEOMETRY_STAGE
 // Bilinear filtering done by hand on one mip level, with texel fetches. Mesa's llvmpipe gave one vertex
 // different filtered values in different invocations of a vertex shader (textureLod and textureGrad
@@ -29,8 +31,9 @@ vec4 bilinearTexels(sampler2D image, vec2 uv, int level, bool repeatX) {
 #endif
 
 // Samples `image` at `uv` over a footprint given as texture-coordinate steps along x and y. Fragment
-// stages filter anisotropically (textureGrad); geometry stages (heights sampled by the compute pass, which
-// has no derivatives) filter trilinearly by hand at the level of the longer step.
+// stages filter anisotropically by hand (strata/anisotropic_taps.glsl), each tap by the sampler at its width;
+// geometry stages (heights sampled by the compute pass, which has no derivatives) filter trilinearly by
+// hand at the level of the longer step. `repeatX`: the sampler wraps, as the geometry stages' fetches do.
 vec4 sampleFootprint(sampler2D image, vec2 uv, vec2 stepX, vec2 stepY, bool repeatX) {
 #ifdef STRATA_GEOMETRY_STAGE
   vec2 size = vec2(textureSize(image, 0));
@@ -39,6 +42,14 @@ vec4 sampleFootprint(sampler2D image, vec2 uv, vec2 stepX, vec2 stepY, bool repe
   return mix(bilinearTexels(image, uv, level, repeatX),
              bilinearTexels(image, uv, min(level + 1, textureQueryLevels(image) - 1), repeatX), fract(lod));
 #else
-  return textureGrad(image, uv, stepX, stepY);
+  vec2 size = vec2(textureSize(image, 0));
+  AnisotropicTaps taps = anisotropicTaps(stepX * size, stepY * size);
+  vec2 across = normalize(taps.major + vec2(1e-30, 0.0)) * taps.width / size;  // the tap's width, as a gradient
+  vec4 sum = vec4(0.0);
+  int tap = 0;
+  do {  // do-while: llvmpipe runs a loop's body once more, masked, when its test comes first
+    sum += textureGrad(image, uv + tapOffset(taps, tap) / size, across, vec2(0.0));
+  } while (++tap < taps.count);
+  return sum / float(taps.count);
 #endif
 }

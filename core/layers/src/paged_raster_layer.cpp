@@ -32,7 +32,8 @@ std::string PagedRasterLayer::glsl() const {
                  "uniform int " +
                  p + "_levels;\n",
              "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p + "_levels, " + p +
-                 "_size, " + p + "_texel(at, p), stepX, stepY, repeatX)") +
+                 "_size, " + p + "_texel(at, p), stepX, stepY, repeatX, " + (onHealpixFaces() ? p + "_size.y" : "0") +
+                 ")") +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 

@@ -1,5 +1,4 @@
 #include <cmath>
-#include <string_view>
 
 #include <strata/gl/shader_program.hpp>
 #include <strata/plugin/raster_layer.hpp>
@@ -24,14 +23,6 @@ RasterImage halved(const RasterImage& image) {
   return out;
 }
 
-// Whether the current context filters anisotropically without artefacts. Mesa's llvmpipe (22.3) returned
-// near-white texels for scattered 2x2 pixel quads with it on; isotropic filtering there is only blurrier.
-bool anisotropicFilteringWorks() {
-  const bool offered = epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic");
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return offered && !(renderer && std::string_view(renderer).starts_with("llvmpipe"));
-}
-
 }  // namespace
 
 RasterLayer::RasterLayer(std::string nodeId, LayerKind kind) : ProjectedRasterLayer(std::move(nodeId), kind) {}
@@ -51,9 +42,6 @@ void RasterLayer::upload(const RasterImage& image, RasterGeoreference georeferen
   }
   // A raster that goes all the way round wraps across its east/west seam when filtered.
   glTextureParameteri(texture_.id(), GL_TEXTURE_WRAP_S, repeatX() ? GL_REPEAT : GL_CLAMP_TO_EDGE);
-  // Texels stretch where a projection is stretched (toward the poles of equirectangular maps);
-  // anisotropic filtering keeps them sharp there.
-  if (anisotropicFilteringWorks()) glTextureParameterf(texture_.id(), GL_TEXTURE_MAX_ANISOTROPY, 8.0f);
 }
 
 std::string RasterLayer::glsl() const {
