@@ -19,16 +19,13 @@
 
 #include "compute_each.hpp"
 #include "rendering.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata {
 namespace {
 
 const SourceLocation kWhere{"colour test"};
-
-double srgbToLinear(double encoded) {
-  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
 
 // Each value v: toLinear(v) and toDisplay(toLinear(v)), from the two generated functions.
 std::vector<std::array<float, 2>> evaluate(const std::string& toLinear, const std::string& toDisplay,
@@ -67,7 +64,7 @@ TEST(ColourConfig, SrgbLevelsRoundTripThroughSceneLinear) {
   double worstLinear = 0.0;
   int worstLevels = 0;
   for (int level = 0; level < 256; ++level) {
-    worstLinear = std::max(worstLinear, std::abs(results[level][0] - srgbToLinear(level / 255.0)));
+    worstLinear = std::max(worstLinear, std::abs(results[level][0] - test::srgbDecode(level / 255.0)));
     worstLevels = std::max(worstLevels, std::abs(int(std::lround(results[level][1] * 255.0)) - level));
   }
   std::printf("worst: %.2e from the sRGB formula in linear light, %d levels after the round trip\n", worstLinear,

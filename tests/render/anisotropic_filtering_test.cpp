@@ -16,6 +16,7 @@
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 #include "test_rasters.hpp"
 
@@ -26,12 +27,6 @@ constexpr int kSize = 256;
 constexpr int kWidth = 4096, kHeight = 2048;
 constexpr int kRingTexels = 4;
 constexpr double kEarth = 6371000.0;
-
-// The sRGB level (0..255) in linear light.
-double linearLight(int level) {
-  const double v = level / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
 
 // The ring (row of rings from the north pole) at latitude `lat` (deg).
 int ringAt(double lat) { return int(std::floor((90.0 - lat) / 180.0 * kHeight / kRingTexels)); }
@@ -74,7 +69,7 @@ TEST(AnisotropicFiltering, LatitudeRingsStaySharpNearThePole) {
       const int ring = ringUnder(view, x, y);
       if (ring < 0) continue;
       ++judged;
-      const double light = linearLight(image.at(x, y)[1]);
+      const double light = linearLightOf(image.at(x, y)[1]);
       right += ring % 2 == 0 ? light > 0.75 : light < 0.25;
     }
   std::printf("%d pixels judged, %.1f%% right\n", judged, 100.0 * right / std::max(judged, 1));

@@ -18,6 +18,7 @@
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata::test {
@@ -37,12 +38,6 @@ double trueCoverage(const View& view, int x, int y) {
   return double(inside) / (kRays * kRays);
 }
 
-// The sRGB level (0..255) in linear light.
-double linearLight(int level) {
-  const double v = level / 255.0;
-  return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
-}
-
 struct EdgeErrors {
   int pixels = 0;  // those the edge crosses: true coverage between 2% and 98%
   double mean = 0.0;
@@ -50,13 +45,13 @@ struct EdgeErrors {
 };
 
 EdgeErrors edgeErrors(const Image& image, const View& view) {
-  const double inside = linearLight(image.at(kSize / 2, kSize / 2)[1]);
+  const double inside = linearLightOf(image.at(kSize / 2, kSize / 2)[1]);
   EdgeErrors errors;
   for (int y = 0; y < kSize; ++y)
     for (int x = 0; x < kSize; ++x) {
       const double truth = trueCoverage(view, x, y);
       if (truth < 0.02 || truth > 0.98) continue;
-      const double error = std::abs(linearLight(image.at(x, y)[1]) / inside - truth);
+      const double error = std::abs(linearLightOf(image.at(x, y)[1]) / inside - truth);
       ++errors.pixels;
       errors.mean += error;
       errors.worst = std::max(errors.worst, error);

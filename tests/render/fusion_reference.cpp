@@ -55,9 +55,6 @@ double greyLightness(double luminance, OpponentSpace space) {
 
 }  // namespace
 
-double srgbEncode(double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055; }
-double srgbDecode(double e) { return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4); }
-
 double relativeLuminance(const LinearColour& c) {
   return kToXyz[1][0] * c[0] + kToXyz[1][1] * c[1] + kToXyz[1][2] * c[2];
 }

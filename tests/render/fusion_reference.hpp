@@ -1,6 +1,8 @@
 #pragma once
 #include <array>
 
+#include "srgb.hpp"
+
 namespace strata::test {
 
 // composite.chroma_fusion's arithmetic in double on the CPU, written from the standards rather than from its
@@ -9,10 +11,6 @@ namespace strata::test {
 using LinearColour = std::array<double, 3>;
 
 enum class OpponentSpace { Lab, YCbCr };
-
-// IEC 61966-2-1's sRGB transfer function and its inverse.
-double srgbEncode(double linear);
-double srgbDecode(double encoded);
 
 // Relative luminance: IEC 61966-2-1's Y row.
 double relativeLuminance(const LinearColour& colour);

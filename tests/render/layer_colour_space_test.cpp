@@ -38,6 +38,7 @@
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata::test {
@@ -47,10 +48,6 @@ constexpr double kRadius = 6371000.0;  // m: Earth's, as the pipelines say
 // 12000 km above 20N 10E: the whole disc, most of its cells seen nearly head-on.
 constexpr Camera kGlobeCamera{.lon = 10, .lat = 20, .altitude = 1.2e7, .fov = 45};
 
-double srgbToLinear(double encoded) {
-  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
-
 double linearToSrgb(double linear) {
   return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
@@ -59,7 +56,7 @@ double linearToSrgb(double linear) {
 Rgb16 encodedCell(int column, int row, const std::string& space) {
   Rgb16 encoded{};
   for (int c = 0; c < 3; ++c) {
-    const double srgb = cellColour(column, row)[std::size_t(c)] / 255.0, linear = srgbToLinear(srgb);
+    const double srgb = cellColour(column, row)[std::size_t(c)] / 255.0, linear = srgbDecode(srgb);
     const double value = space == "srgb" ? srgb : space == "gamma22" ? std::pow(linear, 1.0 / 2.2) : linear;
     encoded[std::size_t(c)] = std::uint16_t(std::lround(value * 65535.0));
   }
@@ -168,7 +165,7 @@ double lightWeight(double lon, double& fraction) {
 
 // The 8-bit sRGB level of channel `c` where the light column weighs `weight`, mixed in linear light.
 double mixedLevel(double weight, int c) {
-  return 255.0 * linearToSrgb(weight * srgbToLinear(kLight[std::size_t(c)] / 255.0));
+  return 255.0 * linearToSrgb(weight * srgbDecode(kLight[std::size_t(c)] / 255.0));
 }
 
 Image renderStripes(TemporaryDirectory& directory, const Camera& camera) {

@@ -34,6 +34,7 @@
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata::test {
@@ -239,14 +240,6 @@ TEST_P(LayerPeel, TheCameraMayGoBelowTheUpperSurface) {
   EXPECT_EQ(judged.wrong, 0);
 }
 
-double linear(int level) {
-  const double c = level / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-int encoded(double linear) {
-  return int(std::lround(255.0 * (linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055)));
-}
-
 // Over the cut, the upper surface (white) and a middle one 20 km up (green), translucent, listed nearest
 // first: the floor shows through both, mixed in scene-linear light farthest first, whatever the order they
 // are given in; outside it the upper surface is the opaque one's, and the middle one lies behind it.
@@ -254,8 +247,9 @@ TEST_P(LayerPeel, TranslucentLayersLieOverTheFloorInDepthOrder) {
   constexpr double kOpacity = 0.4;
   Colour seen{};
   for (std::size_t c = 0; c < 3; ++c) {
-    const double throughMiddle = linear(kBlue[c]) + (linear(kGreen[c]) - linear(kBlue[c])) * kOpacity;
-    seen[c] = encoded(throughMiddle + (1.0 - throughMiddle) * kOpacity);
+    const double throughMiddle =
+        linearLightOf(kBlue[c]) + (linearLightOf(kGreen[c]) - linearLightOf(kBlue[c])) * kOpacity;
+    seen[c] = int(std::lround(255.0 * srgbEncode(throughMiddle + (1.0 - throughMiddle) * kOpacity)));
   }
   Cut translucent{", cut: radius, radius: 80000", kWithinRadius, 0.0, 0.0, seen};
   translucent.frame = ", translucent: [upper-globe, middle-globe], translucent_surface: [white, green], opacity: 0.4";

@@ -23,6 +23,7 @@
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
+#include "srgb.hpp"
 #include "temporary_directory.hpp"
 
 namespace strata::test {
@@ -32,9 +33,6 @@ constexpr int kSize = 96;
 const std::vector<Rgb8> kMonthColours{{200, 40, 40}, {40, 200, 40}, {40, 40, 200}, {220, 220, 60}};
 const std::vector<std::string> kMonthDates{"2004-01-15", "2004-02-15", "2004-03-15", "2004-04-15"};
 
-double srgbToLinear(double encoded) {
-  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
-}
 double linearToSrgb(double linear) {
   return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
 }
@@ -49,7 +47,7 @@ std::array<double, 3> expectedColour(DayNumber date) {
   const double t = later == earlier ? 0.0 : std::clamp((date - from) / (to - from), 0.0, 1.0);
   std::array<double, 3> colour{};
   for (std::size_t c = 0; c < 3; ++c) {
-    const double a = srgbToLinear(kMonthColours[earlier][c] / 255.0), b = srgbToLinear(kMonthColours[later][c] / 255.0);
+    const double a = srgbDecode(kMonthColours[earlier][c] / 255.0), b = srgbDecode(kMonthColours[later][c] / 255.0);
     colour[c] = 255.0 * linearToSrgb(a + (b - a) * t);
   }
   return colour;
