@@ -81,22 +81,22 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
 // (nearer ground before farther) they lie farther apart.
 const float kSameSurface = 1.0;
 
-// Whether sample `s` of `pixel` shows the same surface as sample `t` within `reach` (rad): both on the body or
-// both off it, and on the body lying together.
-bool sameSurface(ivec2 pixel, int s, int t, float reach) {
-  bool onBody = texelFetch(shadingBuffer, pixel, s).a > 0.0;
+// Whether sample `t` of `pixel` shows the surface a sample on the body or off it (`onBody`) shows at `here`
+// (its deferred longitude and latitude), within `reach` (rad): both off the body, or both on it lying together.
+bool sameSurface(ivec2 pixel, int t, bool onBody, vec2 here, float reach) {
   if (onBody != (texelFetch(shadingBuffer, pixel, t).a > 0.0)) return false;
-  if (!onBody) return true;
-  vec2 apart = texelFetch(surfaceBuffer, pixel, s).xy - texelFetch(surfaceBuffer, pixel, t).xy;
+  vec2 apart = texelFetch(surfaceBuffer, pixel, t).xy - here;
   apart.x -= TWO_PI * round(apart.x / TWO_PI);
-  return length(apart) <= reach;
+  return !onBody || length(apart) <= reach;
 }
 
 // The samples of `pixel` not in `done` (a bit each) that show the surface sample `s` shows, within `reach`.
 int samplesLike(ivec2 pixel, int s, float reach, int done) {
+  bool onBody = texelFetch(shadingBuffer, pixel, s).a > 0.0;
+  vec2 here = texelFetch(surfaceBuffer, pixel, s).xy;
   int like = 1 << s;
   for (int t = 0; t < kSamples; ++t)
-    if ((done & (1 << t)) == 0 && t != s && sameSurface(pixel, t, s, reach)) like |= 1 << t;
+    if ((done & (1 << t)) == 0 && t != s && sameSurface(pixel, t, onBody, here, reach)) like |= 1 << t;
   return like;
 }
 

@@ -104,7 +104,8 @@ std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges&
 
 std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset) {
   if (!countable(dataset)) return storedBlockRanges(dataset);
-  auto blocks = std::make_shared<BlockRanges>(dataset.GetRasterXSize(), dataset.GetRasterYSize());
+  const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
+  auto blocks = std::make_shared<BlockRanges>(width, height, BlockRanges::blockTexelsFor(width, height));
   const QuietGdalErrors quiet;  // as exactRawRange()
   visitDrawnTexels(*dataset.GetRasterBand(1),
                    [&](int column, int row, double value) { blocks->count(column, row, value); });

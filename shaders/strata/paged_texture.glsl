@@ -46,12 +46,27 @@ void pageRange(ivec2 levelSize, int face, out ivec2 low, out ivec2 high) {
   high = ivec2(face * pages + pages - 1, pages - 1);
 }
 
-// The value at level-0 texel `address` on pyramid level `level`, filtered bilinearly by hand within one
-// slot: the border makes the four texels always lie in it. Texel fetches, not the sampler's filtering:
-// llvmpipe gave one vertex different filtered values in different invocations (see surface_point.glsl),
-// and the atlas has no neighbours to filter across anyway. Where the page is not loaded, the coarser page
-// its index entry references is sampled instead; where nothing is, vec4(0). `face`: as pageRange.
-vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int level, TexelAddress address, int face) {
+// Bilinear filtering within atlas slot `slot` at slot texel position `position` (texel centres at integers): the
+// border makes the four texels always lie in the slot. `bySampler`: the sampler filters (a colour atlas, in a
+// fragment stage), its 8-bit weights finer than colour shows; else by hand with texel fetches, as heights and
+// values need: their differences shade relief, and llvmpipe gave one vertex different filtered values in
+// different invocations (see surface_point.glsl).
+vec4 slotBilinear(sampler2DArray atlas, vec2 position, int slot, bool bySampler) {
+#ifndef STRATA_GEOMETRY_STAGE
+  if (bySampler) return textureLod(atlas, vec3((position + 0.5) / float(kPagePayload + 2), float(slot)), 0.0);
+#endif
+  ivec2 corner = clamp(ivec2(floor(position)), ivec2(0), ivec2(kPagePayload));
+  vec2 f = clamp(position - vec2(corner), 0.0, 1.0);
+  return mix(mix(texelFetch(atlas, ivec3(corner, slot), 0), texelFetch(atlas, ivec3(corner.x + 1, corner.y, slot), 0), f.x),
+             mix(texelFetch(atlas, ivec3(corner.x, corner.y + 1, slot), 0), texelFetch(atlas, ivec3(corner + 1, slot), 0), f.x),
+             f.y);
+}
+
+// The value at level-0 texel `address` on pyramid level `level`, filtered bilinearly within one slot
+// (slotBilinear). Where the page is not loaded, the coarser page its index entry references is sampled instead;
+// where nothing is, vec4(0). `face`: as pageRange.
+vec4 samplePagedLevel(sampler2DArray atlas, bool bySampler, uint indexBase, ivec2 size, int level, TexelAddress address,
+                      int face) {
   ivec2 levelSize = pagedLevelSize(size, level), low, high;
   pageRange(levelSize, face, low, high);
   vec2 part;
@@ -66,24 +81,19 @@ vec4 samplePagedLevel(sampler2DArray atlas, uint indexBase, ivec2 size, int leve
   // Slot texel positions, centres at integers: level texel j of the page is slot texel j + 1. The whole
   // texels' difference is exact, and small: the position is a float of a page's size.
   vec2 position = vec2(whole - page * kPagePayload) + part + 0.5;
-  ivec2 corner = clamp(ivec2(floor(position)), ivec2(0), ivec2(kPagePayload));
-  vec2 f = clamp(position - vec2(corner), 0.0, 1.0);
-  int slot = int(entry & 0xffffu);
-  return mix(mix(texelFetch(atlas, ivec3(corner, slot), 0), texelFetch(atlas, ivec3(corner.x + 1, corner.y, slot), 0), f.x),
-             mix(texelFetch(atlas, ivec3(corner.x, corner.y + 1, slot), 0), texelFetch(atlas, ivec3(corner + 1, slot), 0), f.x),
-             f.y);
+  return slotBilinear(atlas, position, int(entry & 0xffffu), bySampler);
 }
 
 // Trilinear sampling across levels ([Kooima 2008, §4.3.2]: "a shader implementation of trilinear
 // mipmapping") at level-0 texel `address`, the level chosen from the footprint: level-0 texels to the next
 // sample. `face`: as pageRange.
-vec4 samplePagedTexels(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address,
-                       float footprint, int face) {
+vec4 samplePagedTexels(sampler2DArray atlas, bool bySampler, uint indexBase, int levels, ivec2 size,
+                       TexelAddress address, float footprint, int face) {
   float lod = clamp(log2(footprint), 0.0, float(levels - 1));
   int level = int(floor(lod));
-  vec4 fine = samplePagedLevel(atlas, indexBase, size, level, address, face);
+  vec4 fine = samplePagedLevel(atlas, bySampler, indexBase, size, level, address, face);
   if (level + 1 >= levels || fract(lod) == 0.0) return fine;
-  return mix(fine, samplePagedLevel(atlas, indexBase, size, level + 1, address, face), fract(lod));
+  return mix(fine, samplePagedLevel(atlas, bySampler, indexBase, size, level + 1, address, face), fract(lod));
 }
 
 // `address` taken into the one period [0, width) of a raster around the body.
@@ -110,8 +120,8 @@ TexelAddress clampedToFace(TexelAddress address, int face, int side) {
 // body. `faceSide` > 0: the raster is a strip of HEALPix faces that many texels across each, and the taps stay
 // on the face of the footprint's centre and its pages, whose borders hold its neighbours on the sphere; the next
 // face along the strip is not one.
-vec4 samplePagedAnisotropic(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address,
-                            vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
+vec4 samplePagedAnisotropic(sampler2DArray atlas, bool bySampler, uint indexBase, int levels, ivec2 size,
+                            TexelAddress address, vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
   AnisotropicTaps taps = anisotropicTaps(stepX, stepY);
   int face = faceSide > 0 ? (address.whole.x + int(floor(address.part.x))) / faceSide : -1;
   vec4 sum = vec4(0.0);
@@ -121,7 +131,7 @@ vec4 samplePagedAnisotropic(sampler2DArray atlas, uint indexBase, int levels, iv
     at.part += tapOffset(taps, tap);
     if (repeatX) at = wrappedAround(at, size.x);
     if (face >= 0) at = clampedToFace(at, face, faceSide);
-    sum += samplePagedTexels(atlas, indexBase, levels, size, at, taps.width, face);
+    sum += samplePagedTexels(atlas, bySampler, indexBase, levels, size, at, taps.width, face);
   } while (++tap < taps.count);
   return sum / float(taps.count);
 }
@@ -129,15 +139,16 @@ vec4 samplePagedAnisotropic(sampler2DArray atlas, uint indexBase, int levels, iv
 // The same for a raster's own texels, the footprint given as texture coordinates' steps to the next sample;
 // a raster around the body (`repeatX`) wraps the address into its one period. Fragment stages filter
 // anisotropically (`faceSide`: as samplePagedAnisotropic's); geometry stages (heights for vertices)
-// trilinearly at the longer step, their spacing.
-vec4 samplePaged(sampler2DArray atlas, uint indexBase, int levels, ivec2 size, TexelAddress address, vec2 stepX,
-                 vec2 stepY, bool repeatX, int faceSide) {
+// trilinearly at the longer step, their spacing. `bySampler`: as slotBilinear's.
+vec4 samplePaged(sampler2DArray atlas, bool bySampler, uint indexBase, int levels, ivec2 size, TexelAddress address,
+                 vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
   vec2 texels = vec2(size);
 #ifdef STRATA_GEOMETRY_STAGE
-  return samplePagedTexels(atlas, indexBase, levels, size, repeatX ? wrappedAround(address, size.x) : address,
+  return samplePagedTexels(atlas, bySampler, indexBase, levels, size,
+                           repeatX ? wrappedAround(address, size.x) : address,
                            max(length(stepX * texels), length(stepY * texels)), -1);
 #else
-  return samplePagedAnisotropic(atlas, indexBase, levels, size, address, stepX * texels, stepY * texels, repeatX,
-                                faceSide);
+  return samplePagedAnisotropic(atlas, bySampler, indexBase, levels, size, address, stepX * texels, stepY * texels,
+                                repeatX, faceSide);
 #endif
 }

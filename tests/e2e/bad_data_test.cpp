@@ -152,7 +152,7 @@ TEST_F(BadData, AbsurdDimensionsWithOverviewsAreRefusedWithTheirPageCount) {
 // Block ranges `strata tile` stored (strata/plugin/block_ranges.hpp) in a raster too large to count (4100 x 4100
 // zeros), saying `value` in every block, as a file rescaled after tiling keeps them.
 std::string claimingBlocks(float value) {
-  BlockRanges ranges(4100, 4100);
+  BlockRanges ranges(4100, 4100, BlockRanges::blockTexelsFor(4100, 4100));
   for (int row = 0; row < ranges.height(); ++row)
     for (int column = 0; column < ranges.width(); ++column) ranges.count(column, row, value);
   std::string items;

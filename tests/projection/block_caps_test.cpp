@@ -42,7 +42,8 @@ glm::dvec2 texelOf(const Raster& raster, glm::dvec2 map) {
 
 // The raster's texels hold the field at their centres; those of column 0 hold no data, for the gaps.
 std::shared_ptr<BlockRanges> countField(const Raster& raster, const Projection& projection) {
-  auto blocks = std::make_shared<BlockRanges>(raster.width, raster.height);
+  auto blocks = std::make_shared<BlockRanges>(raster.width, raster.height,
+                                              BlockRanges::blockTexelsFor(raster.width, raster.height));
   const std::array<double, 6>& t = raster.geotransform;
   for (int row = 0; row < raster.height; ++row)
     for (int column = 1; column < raster.width; ++column) {
@@ -106,6 +107,26 @@ TEST(BlockCaps, AGlobalMapHoldsEveryTexelACapSamplesAcrossItsSeamAndAtItsPoles) 
   for (const glm::dvec2 place : {glm::dvec2(137.4, -4.6), glm::dvec2(179.99, 10.0), glm::dvec2(-179.99, -30.0),
                                  glm::dvec2(0.0, 89.95), glm::dvec2(60.0, -89.95)})
     expectHeld(global, capsNear(place, {1e-4, 3e-3, 0.05, 0.6}));
+}
+
+// A grid whose texel centres lie on the poles and on the antimeridian (EGM96's 15' geoid: 1440 x 721), its
+// edges half a texel beyond them, where no projection places a point: blocks along the poles are bounded by
+// their texel centres, so a small cap far from them takes only its own blocks' values. When those blocks were
+// taken to cover the whole body, every cap took the poles' values too, and an icosahedral patch under the
+// geoid exaggerated 2000 times reached 116 km (EyeBelowTheGround).
+TEST(BlockCaps, AGridCentredOnThePolesBoundsSmallCapsByTheirOwnBlocks) {
+  const Raster grid{"+proj=longlat", {-180.125, 0.25, 0.0, 90.125, 0.0, -0.25}, 1440, 721, true};
+  for (const glm::dvec2 place :
+       {glm::dvec2(10.0, 20.0), glm::dvec2(179.99, 10.0), glm::dvec2(0.0, 89.99), glm::dvec2(60.0, -89.99)})
+    expectHeld(grid, capsNear(place, {1e-4, 3e-3, 0.05}));
+  std::shared_ptr<const Projection> projection = test::makeProjection(grid.terms, Ellipsoid{kEarth, 0.0});
+  const BlockCaps blockCaps(countField(grid, *projection), {projection, grid.geotransform}, true);
+  const BlockValues whole = blockCaps.within({glm::dvec3(0.0, 0.0, 1.0), std::numbers::pi});
+  const BlockValues near = blockCaps.within(capsNear({10.0, 20.0}, {1e-3})[0]);
+  // The cap's blocks (8 texels, 2 degrees) reach some 0.06 rad from it, over which the field changes by 182 of
+  // its whole range's 2,256 (0.08); with the poles' blocks everywhere, by 0.7 of it.
+  EXPECT_LT(near.greatest - near.least, 0.15 * (whole.greatest - whole.least));
+  EXPECT_FALSE(near.gaps);
 }
 
 TEST(BlockCaps, APolarStereographicMapHoldsEveryTexelACapSamples) {

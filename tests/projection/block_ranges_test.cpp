@@ -38,14 +38,14 @@ bool holdsData(int column) { return column % 7 != 0 || column > 250; }
 
 TEST(BlockRanges, StoredRangesHoldEveryValueOfTheirBlocks) {
   constexpr int kWidth = 300, kHeight = 200;
-  BlockRanges counted(kWidth, kHeight);
+  BlockRanges counted(kWidth, kHeight, 64);
   for (int row = 0; row < kHeight; ++row)
     for (int column = 0; column < kWidth; ++column)
       if (holdsData(column)) counted.count(column, row, valueAt(column, row));
   const Items items = stored(counted);
   const std::optional<BlockRanges> read = BlockRanges::fromMetadata(kWidth, kHeight, lookup(items));
   ASSERT_TRUE(read);
-  EXPECT_EQ(read->blockTexels(), BlockRanges::kBlockTexels);
+  EXPECT_EQ(read->blockTexels(), 64);
   for (int row = 0; row < kHeight; ++row)
     for (int column = 0; column < kWidth; ++column) {
       if (!holdsData(column)) continue;
@@ -63,13 +63,15 @@ TEST(BlockRanges, StoredRangesHoldEveryValueOfTheirBlocks) {
   EXPECT_FALSE(read->holdsGaps(4, 3)) << "columns 256 to 299 all hold data";
 }
 
-// 40000 x 20000 texels in blocks of 64 are 195,625 blocks: stored in blocks of 128, 48,907 of them.
+// 40000 x 20000 texels in blocks of 64 are 195,625 blocks: stored in blocks of 128, 48,907 of them. A small
+// raster keeps small blocks: a 15' global geoid blocks of 8 texels, 2 degrees.
 TEST(BlockRanges, ALargeRasterIsStoredInLargerBlocks) {
   constexpr int kWidth = 40000, kHeight = 20000;
-  EXPECT_EQ(BlockRanges::storedBlockTexels(kWidth, kHeight), 128);
-  EXPECT_EQ(BlockRanges::storedBlockTexels(4096, 4096), 64);
-  EXPECT_EQ(BlockRanges::storedBlockTexels(46080, 23040), 128);
-  BlockRanges counted(kWidth, kHeight);
+  EXPECT_EQ(BlockRanges::blockTexelsFor(kWidth, kHeight), 128);
+  EXPECT_EQ(BlockRanges::blockTexelsFor(4096, 4096), 16);
+  EXPECT_EQ(BlockRanges::blockTexelsFor(46080, 23040), 128);
+  EXPECT_EQ(BlockRanges::blockTexelsFor(1440, 721), 8);
+  BlockRanges counted(kWidth, kHeight, 64);
   std::mt19937 random(3);
   std::uniform_int_distribution<int> column(0, kWidth - 1), row(0, kHeight - 1);
   std::vector<std::array<int, 2>> texels;
@@ -81,7 +83,7 @@ TEST(BlockRanges, ALargeRasterIsStoredInLargerBlocks) {
   const std::optional<BlockRanges> read = BlockRanges::fromMetadata(kWidth, kHeight, lookup(items));
   ASSERT_TRUE(read);
   EXPECT_EQ(read->blockTexels(), 128);
-  EXPECT_LE(std::size_t(read->columns()) * std::size_t(read->rows()), BlockRanges::kMostStoredBlocks);
+  EXPECT_LE(std::size_t(read->columns()) * std::size_t(read->rows()), BlockRanges::kMostBlocks);
   for (const auto& [x, y] : texels) {
     const BlockRanges::Block& block = read->at(x / 128, y / 128);
     ASSERT_LE(block.least, valueAt(x, y));
@@ -93,14 +95,14 @@ TEST(BlockRanges, ALargeRasterIsStoredInLargerBlocks) {
 }
 
 TEST(BlockRanges, ItemsThatDoNotFitTheRasterOrAreDamagedAreRefused) {
-  BlockRanges counted(300, 200);
+  BlockRanges counted(300, 200, 64);
   counted.count(10, 10, 5.0);
   Items items = stored(counted);
   EXPECT_TRUE(BlockRanges::fromMetadata(300, 200, lookup(items)));
   EXPECT_TRUE(BlockRanges::inMetadata(lookup(items)));
   EXPECT_FALSE(BlockRanges::fromMetadata(400, 200, lookup(items))) << "another raster's blocks";
   EXPECT_TRUE(BlockRanges::fromMetadata(310, 200, lookup(items))) << "the same 5 x 4 blocks: nothing tells it";
-  for (const std::string texels : {"96", "32", "64x", "-64", ""}) {
+  for (const std::string texels : {"96", "4", "64x", "-64", ""}) {
     Items wrong = items;
     wrong["STRATA_BLOCK_TEXELS"] = texels;
     EXPECT_FALSE(BlockRanges::fromMetadata(300, 200, lookup(wrong))) << "blocks of '" << texels << "'";

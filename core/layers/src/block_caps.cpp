@@ -12,16 +12,17 @@ namespace strata {
 namespace {
 
 // Samples along each edge of a block, corners included: the cap from them holds the block's image with the
-// margin below for any projection smooth at the scale of a block (64 texels; larger where `strata tile`
-// stored fewer, at most about a degree of a global map: BlockRanges::kMostStoredBlocks).
+// margin below for any projection smooth at the scale of a block (8 texels or more, at most about a degree of a
+// global map: BlockRanges::kMostBlocks).
 constexpr int kEdgeSamples = 8;
-// Block caps are widened by a tenth: the bilinear filter reads a texel up to a texel beyond its block (about
-// 2 % of a block's half diagonal) and the edges bulge between samples.
+// The bilinear filter reads the texels whose centres lie within a texel each way of a point: a texel's diagonal
+// beyond the block's outer texel centres. Caps are widened by that, then by a tenth, for the bulge of the
+// edges between their samples.
+constexpr double kFilterReach = std::numbers::sqrt2;
 constexpr double kCapMargin = 1.1;
 // Points on a cap's rim a query tests to lie inside the raster, a twentieth beyond the rim.
 constexpr int kRimSamples = 32;
 constexpr double kRimMargin = 1.05;
-constexpr double kEdgeInset = 1e-6;
 
 std::vector<BlockValues> valuesOf(const BlockRanges& ranges) {
   std::vector<BlockValues> values;
@@ -35,6 +36,11 @@ std::vector<BlockValues> valuesOf(const BlockRanges& ranges) {
 
 BlockValues spanning(const BlockValues& a, const BlockValues& b) {
   return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps};
+}
+
+// Whether `outer` holds every direction of `inner`.
+bool holds(const SphericalCap& outer, const SphericalCap& inner) {
+  return angleBetween(outer.centre, inner.centre) + inner.angle <= outer.angle;
 }
 
 // The point `angle` from the cap's centre in direction `turn` (rad about the centre).
@@ -66,17 +72,17 @@ int BlockCaps::columnsAt(std::size_t level) const { return ((layout_.columns() -
 
 int BlockCaps::rowsAt(std::size_t level) const { return ((layout_.rows() - 1) >> level) + 1; }
 
-// The cap around the block's edges as the georeference places them; the whole sphere where some edge point
-// lies outside the projection's domain.
+// The cap around the centres of the block's outer texels as the georeference places them, widened by the
+// filter's reach; the whole sphere where some lies outside the projection's domain. Texel centres, not the
+// block's edges: a global map's edges may lie half a texel beyond a pole, where no projection is defined, and
+// a HEALPix strip's grids meet in the raster though not on the body.
 SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
-  // The far edges a millionth of a block inside: where grids meet in the raster though not on the body (a
-  // HEALPix strip's faces), a point on the edge is taken for the next grid's.
-  const double side = layout_.blockTexels, inset = kEdgeInset * side;
-  const double x0 = blockColumn * side, y0 = blockRow * side;
-  const double x1 = std::min(x0 + side, double(layout_.width)) - inset;
-  const double y1 = std::min(y0 + side, double(layout_.height)) - inset;
+  const double side = layout_.blockTexels;
+  const double x0 = blockColumn * side + 0.5, y0 = blockRow * side + 0.5;
+  const double x1 = std::min(blockColumn * side + side, double(layout_.width)) - 0.5;
+  const double y1 = std::min(blockRow * side + side, double(layout_.height)) - 0.5;
   const std::array<double, 6>& t = georeference_.geotransform;
-  std::vector<glm::dvec3> edge;
+  std::vector<glm::dvec3> edge;  // sample i of the four edges at 4 i to 4 i + 3
   for (int i = 0; i < kEdgeSamples; ++i) {
     const double s = double(i) / kEdgeSamples;
     for (const glm::dvec2 texel : {glm::dvec2(x0 + s * (x1 - x0), y0), glm::dvec2(x1, y0 + s * (y1 - y0)),
@@ -87,8 +93,13 @@ SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
       edge.push_back(directionOf(*lonlat));
     }
   }
+  // The largest angle a texel spans along the edges: the samples of an edge lie (its texels) / kEdgeSamples apart.
+  const std::array<double, 2> step{(x1 - x0) / kEdgeSamples, (y1 - y0) / kEdgeSamples};
+  double texel = 0.0;
+  for (std::size_t k = 0; k + 4 < edge.size(); ++k)
+    if (step[k % 2] > 0.0) texel = std::max(texel, angleBetween(edge[k], edge[k + 4]) / step[k % 2]);
   const SphericalCap cap = capAround(edge);
-  return {cap.centre, std::min(cap.angle * kCapMargin, std::numbers::pi)};
+  return {cap.centre, std::min((cap.angle + kFilterReach * texel) * kCapMargin, std::numbers::pi)};
 }
 
 void BlockCaps::addCoarserLevel() {
@@ -111,7 +122,7 @@ void BlockCaps::addCoarserLevel() {
 void BlockCaps::gather(std::size_t level, int column, int row, const SphericalCap& cap, BlockValues& found) const {
   const Group& group = levels_[level][std::size_t(row) * columnsAt(level) + column];
   if (!group.cap.meets(cap)) return;
-  if (level == 0) {
+  if (level == 0 || holds(cap, group.cap)) {  // every block below meets the cap: their values are the group's
     found = spanning(found, group.values);
     return;
   }

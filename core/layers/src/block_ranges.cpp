@@ -35,10 +35,10 @@ BlockRanges::BlockRanges(int width, int height, int blockTexels)
       rows_(int((std::int64_t(height) + blockTexels - 1) / blockTexels)),
       blocks_(std::size_t(columns_) * std::size_t(rows_)) {}
 
-int BlockRanges::storedBlockTexels(int width, int height) {
-  int side = kBlockTexels;
+int BlockRanges::blockTexelsFor(int width, int height) {
+  int side = kLeastBlockTexels;
   while (((std::int64_t(width) + side - 1) / side) * ((std::int64_t(height) + side - 1) / side) >
-         std::int64_t(kMostStoredBlocks))
+         std::int64_t(kMostBlocks))
     side *= 2;
   return side;
 }
@@ -85,7 +85,7 @@ BlockRanges BlockRanges::coarsened() const {
 // Per block three words: the least and greatest value as floats, and the texels holding no data (at most
 // 2^32 - 1, which still tells a block with gaps from one without).
 std::vector<std::pair<std::string, std::string>> BlockRanges::metadataItems() const {
-  if (blocks_.size() > kMostStoredBlocks) return coarsened().metadataItems();
+  if (blocks_.size() > kMostBlocks) return coarsened().metadataItems();
   std::vector<std::uint32_t> words;
   words.reserve(blocks_.size() * 3);
   for (int row = 0; row < rows_; ++row)
@@ -107,7 +107,7 @@ std::optional<BlockRanges> BlockRanges::fromMetadata(int width, int height, cons
   if (!texels || !text) return std::nullopt;
   char* end = nullptr;
   const long blockTexels = std::strtol(texels, &end, 10);
-  if (*end != '\0' || blockTexels < kBlockTexels || blockTexels > kMostBlockTexels ||
+  if (*end != '\0' || blockTexels < kLeastBlockTexels || blockTexels > kMostBlockTexels ||
       !std::has_single_bit(std::uint64_t(blockTexels)))
     return std::nullopt;
   BlockRanges ranges(width, height, int(blockTexels));

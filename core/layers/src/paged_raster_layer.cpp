@@ -6,6 +6,13 @@
 #include "layers/healpix_page_caps.hpp"
 
 namespace strata {
+namespace {
+
+// Whether fragment stages let the sampler filter the atlas (slotBilinear in paged_texture.glsl): colour pages
+// only, whose atlas filters linearly; heights and values are filtered by hand.
+std::string bySamplerOf(PageFormat format) { return format == PageFormat::Colour ? "true" : "false"; }
+
+}  // namespace
 
 PagedRasterLayer::PagedRasterLayer(std::string nodeId, LayerKind kind)
     : ProjectedRasterLayer(std::move(nodeId), kind) {}
@@ -31,9 +38,9 @@ std::string PagedRasterLayer::glsl() const {
                  "_indexBase;\n"
                  "uniform int " +
                  p + "_levels;\n",
-             "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p + "_levels, " + p +
-                 "_size, " + p + "_texel(at, p), stepX, stepY, repeatX, " + (onHealpixFaces() ? p + "_size.y" : "0") +
-                 ")") +
+             "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) + ", " + p +
+                 "_indexBase, " + p + "_levels, " + p + "_size, " + p + "_texel(at, p), stepX, stepY, repeatX, " +
+                 (onHealpixFaces() ? p + "_size.y" : "0") + ")") +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 
@@ -51,8 +58,8 @@ std::string PagedRasterLayer::faceSamplingGlsl() const {
          "_size.y);\n"
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
          "  return " +
-         p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + p + "_indexBase, " + p +
-         "_levels, " + p +
+         p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) +
+         ", " + p + "_indexBase, " + p + "_levels, " + p +
          "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
          "}\n";
 }

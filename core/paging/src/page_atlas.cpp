@@ -43,10 +43,11 @@ PageAtlas::PageAtlas(PageFormat format, int capacity) : format_(format), slots_(
     texture_ = 0;
     return;
   }
-  // Shaders fetch texels and filter by hand (paged_texture.glsl); nearest keeps any stray filtered
-  // access from blending slots.
-  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  // Shaders filter colour pages bilinearly by the sampler, within a slot, in fragment stages, and the rest by
+  // hand with texel fetches (paged_texture.glsl, slotBilinear); no mip levels: pages of each level have slots.
+  const GLint filter = format == PageFormat::Colour ? GL_LINEAR : GL_NEAREST;
+  glTextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, filter);
+  glTextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, filter);
 }
 
 PageAtlas::~PageAtlas() {

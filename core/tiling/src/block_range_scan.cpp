@@ -8,7 +8,7 @@ namespace strata::tiling {
 
 BlockRanges scanBlockRanges(GDALDataset& raster) {
   const int width = raster.GetRasterXSize(), height = raster.GetRasterYSize();
-  BlockRanges blocks(width, height, BlockRanges::storedBlockTexels(width, height));
+  BlockRanges blocks(width, height, BlockRanges::blockTexelsFor(width, height));
   visitTexelWindows(raster, [&](const TexelWindow& window) {
     for (std::size_t i = 0; i < window.values.size(); ++i)
       if (window.mask[i] != 0 && std::isfinite(window.values[i]))

@@ -19,23 +19,25 @@ namespace strata {
 // tile` stored in the file (metadataItems), for a raster of any size.
 class BlockRanges {
  public:
-  // 64 texels a side: 4,096 blocks for a 4096 x 4096 raster, each a few vertex spacings of the finest patch
-  // that covers it, so that the ranges are about as tight as any patch can use.
-  static constexpr int kBlockTexels = 64;
-  // At most 65,536 blocks go into a file (768 KiB, 1 MiB of metadata text): a 46080 x 23040 global DEM
-  // (MOLA's 463 m) keeps blocks of 128 texels, 59 km; blocks are doubled until they fit.
-  static constexpr std::size_t kMostStoredBlocks = 65536;
-
+  // 8 texels a side at least: a global 15' geoid (1440 x 721) is bounded every 2 degrees, where blocks of 64
+  // bounded it every 16 and each patch inside one took the whole block's relief, as if on rough ground
+  // (docs/geometry.md, "Level of detail by screen-space error").
+  static constexpr int kLeastBlockTexels = 8;
+  // At most 65,536 blocks (1.5 MiB here, 768 KiB in a file, 1 MiB of its metadata text): a 4096 x 4096 raster
+  // keeps blocks of 16 texels, a 46080 x 23040 global DEM (MOLA's 463 m) blocks of 128, 59 km; blocks are
+  // doubled until they fit.
+  static constexpr std::size_t kMostBlocks = 65536;
   struct Block {
     double least = std::numeric_limits<double>::infinity();
     double greatest = -std::numeric_limits<double>::infinity();
     std::int64_t counted = 0;  // texels that hold data
   };
 
-  // Blocks of `blockTexels` a side (a power of two, at least kBlockTexels).
-  BlockRanges(int width, int height, int blockTexels = kBlockTexels);
-  // The least block side from kBlockTexels up whose blocks of a width x height raster a file can store.
-  static int storedBlockTexels(int width, int height);
+  // Blocks of `blockTexels` a side (a power of two, at least kLeastBlockTexels).
+  BlockRanges(int width, int height, int blockTexels);
+  // The least block side from kLeastBlockTexels up that makes at most kMostBlocks blocks of a width x height
+  // raster: counted as a source opens it and stored by `strata tile` alike.
+  static int blockTexelsFor(int width, int height);
 
   // A texel that holds data (drawn: finite and let through by the mask).
   void count(int column, int row, double value);
@@ -55,7 +57,7 @@ class BlockRanges {
   BlockRanges coarsened() const;
 
   // The items that store the ranges in a file's metadata (GDAL's default domain), coarsened to at most
-  // kMostStoredBlocks; extremes as floats rounded outwards, so that they still bound every value. And the
+  // kMostBlocks; extremes as floats rounded outwards, so that they still bound every value. And the
   // ranges read back from them (`item` gives an item's value, or null): none where the file has none or
   // they do not fit a raster of width x height.
   std::vector<std::pair<std::string, std::string>> metadataItems() const;
