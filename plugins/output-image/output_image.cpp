@@ -16,6 +16,8 @@
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
 
+#include "body_outline.hpp"
+#include "outline_fan.hpp"
 #include "plugin_shaders.hpp"
 #include "translucent_surfaces.hpp"
 
@@ -85,6 +87,8 @@ const ParameterBindings<ImageSettings>& imageParameters() {
   return bindings;
 }
 
+const glm::vec3 kBackground(0.0f);  // where there is no body: black, as space
+
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
@@ -108,29 +112,43 @@ class ImageOutput : public Node, public FrameOutput {
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
                     (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
     }
-    program_ =
+    program_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "output-image/outline.vert", gpu.shaders->expand("output-image/outline.vert")},
+         {GL_FRAGMENT_SHADER, "output-image/composite.frag",
+          gpu.shaders->expand("output-image/composite.frag",
+                              {{"STRATA_DEFERRED_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
+                               {"STRATA_SAMPLES", std::to_string(samples)},
+                               {"STRATA_DISPLAY_GLSL", displayGlsl_},
+                               {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                               {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                               {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+    background_ =
         ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
-                       {GL_FRAGMENT_SHADER, "output-image/composite.frag",
-                        gpu.shaders->expand("output-image/composite.frag",
-                                            {{"STRATA_DEFERRED_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
-                                             {"STRATA_SAMPLES", std::to_string(samples)},
-                                             {"STRATA_DISPLAY_GLSL", displayGlsl_},
-                                             {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                                             {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                                             {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+                       {GL_FRAGMENT_SHADER, "output-image/background.frag",
+                        gpu.shaders->expand("output-image/background.frag", {{"STRATA_DISPLAY_GLSL", displayGlsl_}})}});
     triangle_ = std::make_unique<FullscreenTriangle>();
+    fan_ = std::make_unique<OutlineFan>();
   }
 
+  // The layers are composed within the body's outline; around it, where no surface can show, the frame is
+  // the background.
   void render(const FrameState& frame) override {
     if (frame_.width() != frame.view.width || frame_.height() != frame.view.height)
       frame_ = Framebuffer(frame.view.width, frame.view.height, {GL_RGBA8});
     frame_.bind();
+    const double highest = std::max({geometry_->heights().highest, translucent_.highest(), 0.0});
+    const BodyOutline outline = bodyOutline(frame.view, frame.body->radius + highest);
+    if (!outline.wholeFrame) {
+      background_.use();
+      background_.set("background", kBackground);
+      triangle_->draw();
+    }
     program_.use();
     program_.set("lightDirection", lightDirection(frame.view));
     program_.set("ambient", float(settings_.ambient));
     program_.set("shade", settings_.lambert ? 1 : 0);
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
-    program_.set("background", glm::vec3(0.0f));
+    program_.set("background", kBackground);
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
@@ -138,7 +156,7 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);
-    triangle_->draw();
+    fan_->draw(outline.fan);
   }
 
   void update(const ParameterSet& parameters) override { settings_ = imageParameters().read(parameters); }
@@ -202,7 +220,9 @@ class ImageOutput : public Node, public FrameOutput {
   std::vector<const Layer*> surface_;
   TranslucentSurfaces translucent_;
   ShaderProgram program_;
+  ShaderProgram background_;
   std::unique_ptr<FullscreenTriangle> triangle_;  // made with the GL resources, not at construction
+  std::unique_ptr<OutlineFan> fan_;
   Framebuffer frame_;
 };
 

@@ -35,6 +35,12 @@ bool TranslucentSurfaces::sampledAs(int samples) const {
   return std::ranges::all_of(geometries_, [samples](const SurfaceGeometry* g) { return g->samples() == samples; });
 }
 
+double TranslucentSurfaces::highest() const {
+  double highest = 0.0;
+  for (const SurfaceGeometry* geometry : geometries_) highest = std::max(highest, geometry->heights().highest);
+  return highest;
+}
+
 // The colour of translucent surface i at `pixel`, lit as the opaque one is, and its layer's coverage: where
 // that has no data the surface is not there (its geometry holds the bare sphere).
 std::string TranslucentSurfaces::colourOf(std::size_t i) const {

@@ -27,6 +27,8 @@ class TranslucentSurfaces {
   // Asks each geometry for `samples` per pixel (SurfaceGeometry::requestSamples); whether each draws `samples`.
   void requestSamples(int samples);
   bool sampledAs(int samples) const;
+  // The highest of the geometries' heights (m above the body's radius), 0 where there are none.
+  double highest() const;
 
   // What composite.frag's STRATA_TRANSLUCENT_GLSL becomes: the layers' GLSL and
   //   vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth)
