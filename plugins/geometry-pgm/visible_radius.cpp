@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <strata/gl/texture.hpp>
+
 #include "reference_spheres.hpp"
 
 namespace strata::pgm {
@@ -29,7 +31,7 @@ float fromOrderedBits(std::uint32_t ordered) {
 VisibleRadius::VisibleRadius(const ShaderLibrary& library, int samples)
     : program_({{GL_COMPUTE_SHADER, "geometry-pgm/pgm_least_radius.comp",
                  library.expand("geometry-pgm/pgm_least_radius.comp",
-                                {{"STRATA_HEIGHTS_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
+                                {{"STRATA_HEIGHTS_SAMPLER", glslSamplerFor(samples)},
                                  {"STRATA_HEIGHT_SAMPLES", std::to_string(samples)}})}}) {
   glCreateBuffers(1, &least_);
   glNamedBufferStorage(least_, sizeof(std::uint32_t), nullptr, 0);

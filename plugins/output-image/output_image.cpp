@@ -10,6 +10,7 @@
 #include <strata/colour_config.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/gl/texture.hpp>
 #include <strata/plugin/geometry.hpp>
 #include <strata/plugin/layer.hpp>
 #include <strata/plugin/output.hpp>
@@ -115,13 +116,12 @@ class ImageOutput : public Node, public FrameOutput {
     program_ = ShaderProgram(
         {{GL_VERTEX_SHADER, "output-image/outline.vert", gpu.shaders->expand("output-image/outline.vert")},
          {GL_FRAGMENT_SHADER, "output-image/composite.frag",
-          gpu.shaders->expand("output-image/composite.frag",
-                              {{"STRATA_DEFERRED_SAMPLER", samples > 1 ? "sampler2DMS" : "sampler2D"},
-                               {"STRATA_SAMPLES", std::to_string(samples)},
-                               {"STRATA_DISPLAY_GLSL", displayGlsl_},
-                               {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                               {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                               {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+          gpu.shaders->expand("output-image/composite.frag", {{"STRATA_DEFERRED_SAMPLER", glslSamplerFor(samples)},
+                                                              {"STRATA_SAMPLES", std::to_string(samples)},
+                                                              {"STRATA_DISPLAY_GLSL", displayGlsl_},
+                                                              {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                                                              {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                                                              {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
     background_ =
         ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
                        {GL_FRAGMENT_SHADER, "output-image/background.frag",

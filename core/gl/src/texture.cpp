@@ -44,4 +44,6 @@ Texture& Texture::operator=(Texture&& other) noexcept {
 
 int mipLevels(int width, int height) { return std::bit_width(static_cast<unsigned>(std::max(width, height))); }
 
+const char* glslSamplerFor(int samples) { return samples > 1 ? "sampler2DMS" : "sampler2D"; }
+
 }  // namespace strata

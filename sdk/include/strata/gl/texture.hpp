@@ -36,5 +36,9 @@ class Texture {
 // Levels of a full mip chain for a width x height image.
 int mipLevels(int width, int height);
 
+// The GLSL sampler type that reads a texture of `samples` per texel (Texture::multisampled): "sampler2DMS" where
+// it is over 1, texelFetch's last argument then the sample; else "sampler2D".
+const char* glslSamplerFor(int samples);
+
 }  // namespace strata
 STRATA_EXPORTS_END
