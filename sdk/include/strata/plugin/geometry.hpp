@@ -26,7 +26,9 @@ class SurfaceGeometry {
   virtual ~SurfaceGeometry() = default;
   virtual const Framebuffer& gbuffer() const = 0;
   // The heights its surface keeps within, once the node has opened (strata/plugin/height_input.hpp settles them):
-  // the page cache measures distances to the ground they bound (groundLevelNear). The bare sphere: {0, 0}.
+  // the page cache measures distances to the ground they bound (groundLevelNear), and output.image composes
+  // only within the outline of the body's radius plus `highest`, so a surface drawn above it is cut off at the
+  // limb. The bare sphere: {0, 0}.
   virtual HeightRange heights() const { return {}; }
   // On the GL thread, after the frame: GPU times wait for the GPU to finish it.
   virtual GeometryStatistics statistics() const { return {}; }
