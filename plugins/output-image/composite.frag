@@ -27,26 +27,32 @@ uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred b
 
 out vec4 colour;
 
+// Whether a sample of the surface buffer lies off the body: the buffer is cleared to zero there. On the body
+// every channel is zero only at the reference on a pole, which reads as off the body to footprint() alone and
+// only makes it take the other neighbour.
+bool offBody(vec4 surface) { return surface == vec4(0.0); }
+
 // The change of longitude and latitude to the next pixel along `step`, computed from the deferred
 // coordinates ([Kooima 2008, §3.4.3]) rather than by the dFdx of §4.1.2: the 2 pi jump where patches unwrap
 // longitude differently is removed. Of the pixels ahead and behind, the nearer on the surface is taken: at
 // the body's edge or a silhouette the other one lies on the sky or on farther ground. Sample `s` of each.
-vec2 footprint(DeferredBuffer surfaces, DeferredBuffer shading, ivec2 pixel, int s, ivec2 step, vec2 here) {
-  vec2 ahead = texelFetch(surfaces, pixel + step, s).xy - here, behind = here - texelFetch(surfaces, pixel - step, s).xy;
+vec2 footprint(DeferredBuffer surfaces, ivec2 pixel, int s, ivec2 step, vec2 here) {
+  vec4 next = texelFetch(surfaces, pixel + step, s), previous = texelFetch(surfaces, pixel - step, s);
+  vec2 ahead = next.xy - here, behind = here - previous.xy;
   ahead.x -= TWO_PI * round(ahead.x / TWO_PI);
   behind.x -= TWO_PI * round(behind.x / TWO_PI);
-  if (texelFetch(shading, pixel + step, s).a == 0.0) return behind;
-  if (texelFetch(shading, pixel - step, s).a == 0.0) return ahead;
+  if (offBody(next)) return behind;
+  if (offBody(previous)) return ahead;
   return dot(ahead, ahead) < dot(behind, behind) ? ahead : behind;
 }
 
-// The surface point sample `s` of a geometry's deferred buffers (`surfaces`, `shading`) holds at `pixel`.
-SurfacePoint surfacePointAt(DeferredBuffer surfaces, DeferredBuffer shading, ivec2 pixel, int s) {
+// The surface point sample `s` of a geometry's surface buffer holds at `pixel`.
+SurfacePoint surfacePointAt(DeferredBuffer surfaces, ivec2 pixel, int s) {
   vec4 here = texelFetch(surfaces, pixel, s);
   vec2 lonlat = referenceLonlat + here.xy;
   float nz = sign(lonlat.y) * sqrt(max(0.0, 1.0 - here.z * here.z - here.w * here.w));  // z's sign is latitude's
-  return SurfacePoint(lonlat, vec3(here.z, here.w, nz), footprint(surfaces, shading, pixel, s, ivec2(1, 0), here.xy),
-                      footprint(surfaces, shading, pixel, s, ivec2(0, 1), here.xy), here.xy);
+  return SurfacePoint(lonlat, vec3(here.z, here.w, nz), footprint(surfaces, pixel, s, ivec2(1, 0), here.xy),
+                      footprint(surfaces, pixel, s, ivec2(0, 1), here.xy), here.xy);
 }
 
 // The light on a surface of shading normal `normal`.
@@ -66,7 +72,7 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   vec4 shading = texelFetch(shadingBuffer, pixel, s);
   reach = 0.0;
   if (shading.a == 0.0) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
-  SurfacePoint p = surfacePointAt(surfaceBuffer, shadingBuffer, pixel, s);
+  SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
   vec4 accumulated = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE

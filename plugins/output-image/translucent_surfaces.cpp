@@ -48,7 +48,7 @@ std::string TranslucentSurfaces::colourOf(std::size_t i) const {
   return "vec4 translucentColour" + n +
          "(ivec2 pixel, int s) {\n"
          "  SurfacePoint p = surfacePointAt(translucentSurface" +
-         n + ", translucentShading" + n +
+         n +
          ", pixel, s);\n"
          "  vec4 v = " +
          layers_[i]->samplingFunction() +

@@ -100,13 +100,30 @@ INSTANTIATE_TEST_SUITE_P(Cameras, SurfaceColour,
                            return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);
                          });
 
-TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
+// A regional raster `width` by 40 degrees centred on `centre` (its x range as written, e.g. 150 to 210 across
+// the antimeridian), seen from above longitude `cameraLon`, far from the raster's centre or over it: the frame's
+// reference lies there, so the raster's texels are addressed from offsets that cross the seam both ways, and
+// across the map's own seam, half a turn from its centre, where the raster is wider than half the body.
+struct PatchCase {
+  const char* name;
+  double centre, width, cameraLon;
+};
+
+// Longitude `lon` less `centre`, within half a turn (degrees).
+double fromCentre(double lon, double centre) { return std::remainder(lon - centre, 360.0); }
+
+class PatchExtent : public ::testing::TestWithParam<PatchCase> {};
+
+TEST_P(PatchExtent, OutsideALayersExtentTheEmptyColourShows) {
+  const PatchCase& c = GetParam();
   TemporaryDirectory directory;
-  writeFloatRaster(directory.path() / "patch.tif", 60, 40, {-30, -20, 30, 20}, [](int, int) { return 200.0f; });
+  writeFloatRaster(directory.path() / "patch.tif", int(c.width), 40,
+                   {c.centre - 0.5 * c.width, -20, c.centre + 0.5 * c.width, 20}, [](int, int) { return 200.0f; });
   auto pipeline =
       directory.write("patch.yaml",
-                      "strata: 1\ncamera: {lon: 0, lat: 0, altitude: 1.2e7}\nnodes:\n"
-                      "  patch: {type: source.gdal, path: " +
+                      "strata: 1\ncamera: {lon: " + std::to_string(c.cameraLon) +
+                          ", lat: 0, altitude: 1.2e7}\nnodes:\n"
+                          "  patch: {type: source.gdal, path: " +
                           (directory.path() / "patch.tif").string() +
                           ", kind: luminance, scale: 0.00392156862745098}\n"  // 200/255 in linear light
                           "  globe: {type: geometry.icosahedral}\n"
@@ -120,8 +137,9 @@ TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
     for (int x = 2; x < 320; x += 4) {
       auto hit = raycastSphere(view, engine->pipeline().body.radius, x, y);
       if (!hit || hit->incidence < 0.3) continue;
-      const bool wellInside = std::abs(hit->lon) < 28 && std::abs(hit->lat) < 18;
-      const bool wellOutside = std::abs(hit->lon) > 32 || std::abs(hit->lat) > 22;
+      const double east = std::abs(fromCentre(hit->lon, c.centre));
+      const bool wellInside = east < 0.5 * c.width - 2 && std::abs(hit->lat) < 18;
+      const bool wellOutside = east > 0.5 * c.width + 2 || std::abs(hit->lat) > 22;
       if (!wellInside && !wellOutside) continue;
       const int expected = wellInside ? 229 : 118;
       EXPECT_NEAR(image.at(x, y)[0], expected, 2) << x << "," << y << " lon " << hit->lon << " lat " << hit->lat;
@@ -130,6 +148,15 @@ TEST(SurfaceColour, OutsideALayersExtentTheEmptyColourShows) {
   EXPECT_GT(inside, 100);
   EXPECT_GT(outside, 100);
 }
+
+INSTANTIATE_TEST_SUITE_P(Places, PatchExtent,
+                         ::testing::Values(PatchCase{"AtTheOrigin", 0, 60, 0},
+                                           PatchCase{"AcrossTheAntimeridian", 180, 60, 180},
+                                           PatchCase{"AcrossTheAntimeridianSeenFromTheWest", 180, 60, 130},
+                                           PatchCase{"AcrossTheAntimeridianSeenFromTheEast", 180, 60, -130},
+                                           PatchCase{"EastOfTheAntimeridianSeenFromTheWest", 200, 60, 150},
+                                           PatchCase{"AllButAGapSeenOverTheGap", 180, 300, 0}),
+                         [](const ::testing::TestParamInfo<PatchCase>& test) { return test.param.name; });
 
 }  // namespace
 }  // namespace strata::test

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <strata/gl/shader_program.hpp>
 #include <strata/plugin/healpix_pyramid.hpp>
@@ -66,60 +67,73 @@ ValueRange ProjectedRasterLayer::transformed(double rawLeast, double rawGreatest
 
 void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int height) {
   georeference_ = std::move(georeference);
+  reference_.reset();  // the terms about it are the old raster's
   const std::array<glm::dvec4, 2> projection = georeference_.projection->glslParameters();
   projection_ = {glm::vec4(projection[0]), glm::vec4(projection[1])};
   mapToTexture_ = mapToTextureOf(georeference_, width, height);
   size_ = glm::ivec2(width, height);
   repeatX_ = spansPeriod(georeference_, width);
+  affine_ = georeference_.projection->affineInLonLat();
+  if (affine_) setAffineTerms(glm::dvec2(0.0));  // until told a reference: offsets from (0, 0), the lon/lat
   if (blockRanges_) blockCaps_ = std::make_shared<const BlockCaps>(blockRanges_, georeference_, repeatX_);
+}
+
+std::optional<glm::dvec2> ProjectedRasterLayer::textureCoordinates(glm::dvec2 lonlat) const {
+  const std::array<double, 6>& t = georeference_.geotransform;
+  const std::optional<glm::dvec2> xy = georeference_.projection->forward(lonlat);
+  if (!xy) return std::nullopt;
+  return glm::dvec2((xy->x - t[0]) / (t[1] * size_.x), (xy->y - t[3]) / (t[5] * size_.y));
 }
 
 void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
   if (reference_ == referenceLonlat) return;
   reference_ = referenceLonlat;
-  const std::array<double, 6>& t = georeference_.geotransform;
-  const double uSpan = t[1] * size_.x, vSpan = t[5] * size_.y;
-  const Projection& projection = *georeference_.projection;
-  const TextureMapping mapping = [&](glm::dvec2 lonlat) -> std::optional<glm::dvec2> {
-    const std::optional<glm::dvec2> xy = projection.forward(lonlat);
-    if (!xy) return std::nullopt;
-    return glm::dvec2((xy->x - t[0]) / uSpan, (xy->y - t[3]) / vSpan);
-  };
+  if (affine_) {
+    setAffineTerms(referenceLonlat);
+    return;
+  }
+  const TextureMapping mapping = [this](glm::dvec2 lonlat) { return textureCoordinates(lonlat); };
   const LocalTextureFrame frame =
       localTextureFrame(mapping, referenceLonlat, kRelativeTolerance / glm::dvec2(size_), repeatX_);
-  // A raster around the body: u at the reference taken into [0, 1), where float keeps its digits.
-  const glm::dvec2 uv(repeatX_ ? frame.uv.x - std::floor(frame.uv.x) : frame.uv.x, frame.uv.y);
-  referenceUv_ = glm::vec2(uv);
-  const glm::dvec2 texel = uv * glm::dvec2(size_);
-  referenceTexel_ = glm::ivec2(glm::floor(texel));
-  referenceFraction_ = glm::vec2(texel - glm::floor(texel));
+  setReferenceTexel(frame.uv);
   localTerms_ = {columns(frame.jacobian), columns(frame.hessianU), columns(frame.hessianV)};
   reach_ = float(frame.reach);
   tangent_ = frame.coordinates == LocalCoordinates::Tangent;
   referenceLatitude_ = glm::vec2(std::sin(referenceLonlat.y), std::cos(referenceLonlat.y));
 }
 
+void ProjectedRasterLayer::setReferenceTexel(glm::dvec2 uv) {
+  // A raster around the body: u at the reference taken into [0, 1), where float keeps its digits.
+  if (repeatX_) uv.x -= std::floor(uv.x);
+  referenceUv_ = glm::vec2(uv);
+  const glm::dvec2 texel = uv * glm::dvec2(size_);
+  referenceTexel_ = glm::ivec2(glm::floor(texel));
+  referenceFraction_ = glm::vec2(texel - glm::floor(texel));
+}
+
+// An affine projection's derivatives are the same everywhere: taken a radian either side of its centre, half a
+// turn from where it wraps, they are exact to rounding. The reference's longitude is taken within half a turn of
+// the centre as forward() takes it, and the centre's offset from there bounds the offsets the shader wraps.
+void ProjectedRasterLayer::setAffineTerms(glm::dvec2 referenceLonlat) {
+  constexpr double pi = std::numbers::pi;
+  const double centre = georeference_.projection->longitudeCentre();
+  const glm::dvec2 east = *textureCoordinates({centre + 1.0, 0.0}) - *textureCoordinates({centre - 1.0, 0.0});
+  const glm::dvec2 north = *textureCoordinates({centre, 0.5}) - *textureCoordinates({centre, -0.5});
+  localTerms_ = {columns(glm::dmat2(0.5 * east, north)), glm::vec4(0.0f), glm::vec4(0.0f)};
+  const double longitude = referenceLonlat.x - 2.0 * pi * std::floor((referenceLonlat.x - centre + pi) / (2.0 * pi));
+  setReferenceTexel(*textureCoordinates({longitude, referenceLonlat.y}));
+  centreFromReference_ = float(centre - longitude);
+  relative_ = reference_.has_value();
+}
+
 std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered) const {
   const std::string& p = prefix_;
-  const Projection& projection = *georeference_.projection;
   const bool colour = isColour(kind_);
   const std::string value = colour
                                 ? "vec4(t.rgb / t.a, t.a)"
                                 : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
   const std::string coverage = colour ? "t.a" : "t.g";
   return "#include \"strata/projected_raster.glsl\"\n"
-         "#include \"" +
-         projection.glslInclude() +
-         "\"\n"
-         "uniform vec4 " +
-         p +
-         "_projectionA;\n"
-         "uniform vec4 " +
-         p +
-         "_projectionB;\n"
-         "uniform vec4 " +
-         p +
-         "_mapToTexture;\n"
          "uniform vec2 " +
          p +
          "_scaleOffset;\n"
@@ -127,26 +141,8 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          p +
          "_repeatX;\n"
          "uniform ivec2 " +
-         p + "_size;\n" + declarations + "vec3 " + p +
-         "_coordinates(vec2 lonlat) {\n"
-         "  vec3 m = " +
-         projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p +
-         "_projectionB);\n"
-         "  return vec3(m.xy * " +
-         p + "_mapToTexture.xz + " + p +
-         "_mapToTexture.yw, m.z);\n"
-         "}\n"
-         "vec2 " +
-         p +
-         "_absoluteStep(vec3 at, vec2 lonlat, vec2 step) {\n"
-         "  return footprintStep(at, " +
-         p +
-         "_coordinates(steppedLonlat(lonlat, step)),\n"
-         "                       " +
-         p + "_coordinates(steppedLonlat(lonlat, -step)), " + p +
-         "_repeatX);\n"
-         "}\n" +
-         relativeGlsl() + texelGlsl() + "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
+         p + "_size;\n" + declarations + (affine_ ? affineGlsl() : absoluteGlsl() + relativeGlsl()) + texelGlsl() +
+         "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
          " : vec4(0.0); }\n"
          "vec4 " +
          p +
@@ -164,6 +160,43 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          "  return " +
          p + "_value(" + filtered +
          ");\n"
+         "}\n";
+}
+
+// Texture coordinates and footprint steps at absolute longitude and latitude, through the projection's GLSL.
+std::string ProjectedRasterLayer::absoluteGlsl() const {
+  const std::string& p = prefix_;
+  const Projection& projection = *georeference_.projection;
+  return "#include \"" + projection.glslInclude() +
+         "\"\n"
+         "uniform vec4 " +
+         p +
+         "_projectionA;\n"
+         "uniform vec4 " +
+         p +
+         "_projectionB;\n"
+         "uniform vec4 " +
+         p +
+         "_mapToTexture;\n"
+         "vec3 " +
+         p +
+         "_coordinates(vec2 lonlat) {\n"
+         "  vec3 m = " +
+         projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p +
+         "_projectionB);\n"
+         "  return vec3(m.xy * " +
+         p + "_mapToTexture.xz + " + p +
+         "_mapToTexture.yw, m.z);\n"
+         "}\n"
+         "vec2 " +
+         p +
+         "_absoluteStep(vec3 at, vec2 lonlat, vec2 step) {\n"
+         "  return footprintStep(at, " +
+         p +
+         "_coordinates(steppedLonlat(lonlat, step)),\n"
+         "                       " +
+         p + "_coordinates(steppedLonlat(lonlat, -step)), " + p +
+         "_repeatX);\n"
          "}\n";
 }
 
@@ -272,6 +305,55 @@ std::string ProjectedRasterLayer::relativeGlsl() const {
          "}\n";
 }
 
+// The same for a projection affine in longitude and latitude: u and v are the reference's plus the jacobian
+// times the point's offset from it, its longitude taken within half a turn of the map's centre, as the
+// projection takes it; exact at any distance, so there is no polynomial, no reach and no absolute path.
+std::string ProjectedRasterLayer::affineGlsl() const {
+  const std::string& p = prefix_;
+  return "#include \"strata/texel_address.glsl\"\n"
+         "uniform vec2 " +
+         p +
+         "_referenceUv;\n"
+         "uniform ivec2 " +
+         p +
+         "_referenceTexel;\n"
+         "uniform vec2 " +
+         p +
+         "_referenceFraction;\n"
+         "uniform vec4 " +
+         p +
+         "_jacobian;\n"
+         "uniform float " +
+         p +
+         "_centreFromReference;\n"
+         "uniform bool " +
+         p +
+         "_relative;\n"
+         "vec2 " +
+         p +
+         "_offset(SurfacePoint p) {\n"
+         "  vec2 d = " +
+         p +
+         "_relative ? p.fromReference : p.lonlat;\n"
+         "  d.x -= TWO_PI * floor((d.x - " +
+         p +
+         "_centreFromReference + PI) / TWO_PI);\n"
+         "  return mat2(" +
+         p +
+         "_jacobian) * d;\n"
+         "}\n"
+         "vec3 " +
+         p + "_at(SurfacePoint p) { return vec3(" + p + "_referenceUv + " + p +
+         "_offset(p), 1.0); }\n"
+         "TexelAddress " +
+         p + "_texel(vec3 at, SurfacePoint p) {\n" + "  return TexelAddress(" + p + "_referenceTexel, " + p +
+         "_referenceFraction + " + p + "_offset(p) * vec2(" + p +
+         "_size));\n"
+         "}\n"
+         "vec2 " +
+         p + "_step(vec3 at, SurfacePoint p, vec2 lonlatStep) { return mat2(" + p + "_jacobian) * lonlatStep; }\n";
+}
+
 // Where the layer's texels land, for compositors: texelStepsFunction() and edgeDistanceFunction().
 std::string ProjectedRasterLayer::texelGlsl() const {
   const std::string& p = prefix_;
@@ -331,6 +413,8 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_reach", reach_);
   program.set(prefix_ + "_tangent", tangent_ ? 1 : 0);
   program.set(prefix_ + "_referenceLatitude", referenceLatitude_);
+  program.set(prefix_ + "_centreFromReference", centreFromReference_);
+  program.set(prefix_ + "_relative", relative_ ? 1 : 0);
 }
 
 }  // namespace strata

@@ -57,6 +57,8 @@ class Equirectangular final : public Projection {
 
   std::optional<double> periodX() const override { return kTwoPi * radius_ * cosTs_; }
   void setLongitudeCentre(double centre) override { centre_ = centre; }
+  double longitudeCentre() const override { return centre_; }
+  bool affineInLonLat() const override { return true; }  // x = a cos(lat_ts) lon, y = a lat, plus offsets
 
   std::string glslInclude() const override { return "strata/projection/equirectangular.glsl"; }
   std::string glslFunction() const override { return "equirectangular"; }

@@ -45,7 +45,9 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   // sampled from each point's offset to the reference (SurfacePoint::fromReference), through the raster's
   // texture coordinates about the reference computed in double on the CPU, so that a centimetre texel is
   // addressed exactly anywhere on the body; farther away, through absolute longitude and latitude as
-  // before. Nodes call it each frame, from prepare(); a layer never told samples absolutely everywhere.
+  // before. A projection affine in longitude and latitude (Projection::affineInLonLat) is sampled from the
+  // offsets everywhere, exactly. Nodes call it each frame, from prepare(); a layer never told samples
+  // absolutely everywhere.
   void setReference(glm::dvec2 referenceLonlat);
 
  protected:
@@ -74,7 +76,13 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
 
  private:
   std::string texelGlsl() const;
+  std::string absoluteGlsl() const;
   std::string relativeGlsl() const;
+  std::string affineGlsl() const;
+  // The raster's texture coordinates (u, v) at `lonlat`, in double; empty where the projection is undefined.
+  std::optional<glm::dvec2> textureCoordinates(glm::dvec2 lonlat) const;
+  void setReferenceTexel(glm::dvec2 uv);
+  void setAffineTerms(glm::dvec2 referenceLonlat);
 
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
@@ -89,6 +97,7 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   glm::vec4 mapToTexture_{0.0f};           // u = x * .x + .y, v = y * .z + .w (GLSL map units)
   glm::ivec2 size_{0};                     // the raster's width and height
   bool repeatX_ = false;                   // the raster spans one period of a periodic projection
+  bool affine_ = false;                    // Projection::affineInLonLat()
   // Set by setReference(): the reference they were fitted for (a still camera keeps its fit), and the
   // texture coordinates about it, as uniforms.
   std::optional<glm::dvec2> reference_;
@@ -99,6 +108,10 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   float reach_ = 0.0f;                       // rad; 0: sampled absolutely
   bool tangent_ = false;                     // offsets in the tangent plane, else in longitude/latitude
   glm::vec2 referenceLatitude_{0.0f, 1.0f};  // sin and cos
+  // Affine projections: the longitude of the map's centre less the reference's (rad, within half a turn), and
+  // whether a reference was told (else offsets are taken from longitude and latitude 0).
+  float centreFromReference_ = 0.0f;
+  bool relative_ = false;
 };
 
 }  // namespace strata

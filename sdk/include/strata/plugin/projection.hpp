@@ -80,8 +80,15 @@ class Projection {
   // Periodic projections: the longitude (radians) around which forward() wraps, so that a raster whose
   // x range is, say, [0, 360) degrees sees longitudes in that range. Others ignore it.
   virtual void setLongitudeCentre(double) {}
+  // The longitude (rad) around which forward() wraps; 0 for projections that do not wrap.
+  virtual double longitudeCentre() const { return 0.0; }
   // Which region it samples best, from its parameters (e.g. PROJ's +lat_0 of an azimuthal map).
   virtual ProjectionAspect aspect() const { return ProjectionAspect::Other; }
+  // Whether map x is an affine function of longitude (taken within half a turn of longitudeCentre()) and
+  // map y one of latitude, as in a plate carree or eqc. Layers then address texels from each point's offset to
+  // the frame's reference alone, exact at any distance from it, which costs a shader far less than the
+  // projection's own GLSL and the polynomial about the reference (ProjectedRasterLayer::setReference).
+  virtual bool affineInLonLat() const { return false; }
 
   // The GLSL side. glslInclude() names a file of the shader library that defines
   //   vec3 <glslFunction()>(vec2 lonlat, vec4 a, vec4 b)
