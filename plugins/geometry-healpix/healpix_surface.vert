@@ -45,7 +45,6 @@ uniform float footprintPerMetre;  // rad of the sphere between vertices per metr
 uniform float groundLevel;        // m above the radius: the ground nearest the eye (groundLevelNear)
 
 out vec2 vLonlatFromReference;
-out vec3 vSphereNormal;
 out vec3 vShadingNormal;
 
 #ifdef STRATA_HAS_HEIGHT
@@ -100,6 +99,5 @@ void main() {
   // across the meridian opposite the reference, where the longitude from it jumps by a turn. After the
   // heights, which shared vertices must sample alike.
   vLonlatFromReference = lonlat + vec2(TWO_PI * round((node.centreFromReference.w - lonlat.x) / TWO_PI), 0.0);
-  vSphereNormal = normal;
   vShadingNormal = shading;
 }

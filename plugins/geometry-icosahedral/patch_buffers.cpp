@@ -16,11 +16,11 @@ PatchBuffers::PatchBuffers(const SubdivisionTable& table, const EdgeWindings& wi
   glNamedBufferStorage(buffers_[kElements], GLsizeiptr(elements.size() * sizeof(std::uint32_t)), elements.data(), 0);
   glCreateVertexArrays(1, &vertexArray_);
   glVertexArrayElementBuffer(vertexArray_, buffers_[kElements]);
-  // One attribute per buffer (icosahedral.vert): the drawn point, the sphere's normal, the drawn
-  // longitude and latitude (zw of theirs), the shading normal.
-  const std::array<GLint, 4> sizes{4, 4, 2, 4};
-  const std::array<GLuint, 4> offsets{0, 0, 2 * sizeof(float), 0};
-  for (GLuint attribute = 0; attribute < 4; ++attribute) {
+  // One attribute per buffer (icosahedral.vert): the drawn point, the drawn longitude and latitude (zw of
+  // theirs), the shading normal.
+  const std::array<GLint, 3> sizes{4, 2, 4};
+  const std::array<GLuint, 3> offsets{0, 2 * sizeof(float), 0};
+  for (GLuint attribute = 0; attribute < 3; ++attribute) {
     glEnableVertexArrayAttrib(vertexArray_, attribute);
     glVertexArrayAttribFormat(vertexArray_, attribute, sizes[attribute], GL_FLOAT, GL_FALSE, offsets[attribute]);
     glVertexArrayAttribBinding(vertexArray_, attribute, attribute);
@@ -49,7 +49,7 @@ void PatchBuffers::reserve(std::size_t patches) {
     glCreateBuffers(1, &buffers_[buffer]);
     glNamedBufferStorage(buffers_[buffer], GLsizeiptr(capacity_ * bytesPerPatch), nullptr, GL_DYNAMIC_STORAGE_BIT);
   }
-  const std::array<Buffer, 4> attributes{kSurface, kNormals, kLonLats, kShading};  // as the constructor's
+  const std::array<Buffer, 3> attributes{kSurface, kLonLats, kShading};  // as the constructor's
   for (GLuint binding = 0; binding < attributes.size(); ++binding)
     glVertexArrayVertexBuffer(vertexArray_, binding, buffers_[attributes[binding]], 0, sizeof(glm::vec4));
 }

@@ -78,7 +78,6 @@ void useGridSurface(const ShaderProgram& program, const View& view) {
   program.use();
   program.set("localToEye", glm::mat3(view.planetToEye * localToPlanet));
   program.set("projection", view.projection);
-  program.set("localToPlanet", glm::mat3(localToPlanet));
   program.set("referenceLatitude", sinCosOfLatitude(view));
 }
 

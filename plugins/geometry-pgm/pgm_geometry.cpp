@@ -137,7 +137,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   using ReducedView = std::pair<std::uint64_t, View>;  // a frame's index and view
   std::deque<ReducedView> reducedViews_;               // the frames whose reductions may be in flight
   double visibilityMs_ = 0.0;
-  // The deferred texturing buffer plus color(2): each pixel's height, for visibleRadius_ (infinite where
+  // The deferred texturing buffer plus color(1): each pixel's height, for visibleRadius_ (infinite where
   // nothing was drawn: visible_radius.hpp).
   SurfaceBuffer gbuffer_{{{GL_R32F, {std::numeric_limits<float>::infinity(), 0, 0, 0}}}};
 };
@@ -146,7 +146,7 @@ void PgmGeometry::render(const FrameState& frame) {
   makeGrid(frame.view);
   rasterise(frame.view);
   const Framebuffer& buffer = gbuffer_.framebuffer();
-  visibleRadius_->reduce(buffer.color(2).id(), buffer.width(), buffer.height(), frame.index);
+  visibleRadius_->reduce(buffer.color(1).id(), buffer.width(), buffer.height(), frame.index);
   reducedViews_.emplace_back(frame.index, frame.view);
   if (reducedViews_.size() > VisibleRadius::kSlots) reducedViews_.pop_front();
 }

@@ -6,22 +6,18 @@
 // opposite the reference. Its local-frame form keeps float's precision near the eye.
 #include "strata/precise_trig.glsl"
 #include "strata/lonlat_from_reference.glsl"
+#include "strata/surface_buffer.glsl"
 
 in vec3 vLocalNormal;
 in vec3 vShadingNormal;
 in float vHeight;
 
-uniform mat3 localToPlanet;
 uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
 
-layout(location = 0) out vec4 surface;  // lon, lat from View::reference; normal x, normal y
-layout(location = 1) out vec4 shading;  // shading normal xyz, coverage
-layout(location = 2) out float height;  // m above the body's radius
+layout(location = 0) out vec4 surface;
+layout(location = 1) out float height;  // m above the body's radius
 
 void main() {
-  vec3 s = normalize(vLocalNormal);
-  vec3 n = localToPlanet * s;
-  surface = vec4(lonlatFromReference(s, referenceLatitude), n.x, n.y);
-  shading = vec4(normalize(vShadingNormal), 1.0);
+  surface = surfaceSample(lonlatFromReference(normalize(vLocalNormal), referenceLatitude), vShadingNormal);
   height = vHeight;
 }

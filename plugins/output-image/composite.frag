@@ -4,6 +4,7 @@
 // ([Kooima 2008, §4.1.2]), so overlapping layers blend by coverage and weights need not sum to one. Translucent
 // surfaces (each a geometry of its own) are then laid over it, farthest first, where they lie nearer.
 #include "strata/surface_point.glsl"
+#include "strata/surface_buffer.glsl"
 #include "strata/constants.glsl"
 
 // vec4 strataDisplay(vec4): scene-linear to the display's encoding, OpenColorIO's code (docs/colour.md).
@@ -15,7 +16,6 @@ STRATA_DISPLAY_GLSL
 const int kSamples = STRATA_SAMPLES;
 
 uniform DeferredBuffer surfaceBuffer;
-uniform DeferredBuffer shadingBuffer;
 uniform DeferredBuffer depthBuffer;
 
 uniform vec3 lightDirection;  // planet-fixed, unit, toward the light
@@ -24,13 +24,9 @@ uniform int shade;            // 0: unlit colours, 1: Lambertian
 uniform vec3 emptyColour;     // surface where no layer has data (linear)
 uniform vec3 background;      // where there is no body (linear)
 uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred buffer's lonlat is measured
+uniform vec4 referenceTrig;   // its longitude's and latitude's sines and cosines (sphereNormalFromReference)
 
 out vec4 colour;
-
-// Whether a sample of the surface buffer lies off the body: the buffer is cleared to zero there. On the body
-// every channel is zero only at the reference on a pole, which reads as off the body to footprint() alone and
-// only makes it take the other neighbour.
-bool offBody(vec4 surface) { return surface == vec4(0.0); }
 
 // The change of longitude and latitude to the next pixel along `step`, computed from the deferred
 // coordinates ([Kooima 2008, §3.4.3]) rather than by the dFdx of §4.1.2: the 2 pi jump where patches unwrap
@@ -41,17 +37,16 @@ vec2 footprint(DeferredBuffer surfaces, ivec2 pixel, int s, ivec2 step, vec2 her
   vec2 ahead = next.xy - here, behind = here - previous.xy;
   ahead.x -= TWO_PI * round(ahead.x / TWO_PI);
   behind.x -= TWO_PI * round(behind.x / TWO_PI);
-  if (offBody(next)) return behind;
-  if (offBody(previous)) return ahead;
+  if (!onSurface(next)) return behind;
+  if (!onSurface(previous)) return ahead;
   return dot(ahead, ahead) < dot(behind, behind) ? ahead : behind;
 }
 
 // The surface point sample `s` of a geometry's surface buffer holds at `pixel`.
 SurfacePoint surfacePointAt(DeferredBuffer surfaces, ivec2 pixel, int s) {
   vec4 here = texelFetch(surfaces, pixel, s);
-  vec2 lonlat = referenceLonlat + here.xy;
-  float nz = sign(lonlat.y) * sqrt(max(0.0, 1.0 - here.z * here.z - here.w * here.w));  // z's sign is latitude's
-  return SurfacePoint(lonlat, vec3(here.z, here.w, nz), footprint(surfaces, pixel, s, ivec2(1, 0), here.xy),
+  return SurfacePoint(referenceLonlat + here.xy, sphereNormalFromReference(here.xy, referenceTrig),
+                      footprint(surfaces, pixel, s, ivec2(1, 0), here.xy),
                       footprint(surfaces, pixel, s, ivec2(0, 1), here.xy), here.xy);
 }
 
@@ -69,16 +64,16 @@ STRATA_TRANSLUCENT_GLSL
 // The light leaving sample `s` of `pixel`, scene-linear and clamped to what the display shows; in `reach` the
 // longer of its footprint's steps (rad), 0 off the body.
 vec3 lightAt(ivec2 pixel, int s, out float reach) {
-  vec4 shading = texelFetch(shadingBuffer, pixel, s);
+  vec4 here = texelFetch(surfaceBuffer, pixel, s);
   reach = 0.0;
-  if (shading.a == 0.0) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
+  if (!onSurface(here)) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
   SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
   vec4 accumulated = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE
   vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
   float depth = texelFetch(depthBuffer, pixel, s).r;
-  return clamp(translucentOver(pixel, s, albedo * lightOn(shading.xyz), depth), 0.0, 1.0);
+  return clamp(translucentOver(pixel, s, albedo * lightOn(shadingNormalOf(here)), depth), 0.0, 1.0);
 }
 
 // Samples of one surface lie within a pixel's footprint of each other: each holds its triangle's values at
@@ -90,16 +85,18 @@ const float kSameSurface = 1.0;
 // Whether sample `t` of `pixel` shows the surface a sample on the body or off it (`onBody`) shows at `here`
 // (its deferred longitude and latitude), within `reach` (rad): both off the body, or both on it lying together.
 bool sameSurface(ivec2 pixel, int t, bool onBody, vec2 here, float reach) {
-  if (onBody != (texelFetch(shadingBuffer, pixel, t).a > 0.0)) return false;
-  vec2 apart = texelFetch(surfaceBuffer, pixel, t).xy - here;
+  vec4 there = texelFetch(surfaceBuffer, pixel, t);
+  if (onBody != onSurface(there)) return false;
+  vec2 apart = there.xy - here;
   apart.x -= TWO_PI * round(apart.x / TWO_PI);
   return !onBody || length(apart) <= reach;
 }
 
 // The samples of `pixel` not in `done` (a bit each) that show the surface sample `s` shows, within `reach`.
 int samplesLike(ivec2 pixel, int s, float reach, int done) {
-  bool onBody = texelFetch(shadingBuffer, pixel, s).a > 0.0;
-  vec2 here = texelFetch(surfaceBuffer, pixel, s).xy;
+  vec4 first = texelFetch(surfaceBuffer, pixel, s);
+  bool onBody = onSurface(first);
+  vec2 here = first.xy;
   int like = 1 << s;
   for (int t = 0; t < kSamples; ++t)
     if ((done & (1 << t)) == 0 && t != s && sameSurface(pixel, t, onBody, here, reach)) like |= 1 << t;

@@ -150,9 +150,9 @@ class ImageOutput : public Node, public FrameOutput {
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
     program_.set("background", kBackground);
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
+    program_.set("referenceTrig", sinesAndCosines(frame.view.reference));
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
-    units.bind(program_, "shadingBuffer", geometry_->gbuffer().color(1).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);

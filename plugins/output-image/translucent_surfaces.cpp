@@ -53,9 +53,9 @@ std::string TranslucentSurfaces::colourOf(std::size_t i) const {
          "  vec4 v = " +
          layers_[i]->samplingFunction() +
          "(p);\n"
-         "  return vec4(v.rgb * lightOn(texelFetch(translucentShading" +
+         "  return vec4(v.rgb * lightOn(shadingNormalOf(texelFetch(translucentSurface" +
          n +
-         ", pixel, s).xyz), v.a);\n"
+         ", pixel, s))), v.a);\n"
          "}\n";
 }
 
@@ -66,9 +66,9 @@ std::string TranslucentSurfaces::over() const {
   std::string depths, colours;
   for (std::size_t i = 0; i < geometries_.size(); ++i) {
     const std::string k = index(i);
-    depths += "  d[" + k + "] = texelFetch(translucentShading" + k +
-              ", pixel, s).a > 0.0 ? texelFetch(translucentDepth" + k + ", pixel, s).r : 0.0;\n  order[" + k +
-              "] = " + k + ";\n";
+    depths += "  d[" + k + "] = onSurface(texelFetch(translucentSurface" + k +
+              ", pixel, s)) ? texelFetch(translucentDepth" + k + ", pixel, s).r : 0.0;\n  order[" + k + "] = " + k +
+              ";\n";
     colours += "    if (order[k] == " + k + ") c = translucentColour" + k + "(pixel, s);\n";
   }
   return "vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth) {\n"
@@ -101,8 +101,7 @@ std::string TranslucentSurfaces::glsl() const {
   std::string code = "uniform float translucentOpacity;\n";
   for (std::size_t i = 0; i < geometries_.size(); ++i)
     code += layers_[i]->glslOnce() + "uniform DeferredBuffer translucentSurface" + index(i) +
-            ";\nuniform DeferredBuffer translucentShading" + index(i) + ";\nuniform DeferredBuffer translucentDepth" +
-            index(i) + ";\n" + colourOf(i);
+            ";\nuniform DeferredBuffer translucentDepth" + index(i) + ";\n" + colourOf(i);
   return code + over();
 }
 
@@ -112,7 +111,6 @@ void TranslucentSurfaces::bind(ShaderProgram& program, TextureUnits& units, doub
   for (std::size_t i = 0; i < geometries_.size(); ++i) {
     const Framebuffer& buffers = geometries_[i]->gbuffer();
     units.bind(program, "translucentSurface" + index(i), buffers.color(0).id());
-    units.bind(program, "translucentShading" + index(i), buffers.color(1).id());
     units.bind(program, "translucentDepth" + index(i), buffers.depth().id());
     layers_[i]->bind(program, units);
   }

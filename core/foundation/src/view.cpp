@@ -11,6 +11,10 @@ glm::dvec3 unitNormal(double lonRad, double latRad) {
   return {std::cos(latRad) * std::cos(lonRad), std::cos(latRad) * std::sin(lonRad), std::sin(latRad)};
 }
 
+glm::vec4 sinesAndCosines(glm::dvec2 lonlat) {
+  return glm::vec4(glm::dvec4(std::sin(lonlat.x), std::cos(lonlat.x), std::sin(lonlat.y), std::cos(lonlat.y)));
+}
+
 glm::dmat3 planetToLocal(glm::dvec2 lonlat) {
   const double sinLon = std::sin(lonlat.x), cosLon = std::cos(lonlat.x);
   const double sinLat = std::sin(lonlat.y), cosLat = std::cos(lonlat.y);

@@ -5,7 +5,7 @@
 namespace strata {
 namespace {
 
-constexpr int kSharedAttachments = 2;  // the surface point and the shading normal
+constexpr int kSharedAttachments = 1;  // the surface sample (strata/surface_buffer.glsl)
 
 }  // namespace
 
@@ -14,13 +14,13 @@ SurfaceBuffer::SurfaceBuffer(std::vector<Attachment> extra) : extra_(std::move(e
 void SurfaceBuffer::begin(int width, int height, int samples) {
   if (framebuffer_.width() != width || framebuffer_.height() != height || framebuffer_.samples() != samples ||
       framebuffer_.id() == 0) {
-    std::vector<GLenum> formats{GL_RGBA32F, GL_RGBA16F};
+    std::vector<GLenum> formats{GL_RGBA32F};
     for (const Attachment& attachment : extra_) formats.push_back(attachment.format);
     framebuffer_ = Framebuffer(width, height, formats, GL_DEPTH_COMPONENT32F, samples);
   }
   framebuffer_.bind();
   const float noSurface[4] = {0, 0, 0, 0}, farDepth = 0.0f;  // reversed depth: 0 is infinitely far
-  for (int i = 0; i < kSharedAttachments; ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, noSurface);
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, 0, noSurface);
   for (std::size_t i = 0; i < extra_.size(); ++i)
     glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, GLint(kSharedAttachments + i), extra_[i].clear.data());
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farDepth);

@@ -45,6 +45,10 @@ View makeView(const Body& body, const Camera& camera, int width, int height, con
 // Planet-fixed unit normal at geographic longitude and latitude (radians).
 glm::dvec3 unitNormal(double lonRad, double latRad);
 
+// (sin lon, cos lon, sin lat, cos lat) of a longitude and latitude (radians), computed in double: what
+// strata/surface_buffer.glsl's sphereNormalFromReference takes for View::reference.
+glm::vec4 sinesAndCosines(glm::dvec2 lonlat);
+
 // The rotation from planet-fixed axes to the east-north-up frame at a longitude and latitude (radians): its
 // rows are east, north and up. At View::reference it is the frame in which the point below the eye is
 // (0, 0, 1) exactly, which the geometry generators place and measure points in (see
