@@ -14,6 +14,8 @@ std::string heightSlopesGlsl(const std::string& name, const Layer& height, const
          "(SurfacePoint p, float h) {\n"
          "  float d = slopeStep(p);\n"
          "  vec2 east = vec2(d / max(cos(p.lonlat.y), 1e-4), 0.0), north = vec2(0.0, d);\n"
+         "  p.lonlatDx = east;\n"
+         "  p.lonlatDy = north;\n"
          "  float eastRise = slopeRise(" +
          h + "(slopeNeighbour(p, east)), h, " + h +
          "(slopeNeighbour(p, -east)));\n"
