@@ -127,7 +127,7 @@ NodeHeights HealpixGeometry::nodeHeights() const {
 // The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand
 // 1 / sqrt(threshold) pixels apart, a pixel's angle times that per metre from the eye on the ground.
 void HealpixGeometry::useSurface(const View& view) {
-  const double pixelAngle = 2.0 * std::tan(0.5 * view.verticalFov) / view.height;
+  const double pixelAngle = 2.0 * view.halfFrameTangents().y / view.height;
   surface_.use();
   surface_.set("gridCells", settings_.gridCells);
   surface_.set("planetToEye", glm::mat3(view.planetToEye));

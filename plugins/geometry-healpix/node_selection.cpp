@@ -77,14 +77,15 @@ ShellView::ShellView(const View& view, double radius, HeightRange heights, NodeH
     : eye_(view.eye),
       planetToEye_(view.planetToEye),
       near_(view.near),
-      focal_(0.5 * double(view.height) / std::tan(0.5 * view.verticalFov)),
+      focal_(0.5 * double(view.height) / view.halfFrameTangents().y),
       halfScreen_(0.5 * double(view.width), 0.5 * double(view.height)),
       pixelsPerSteradian_(focal_ * focal_ *
                           std::pow(1.0 + glm::dot(halfScreen_, halfScreen_) / (focal_ * focal_), 1.5)),
       radius_(radius),
       heights_(heights),
       nodeHeights_(std::move(nodeHeights)) {
-  const double ty = std::tan(0.5 * view.verticalFov), tx = ty * double(view.width) / double(std::max(1, view.height));
+  const glm::dvec2 halfFrame = view.halfFrameTangents();
+  const double tx = halfFrame.x, ty = halfFrame.y;
   // Eye space looks down -z: a point is inside when |x| <= tx (-z), |y| <= ty (-z) and -z >= near.
   const std::array<glm::dvec3, 5> eyeNormals{glm::dvec3(1, 0, -tx), glm::dvec3(-1, 0, -tx), glm::dvec3(0, 1, -ty),
                                              glm::dvec3(0, -1, -ty), glm::dvec3(0, 0, -1)};

@@ -66,8 +66,8 @@ glm::ivec2 gridOf(const NodeSetup& setup) {
 
 // The view as the sampling camera takes it: the symmetric frustum of View::projection on its near plane.
 ViewCamera viewCamera(const View& view) {
-  const double top = view.near * std::tan(0.5 * view.verticalFov);
-  const double right = top * double(view.width) / double(view.height);
+  const glm::dvec2 halfFrame = view.near * view.halfFrameTangents();
+  const double top = halfFrame.y, right = halfFrame.x;
   return {.eye = view.eye,
           .planetToEye = view.planetToEye,
           .left = -right,

@@ -21,10 +21,9 @@ BodyOutline wholeFrame() { return {{{-1, -1, 0, 1}, {3, -1, 0, 1}, {-1, 3, 0, 1}
 // Whether the rays through the frame's four corners lie within `cone` (rad) of `axis` (planet-fixed): then so
 // does every ray through the frame, the cone being convex.
 bool holdsTheFrame(const View& view, const glm::dvec3& axis, double cone) {
-  const double up = std::tan(0.5 * view.verticalFov), right = up * view.width / view.height;
+  const glm::dvec2 halfFrame = view.halfFrameTangents();
   for (const glm::dvec2 corner : {glm::dvec2(-1, -1), glm::dvec2(1, -1), glm::dvec2(1, 1), glm::dvec2(-1, 1)}) {
-    const glm::dvec3 ray =
-        glm::normalize(glm::transpose(view.planetToEye) * glm::dvec3(corner.x * right, corner.y * up, -1.0));
+    const glm::dvec3 ray = glm::normalize(glm::transpose(view.planetToEye) * glm::dvec3(corner * halfFrame, -1.0));
     if (std::acos(std::clamp(glm::dot(ray, axis), -1.0, 1.0)) >= cone) return false;
   }
   return true;

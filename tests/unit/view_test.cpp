@@ -37,6 +37,14 @@ TEST(MakeView, HeadingAndTiltTurnTheViewTowardTheHorizon) {
   expectNear(upOf(view), glm::dvec3(1, 0, 0));
 }
 
+// At a 90-degree vertical field of view the frame's top edge lies at 45 degrees: tangent 1; across, as much
+// again as the frame is wider than high.
+TEST(MakeView, HalfFrameTangentsBoundTheFrameAtUnitDistance) {
+  const View view = makeView(Body{}, Camera{.altitude = 1e6, .fov = 90}, 1280, 720);
+  EXPECT_NEAR(view.halfFrameTangents().y, 1.0, kTolerance);
+  EXPECT_NEAR(view.halfFrameTangents().x, 1280.0 / 720.0, kTolerance);
+}
+
 TEST(MakeView, ProjectionHasReversedDepthWithTheNearPlaneAtOne) {
   const View view = makeView(Body{}, Camera{.altitude = 2e4}, 1000, 500);
   const glm::vec4 atNear = view.projection * glm::vec4(0, 0, -float(view.near), 1);

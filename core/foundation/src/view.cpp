@@ -11,6 +11,11 @@ glm::dvec3 unitNormal(double lonRad, double latRad) {
   return {std::cos(latRad) * std::cos(lonRad), std::cos(latRad) * std::sin(lonRad), std::sin(latRad)};
 }
 
+glm::dvec2 View::halfFrameTangents() const {
+  const double up = std::tan(0.5 * verticalFov);
+  return {up * double(width) / double(std::max(1, height)), up};
+}
+
 glm::vec4 sinesAndCosines(glm::dvec2 lonlat) {
   return glm::vec4(glm::dvec4(std::sin(lonlat.x), std::cos(lonlat.x), std::sin(lonlat.y), std::cos(lonlat.y)));
 }

@@ -32,13 +32,12 @@ struct Viewing {
 };
 
 Viewing viewingOf(const Body& body, const View& view, const HeightRange& terrain) {
-  const double tanHalfHeight = std::tan(0.5 * view.verticalFov);
-  const double aspect = double(view.width) / double(std::max(1, view.height));
+  const glm::dvec2 halfFrame = view.halfFrameTangents();
   const double r = glm::length(view.eye), ground = groundLevelNear(terrain, r - body.radius);
   return {body,
           view,
-          tanHalfHeight,
-          tanHalfHeight * aspect,
+          halfFrame.y,
+          halfFrame.x,
           view.verticalFov / double(std::max(1, view.height)),
           {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / r, -1.0, 1.0))},
           std::abs(r - body.radius - ground),

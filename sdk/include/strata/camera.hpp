@@ -35,6 +35,9 @@ struct View {
 
   // Eye-space position of a planet-fixed point, computed in double.
   glm::dvec3 toEye(const glm::dvec3& planetFixed) const { return planetToEye * (planetFixed - eye); }
+  // The tangents of half the field of view across (x) and up (y): where the frame's edges lie at unit distance
+  // ahead, in eye space. The rays through the frame's corners are (+-x, +-y, -1).
+  glm::dvec2 halfFrameTangents() const;
 };
 
 // Resolves a camera over a body for a viewport of width x height pixels. `terrain`: the heights the drawn
