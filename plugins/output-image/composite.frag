@@ -42,9 +42,8 @@ vec2 footprint(DeferredBuffer surfaces, ivec2 pixel, int s, ivec2 step, vec2 her
   return dot(ahead, ahead) < dot(behind, behind) ? ahead : behind;
 }
 
-// The surface point sample `s` of a geometry's surface buffer holds at `pixel`.
-SurfacePoint surfacePointAt(DeferredBuffer surfaces, ivec2 pixel, int s) {
-  vec4 here = texelFetch(surfaces, pixel, s);
+// The surface point sample `s` of a geometry's surface buffer holds at `pixel`, `here` being that sample.
+SurfacePoint surfacePointAt(DeferredBuffer surfaces, ivec2 pixel, int s, vec4 here) {
   return SurfacePoint(referenceLonlat + here.xy, sphereNormalFromReference(here.xy, referenceTrig),
                       footprint(surfaces, pixel, s, ivec2(1, 0), here.xy),
                       footprint(surfaces, pixel, s, ivec2(0, 1), here.xy), here.xy);
@@ -67,7 +66,7 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   vec4 here = texelFetch(surfaceBuffer, pixel, s);
   reach = 0.0;
   if (!onSurface(here)) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
-  SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s);
+  SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s, here);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
   vec4 accumulated = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE

@@ -47,15 +47,13 @@ std::string TranslucentSurfaces::colourOf(std::size_t i) const {
   const std::string n = index(i);
   return "vec4 translucentColour" + n +
          "(ivec2 pixel, int s) {\n"
-         "  SurfacePoint p = surfacePointAt(translucentSurface" +
+         "  vec4 here = texelFetch(translucentSurface" +
          n +
          ", pixel, s);\n"
          "  vec4 v = " +
-         layers_[i]->samplingFunction() +
-         "(p);\n"
-         "  return vec4(v.rgb * lightOn(shadingNormalOf(texelFetch(translucentSurface" +
-         n +
-         ", pixel, s))), v.a);\n"
+         layers_[i]->samplingFunction() + "(surfacePointAt(translucentSurface" + n +
+         ", pixel, s, here));\n"
+         "  return vec4(v.rgb * lightOn(shadingNormalOf(here)), v.a);\n"
          "}\n";
 }
 

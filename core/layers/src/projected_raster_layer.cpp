@@ -35,6 +35,9 @@ constexpr double kRelativeTolerance = 0.01;
 
 glm::vec4 columns(const glm::dmat2& m) { return glm::vec4(glm::dvec4(m[0], m[1])); }
 
+// A GLSL uniform declaration.
+std::string uniform(const std::string& type, const std::string& name) { return "uniform " + type + " " + name + ";\n"; }
+
 }  // namespace
 
 ProjectedRasterLayer::ProjectedRasterLayer(std::string nodeId, LayerKind kind)
@@ -74,7 +77,10 @@ void ProjectedRasterLayer::place(RasterGeoreference georeference, int width, int
   size_ = glm::ivec2(width, height);
   repeatX_ = spansPeriod(georeference_, width);
   affine_ = georeference_.projection->affineInLonLat();
-  if (affine_) setAffineTerms(glm::dvec2(0.0));  // until told a reference: offsets from (0, 0), the lon/lat
+  if (affine_) {
+    localTerms_ = {columns(affineJacobian()), glm::vec4(0.0f), glm::vec4(0.0f)};
+    setAffineReference(glm::dvec2(0.0));  // until told a reference: offsets from (0, 0), the lon/lat
+  }
   if (blockRanges_) blockCaps_ = std::make_shared<const BlockCaps>(blockRanges_, georeference_, repeatX_);
 }
 
@@ -89,7 +95,7 @@ void ProjectedRasterLayer::setReference(glm::dvec2 referenceLonlat) {
   if (reference_ == referenceLonlat) return;
   reference_ = referenceLonlat;
   if (affine_) {
-    setAffineTerms(referenceLonlat);
+    setAffineReference(referenceLonlat);
     return;
   }
   const TextureMapping mapping = [this](glm::dvec2 lonlat) { return textureCoordinates(lonlat); };
@@ -112,18 +118,22 @@ void ProjectedRasterLayer::setReferenceTexel(glm::dvec2 uv) {
 }
 
 // An affine projection's derivatives are the same everywhere: taken a radian either side of its centre, half a
-// turn from where it wraps, they are exact to rounding. The reference's longitude is taken within half a turn of
-// the centre as forward() takes it, and the centre's offset from there bounds the offsets the shader wraps.
-void ProjectedRasterLayer::setAffineTerms(glm::dvec2 referenceLonlat) {
-  constexpr double pi = std::numbers::pi;
+// turn from where it wraps, they are exact to rounding. Once, when the raster is placed.
+glm::dmat2 ProjectedRasterLayer::affineJacobian() const {
   const double centre = georeference_.projection->longitudeCentre();
   const glm::dvec2 east = *textureCoordinates({centre + 1.0, 0.0}) - *textureCoordinates({centre - 1.0, 0.0});
   const glm::dvec2 north = *textureCoordinates({centre, 0.5}) - *textureCoordinates({centre, -0.5});
-  localTerms_ = {columns(glm::dmat2(0.5 * east, north)), glm::vec4(0.0f), glm::vec4(0.0f)};
+  return glm::dmat2(0.5 * east, north);
+}
+
+// The reference's longitude taken within half a turn of the map's centre, as forward() takes it; the centre's
+// offset from there bounds the offsets the shader wraps.
+void ProjectedRasterLayer::setAffineReference(glm::dvec2 referenceLonlat) {
+  constexpr double pi = std::numbers::pi;
+  const double centre = georeference_.projection->longitudeCentre();
   const double longitude = referenceLonlat.x - 2.0 * pi * std::floor((referenceLonlat.x - centre + pi) / (2.0 * pi));
   setReferenceTexel(*textureCoordinates({longitude, referenceLonlat.y}));
   centreFromReference_ = float(centre - longitude);
-  relative_ = reference_.has_value();
 }
 
 std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered) const {
@@ -133,16 +143,10 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
                                 ? "vec4(t.rgb / t.a, t.a)"
                                 : "vec4(t.r / t.g * " + p + "_scaleOffset.x + " + p + "_scaleOffset.y, 0.0, 0.0, t.g)";
   const std::string coverage = colour ? "t.a" : "t.g";
-  return "#include \"strata/projected_raster.glsl\"\n"
-         "uniform vec2 " +
-         p +
-         "_scaleOffset;\n"
-         "uniform bool " +
-         p +
-         "_repeatX;\n"
-         "uniform ivec2 " +
-         p + "_size;\n" + declarations + (affine_ ? affineGlsl() : absoluteGlsl() + relativeGlsl()) + texelGlsl() +
-         "vec4 " + p + "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
+  return "#include \"strata/projected_raster.glsl\"\n" + uniform("vec2", p + "_scaleOffset") +
+         uniform("bool", p + "_repeatX") + uniform("ivec2", p + "_size") + declarations +
+         (affine_ ? affineGlsl() : absoluteGlsl() + relativeGlsl()) + texelGlsl() + "vec4 " + p +
+         "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
          " : vec4(0.0); }\n"
          "vec4 " +
          p +
@@ -167,19 +171,8 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
 std::string ProjectedRasterLayer::absoluteGlsl() const {
   const std::string& p = prefix_;
   const Projection& projection = *georeference_.projection;
-  return "#include \"" + projection.glslInclude() +
-         "\"\n"
-         "uniform vec4 " +
-         p +
-         "_projectionA;\n"
-         "uniform vec4 " +
-         p +
-         "_projectionB;\n"
-         "uniform vec4 " +
-         p +
-         "_mapToTexture;\n"
-         "vec3 " +
-         p +
+  return "#include \"" + projection.glslInclude() + "\"\n" + uniform("vec4", p + "_projectionA") +
+         uniform("vec4", p + "_projectionB") + uniform("vec4", p + "_mapToTexture") + "vec3 " + p +
          "_coordinates(vec2 lonlat) {\n"
          "  vec3 m = " +
          projection.glslFunction() + "(lonlat, " + p + "_projectionA, " + p +
@@ -200,43 +193,24 @@ std::string ProjectedRasterLayer::absoluteGlsl() const {
          "}\n";
 }
 
+// What the relative paths share: the reference's texture coordinates and level-0 texel (whole, and the fraction
+// beyond it), and the jacobian of texture coordinates by offsets there.
+std::string ProjectedRasterLayer::referenceGlsl() const {
+  const std::string& p = prefix_;
+  return "#include \"strata/texel_address.glsl\"\n" + uniform("vec2", p + "_referenceUv") +
+         uniform("ivec2", p + "_referenceTexel") + uniform("vec2", p + "_referenceFraction") +
+         uniform("vec4", p + "_jacobian");
+}
+
 // Texture coordinates and footprint steps of a surface point: within the reach, from its offset to the
 // reference (longitude/latitude offsets or the tangent plane's, whichever LocalTextureFrame chose) through
 // the polynomial setReference() made, whose derivative gives the steps;
 // beyond it, or for a layer never told a reference, through the projection at absolute longitude/latitude.
 std::string ProjectedRasterLayer::relativeGlsl() const {
   const std::string& p = prefix_;
-  return "#include \"strata/local_offsets.glsl\"\n"
-         "#include \"strata/texel_address.glsl\"\n"
-         "uniform vec2 " +
-         p +
-         "_referenceUv;\n"
-         "uniform ivec2 " +
-         p +
-         "_referenceTexel;\n"
-         "uniform vec2 " +
-         p +
-         "_referenceFraction;\n"
-         "uniform bool " +
-         p +
-         "_tangent;\n"
-         "uniform vec2 " +
-         p +
-         "_referenceLatitude;\n"
-         "uniform vec4 " +
-         p +
-         "_jacobian;\n"
-         "uniform vec4 " +
-         p +
-         "_hessianU;\n"
-         "uniform vec4 " +
-         p +
-         "_hessianV;\n"
-         "uniform float " +
-         p +
-         "_reach;\n"
-         "vec2 " +
-         p +
+  return "#include \"strata/local_offsets.glsl\"\n" + referenceGlsl() + uniform("bool", p + "_tangent") +
+         uniform("vec2", p + "_referenceLatitude") + uniform("vec4", p + "_hessianU") +
+         uniform("vec4", p + "_hessianV") + uniform("float", p + "_reach") + "vec2 " + p +
          "_offset(SurfacePoint p) {\n"
          "  return " +
          p + "_tangent ? tangentOffset(p.fromReference, " + p +
@@ -310,26 +284,7 @@ std::string ProjectedRasterLayer::relativeGlsl() const {
 // projection takes it; exact at any distance, so there is no polynomial, no reach and no absolute path.
 std::string ProjectedRasterLayer::affineGlsl() const {
   const std::string& p = prefix_;
-  return "#include \"strata/texel_address.glsl\"\n"
-         "uniform vec2 " +
-         p +
-         "_referenceUv;\n"
-         "uniform ivec2 " +
-         p +
-         "_referenceTexel;\n"
-         "uniform vec2 " +
-         p +
-         "_referenceFraction;\n"
-         "uniform vec4 " +
-         p +
-         "_jacobian;\n"
-         "uniform float " +
-         p +
-         "_centreFromReference;\n"
-         "uniform bool " +
-         p +
-         "_relative;\n"
-         "vec2 " +
+  return referenceGlsl() + uniform("float", p + "_centreFromReference") + uniform("bool", p + "_relative") + "vec2 " +
          p +
          "_offset(SurfacePoint p) {\n"
          "  vec2 d = " +
@@ -414,7 +369,7 @@ void ProjectedRasterLayer::bindSampling(ShaderProgram& program) const {
   program.set(prefix_ + "_tangent", tangent_ ? 1 : 0);
   program.set(prefix_ + "_referenceLatitude", referenceLatitude_);
   program.set(prefix_ + "_centreFromReference", centreFromReference_);
-  program.set(prefix_ + "_relative", relative_ ? 1 : 0);
+  program.set(prefix_ + "_relative", reference_.has_value() ? 1 : 0);
 }
 
 }  // namespace strata

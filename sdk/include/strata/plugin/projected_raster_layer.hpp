@@ -77,12 +77,14 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
  private:
   std::string texelGlsl() const;
   std::string absoluteGlsl() const;
+  std::string referenceGlsl() const;
   std::string relativeGlsl() const;
   std::string affineGlsl() const;
   // The raster's texture coordinates (u, v) at `lonlat`, in double; empty where the projection is undefined.
   std::optional<glm::dvec2> textureCoordinates(glm::dvec2 lonlat) const;
   void setReferenceTexel(glm::dvec2 uv);
-  void setAffineTerms(glm::dvec2 referenceLonlat);
+  glm::dmat2 affineJacobian() const;
+  void setAffineReference(glm::dvec2 referenceLonlat);
 
   std::string prefix_;  // GLSL identifier prefix unique to the node
   LayerKind kind_;
@@ -108,10 +110,9 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   float reach_ = 0.0f;                       // rad; 0: sampled absolutely
   bool tangent_ = false;                     // offsets in the tangent plane, else in longitude/latitude
   glm::vec2 referenceLatitude_{0.0f, 1.0f};  // sin and cos
-  // Affine projections: the longitude of the map's centre less the reference's (rad, within half a turn), and
-  // whether a reference was told (else offsets are taken from longitude and latitude 0).
+  // Affine projections: the longitude of the map's centre less the reference's (rad, within half a turn); until
+  // a reference is told, offsets are taken from longitude and latitude 0.
   float centreFromReference_ = 0.0f;
-  bool relative_ = false;
 };
 
 }  // namespace strata
