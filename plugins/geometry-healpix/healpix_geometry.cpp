@@ -40,7 +40,13 @@ const ParameterBindings<SelectionSettings>& healpixParameters() {
                                .maximum = 254.0,
                                .doc = "grid cells along a node's side, even (64: 4225 vertices a node, so a few "
                                       "hundred nodes cover a view; the paper's 254 is its data tiles' size, 16-bit "
-                                      "indices)"});
+                                      "indices)"})
+          .add(&S::pixelError, {.name = "pixel_error",
+                                .minimum = 0.0,
+                                .maximum = 100.0,
+                                .doc = "px: a node whose geometric error shows no more than this is drawn, however "
+                                       "many vertices its area asks for (one pixel is what the eye cannot resolve; 0: "
+                                       "the threshold alone, as the paper)"});
   return bindings;
 }
 
@@ -113,13 +119,13 @@ NodeHeights HealpixGeometry::nodeHeights() const {
   const Layer* layer = heights_.layer();
   if (!layer) return {};
   if (const auto* faces = layer->as<HealpixFaceLayer>(); faces && !faces->faceSamplingFunction().empty())
-    return [faces](const NodeKey& key, const NodeCone&) -> std::optional<HeightRange> {
+    return [faces](const NodeKey& key, const NodeCone&) -> std::optional<RegionalHeights> {
       const std::optional<ValueRange> values = faces->faceNodeValues(key.face, key.level, key.ix, key.iy);
       if (!values) return std::nullopt;
-      return HeightRange{values->least, values->greatest};
+      return RegionalHeights{{values->least, values->greatest}, values->finest};
     };
   if (!heights_.boundsRegions()) return {};
-  return [this](const NodeKey&, const NodeCone& cone) -> std::optional<HeightRange> {
+  return [this](const NodeKey&, const NodeCone& cone) -> std::optional<RegionalHeights> {
     return heights_.within(cone.widened(4.0 * cone.angle / settings_.gridCells));
   };
 }

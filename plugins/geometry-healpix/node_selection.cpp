@@ -9,6 +9,7 @@
 #include <utility>
 
 #include <glm/geometric.hpp>
+#include <strata/plugin/geometric_error.hpp>
 
 namespace strata::healpix {
 namespace {
@@ -100,8 +101,9 @@ NodeShell ShellView::shellOf(const NodeKey& key) const {
   NodeShell shell;
   const std::array<glm::dvec3, 8> boundary = boundarySamples(key);
   shell.cone = coneAround(unitVector(key.centre()), boundary);
-  const std::optional<HeightRange> known = nodeHeights_ ? nodeHeights_(key, shell.cone) : std::nullopt;
-  const HeightRange heights = known.value_or(heights_);
+  const std::optional<RegionalHeights> known = nodeHeights_ ? nodeHeights_(key, shell.cone) : std::nullopt;
+  const HeightRange heights = known ? known->range : heights_;
+  if (known) shell.finest = known->finest;
   const double innerRadius = radius_ + heights.lowest, outerRadius = radius_ + heights.highest;
   shell.innerRadius = innerRadius;
   shell.outerRadius = outerRadius;
@@ -159,15 +161,29 @@ double ShellView::boxArea(const NodeShell& shell) const {
   return polygonArea(clipToRectangle(convexHull(screen), halfScreen_));
 }
 
-double ShellView::faceOnArea(const NodeShell& shell, const NodeKey& key) const {
-  // The nearest point of the cone's shell: at the cone's nearest direction, at the radius nearest the eye;
-  // its squared distance as (d - r)^2 + 4 d r sin^2(psi / 2), which keeps its digits 1 m above the ground.
+// The nearest point of the cone's shell: at the cone's nearest direction, at the radius nearest the eye; its
+// squared distance as (d - r)^2 + 4 d r sin^2(psi / 2), which keeps its digits 1 m above the ground.
+double ShellView::nearestDistanceSquared(const NodeShell& shell) const {
   const double d = glm::length(eye_);
   const double psi = std::max(0.0, angleBetween(shell.cone.centre, eye_ / d) - shell.cone.angle);
   const double r = std::clamp(d * std::cos(psi), shell.innerRadius, shell.outerRadius), s = std::sin(0.5 * psi);
-  const double nearest = (d - r) * (d - r) + 4.0 * d * r * s * s;
+  return (d - r) * (d - r) + 4.0 * d * r * s * s;
+}
+
+double ShellView::faceOnArea(const NodeShell& shell, const NodeKey& key) const {
   const double area = std::numbers::pi * shell.outerRadius * shell.outerRadius / (3.0 * std::ldexp(1.0, 2 * key.level));
-  return kSlopeAllowance * area * pixelsPerSteradian_ / nearest;
+  return kSlopeAllowance * area * pixelsPerSteradian_ / nearestDistanceSquared(shell);
+}
+
+// A node is about sqrt(pi / 3) rad across at level 0 (HEALPix is equal area), halved each level.
+double ShellView::screenError(const NodeShell& shell, const NodeKey& key, int gridCells) const {
+  const double spacing = std::ldexp(std::sqrt(std::numbers::pi / 3.0), -key.level) / gridCells;
+  const double fromPole = std::acos(std::min(std::abs(shell.cone.centre.z), 1.0)) - shell.cone.angle;
+  const double sphere = chordError(radius_, spacing, fromPole);
+  const double width = 2.0 * shell.cone.angle;
+  const double terrain =
+      reliefWithinSpacing(shell.outerRadius - shell.innerRadius, shell.finest, width, width / gridCells);
+  return std::max(sphere, terrain) * std::sqrt(pixelsPerSteradian_ / nearestDistanceSquared(shell));
 }
 
 double ShellView::projectedArea(const NodeShell& shell, const NodeKey& key) const {
@@ -191,7 +207,8 @@ class VisitedTree {
       states_[key] = State::culled;
       return;
     }
-    const bool adequate = shells_.projectedArea(shell, key) * settings_.threshold <= settings_.gridVertices();
+    const bool adequate = shells_.projectedArea(shell, key) * settings_.threshold <= settings_.gridVertices() ||
+                          shells_.screenError(shell, key, settings_.gridCells) <= settings_.pixelError;
     if (adequate || key.level >= settings_.maxLevel) {
       states_[key] = State::drawn;
       drawn_.push_back(key);

@@ -32,6 +32,11 @@ struct SelectionSettings {
   // Cells along a node's proxy grid: (gridCells + 1)^2 vertices. 64: 4225 vertices a node, so a few hundred
   // nodes cover a view (the paper's 254 is its data tiles' size, for 16-bit indices).
   int gridCells = 64;
+  // px: a node whose geometric error seen from its shell shows no more than this is drawn, however many vertices
+  // its area asks for, so that the threshold caps the density where the terrain is rough and a smooth sphere takes
+  // few nodes (level of detail by screen-space error, as geometry.icosahedral's pixel_error; 0: the paper's
+  // density alone). One pixel is what the eye cannot resolve.
+  double pixelError = 1.0;
   int maxLevel = 26;  // 2^-26 of a face, about 10 cm on Earth
   double gridVertices() const { return double(gridCells + 1) * double(gridCells + 1); }
 };
@@ -42,13 +47,14 @@ struct NodeShell {
   NodeCone cone;
   double innerRadius = 0.0, outerRadius = 0.0;  // m
   std::array<glm::dvec3, 8> box;                // corners, m
+  std::optional<BlockRelief> finest;            // the height layer's finest relief within it, where known
 };
 
 // The heights over one node, of the cone given, where they are known more closely than the body's range (a
 // HEALPix pyramid's pages' true ranges, HealpixFaceLayer::faceNodeValues, or another raster's over the cone,
 // RegionalValueLayer::valuesWithin; the paper's per-node boxes, [Westerteiger et al. 2011, §3.2.1]; docs/references.md,
 // Errata); empty: the body's range.
-using NodeHeights = std::function<std::optional<HeightRange>(const NodeKey&, const NodeCone&)>;
+using NodeHeights = std::function<std::optional<RegionalHeights>(const NodeKey&, const NodeCone&)>;
 
 // One view's tests of node shells. Culling is exact for the cone's shell, so never removes what the cone
 // holds; the area is the paper's, the projection of a bounding box [Westerteiger et al. 2011, §3.2.2].
@@ -74,6 +80,10 @@ class ShellView {
   double projectedArea(const NodeShell& shell, const NodeKey& key) const;
   double boxArea(const NodeShell& shell) const;
   double faceOnArea(const NodeShell& shell, const NodeKey& key) const;
+  // The most the node's grid of `gridCells` cells a side may misplace its terrain on screen, px: the larger of the
+  // sphere's error (chordError) and the relief a vertex spacing may hide (reliefWithinSpacing), seen from the
+  // shell's nearest point at the screen's densest pixels. Infinite when the shell holds the eye.
+  double screenError(const NodeShell& shell, const NodeKey& key, int gridCells) const;
   // Terrain may hold more area than its patch of the sphere: twice as much, slopes of 60 degrees throughout.
   static constexpr double kSlopeAllowance = 2.0;
 
@@ -84,7 +94,9 @@ class ShellView {
   };
   glm::dvec3 eye_;
   glm::dmat3 planetToEye_;
-  double near_, focal_;        // focal length in pixels
+  double near_, focal_;  // focal length in pixels
+  double nearestDistanceSquared(const NodeShell& shell) const;
+
   glm::dvec2 halfScreen_;      // pixels
   double pixelsPerSteradian_;  // at the screen's corners, the most
   double radius_;
@@ -95,7 +107,8 @@ class ShellView {
 
 // The nodes a view draws of a body of `radius` (m) whose heights lie in `heights`: stateless, top down from
 // the twelve faces [Westerteiger et al. 2011, §3.2]; a node is culled by ShellView::culled, drawn when its projected
-// area times the threshold is at most its grid's vertices or at maxLevel, else refined. Then coarser
+// area times the threshold is at most its grid's vertices, when its screen error is at most the pixel error, or at
+// maxLevel, else refined. Then coarser
 // neighbours are split until drawn neighbours differ by at most one level, across face edges too, keeping
 // only the visible children of a split node; last the coarser edges are marked. Depth first from face 0.
 std::vector<SelectedNode> selectNodes(const View& view, double radius, HeightRange heights,

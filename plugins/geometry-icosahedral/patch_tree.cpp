@@ -7,6 +7,8 @@
 #include <numbers>
 #include <optional>
 
+#include <strata/plugin/geometric_error.hpp>
+
 namespace strata::icosahedral {
 namespace {
 
@@ -95,7 +97,8 @@ PatchShell PatchTree::shellOf(std::int32_t id) {
 // such as source.procedural's, from the value at each cap's centre, need not nest by themselves).
 HeightRange PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& corners) {
   if (!patchHeights_) return heights_;
-  const HeightRange own = patchHeights_(corners);
+  const auto [own, finest] = patchHeights_(corners);
+  topology_[id].finest = finest;
   const std::int32_t parent = topology_[id].parent;
   if (parent < 0) return own;
   const PatchShell outer = shellOf(parent);
@@ -210,13 +213,10 @@ double PatchTree::pixelsPerRadian() const {
   return finest;
 }
 
-// The sphere's error: a chord of the vertex spacing a (rad) misses the sphere by R a^2 / 8, and so do the
-// longitude and latitude interpolated along it, except that longitude bends along a chord as the cotangent of
-// its distance θ from the pole (floored at one spacing, where the pole itself is a vertex). The terrain's: the
-// relief a spacing may hide, from the relief within the patch scaled down to one spacing as for terrain as rough
-// as Brownian relief (height differences growing as the square root of distance), an estimate since the heights
-// between two vertices are unknown: it shrinks as the patch does on smooth terrain and stays large on rough, and
-// keeps the vertices, whose normals shade the relief, within a pixel or two of each other where relief shows.
+// The sphere's error: the chords' (chordError), from the patch's point nearest a pole. The terrain's: the relief a
+// spacing may hide (reliefWithinSpacing, over the patch's cap and its spacings in the same measure). It shrinks as
+// the patch does on smooth terrain and stays large on rough, and keeps the vertices, whose normals shade the
+// relief, within a pixel or two of each other where relief shows.
 double PatchTree::errorOf(std::int32_t id) {
   const PatchShell shell = shellOf(id);
   const double patchAngle = std::ldexp(kFaceEdgeAngle, -topology_[id].level);
@@ -224,9 +224,10 @@ double PatchTree::errorOf(std::int32_t id) {
   double fromPole = std::numbers::pi;
   for (const glm::dvec3& corner : shell.corners)
     fromPole = std::min(fromPole, std::acos(std::min(std::abs(corner.z), 1.0)));
-  const double theta = std::max(fromPole - patchAngle, spacing);
-  const double sphere = radius_ * spacing * spacing / 8.0 * (1.0 + 1.0 / std::tan(theta));
-  const double terrain = (shell.outerRadius - shell.innerRadius) / std::sqrt(std::ldexp(1.0, settings_.depth));
+  const double sphere = chordError(radius_, spacing, fromPole - patchAngle);
+  const double width = 2.0 * capAround(shell.corners).angle;
+  const double terrain = reliefWithinSpacing(shell.outerRadius - shell.innerRadius, topology_[id].finest, width,
+                                             std::ldexp(width, -settings_.depth));
   return std::max(sphere, terrain);
 }
 

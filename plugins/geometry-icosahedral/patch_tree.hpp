@@ -20,7 +20,7 @@ struct PatchTreeSettings {
 };
 
 // The heights of the terrain within a patch (HeightInput::within), asked once per patch.
-using PatchHeights = std::function<HeightRange(const SphericalTriangle& corners)>;
+using PatchHeights = std::function<RegionalHeights(const SphericalTriangle& corners)>;
 
 // A visible leaf, as the geometry generation takes it [Kooima 2008, §3.2.4].
 struct Patch {
@@ -71,7 +71,7 @@ class PatchTree {
   double splitDistanceAtLevelZero() const { return splitDistance(0); }
   // The geometric error of a patch drawn with `depth` subdivisions, m: the larger of the sphere's error (the
   // chords' sagitta, grown toward a pole where longitude bends fastest) and the terrain's (its relief over
-  // the patch spread over its vertex spacings).
+  // the patch scaled down to one vertex spacing as the relief's own roughness scales it).
   double errorOf(std::int32_t id);
 
   // Splits below this level would make patches narrower than about 7 mm (the icosahedron's 7054 km

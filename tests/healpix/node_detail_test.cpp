@@ -1,7 +1,8 @@
 // The detail a selection draws: more nodes as the threshold, vertices per pixel, rises (the paper's figure 7
 // values; [Westerteiger et al. 2011, §3.2.2]: drawn when area times threshold <= (gridCells + 1)^2), every
 // drawn node adequate by the area estimate unless at maxLevel, and the node under an eye 2 m up as fine as
-// the estimate's bound demands.
+// the estimate's bound demands. The paper's density alone: no pixel error draws a node early
+// (node_selection_test.cpp tests that).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,7 +19,7 @@ TEST(NodeDetail, CountRisesWithTheThreshold) {
   for (const TestView& test : testViews()) {
     std::size_t previous = 0;
     for (const double threshold : {0.005, 0.01, 0.2, 1.0}) {
-      const std::size_t count = selectAndReport(test, {.threshold = threshold}).size();
+      const std::size_t count = selectAndReport(test, {.threshold = threshold, .pixelError = 0.0}).size();
       if (previous != 0) {
         EXPECT_GE(count, previous) << test.name << " at " << threshold;
       }
@@ -30,7 +31,7 @@ TEST(NodeDetail, CountRisesWithTheThreshold) {
 TEST(NodeDetail, DrawnNodesAreAdequate) {
   for (const TestView& test : testViews()) {
     for (const double threshold : {0.005, 0.2, 1.0}) {
-      const SelectionSettings settings{.threshold = threshold};
+      const SelectionSettings settings{.threshold = threshold, .pixelError = 0.0};
       const ShellView shells(test.view(), kEarthRadius, test.heights);
       for (const SelectedNode& node : selectNodes(test.view(), kEarthRadius, test.heights, settings)) {
         if (node.key.level == settings.maxLevel) continue;
@@ -50,7 +51,7 @@ TEST(NodeDetail, DrawnNodesAreAdequate) {
 TEST(NodeDetail, NodeUnderTheEyeIsFine) {
   const TestView test{"2 m down", {45.0, 10.0, 2.0, 0.0, 0.0, 45.0}, {0.0, 0.0}};
   const View view = test.view();
-  const SelectionSettings settings;
+  const SelectionSettings settings{.pixelError = 0.0};
   const double h = test.camera.altitude, f = 0.5 * kHeight / std::tan(0.5 * view.verticalFov);
   int bound = settings.maxLevel;
   for (;; --bound) {

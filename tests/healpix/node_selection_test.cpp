@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <unordered_set>
 #include <vector>
 
@@ -66,6 +67,32 @@ TEST(NodeSelection, EveryVisiblePointLiesInExactlyOneNode) {
   }
 }
 
+// Level of detail by screen-space error (SelectionSettings::pixelError): the bare sphere's error is its chords'
+// sagitta, under a pixel for nodes far coarser than the paper's density asks, so from orbit and from 2 m it takes a
+// small share of the nodes the threshold alone draws; relief known only as the whole range (+-12 km) shows as error,
+// and takes more. Every node drawn by its error shows no more than the pixel error.
+TEST(NodeSelection, TheBareSphereTakesFewNodesAndReliefMore) {
+  const SelectionSettings byError, byThreshold{.pixelError = 0.0};
+  for (const Camera& camera : {Camera{10.0, 20.0, 2.0e7, 0.0, 0.0, 36.0}, Camera{137.4, -4.6, 2.0, 30.0, 60.0, 36.0}}) {
+    const View view = makeView(Body{"Earth", kEarthRadius}, camera, kWidth, kHeight);
+    const std::size_t bare = selectNodes(view, kEarthRadius, {0.0, 0.0}, byError).size();
+    const std::size_t dense = selectNodes(view, kEarthRadius, {0.0, 0.0}, byThreshold).size();
+    const HeightRange relief{-12000.0, 12000.0};
+    const View overRelief = makeView(Body{"Earth", kEarthRadius}, camera, kWidth, kHeight, relief);
+    const std::size_t rough = selectNodes(overRelief, kEarthRadius, relief, byError).size();
+    std::printf("%.0f m up: %zu nodes by the error on the bare sphere, %zu by the threshold alone, %zu over relief\n",
+                camera.altitude, bare, dense, rough);
+    EXPECT_LT(4 * bare, dense);
+    EXPECT_GT(rough, bare);
+    const ShellView shells(view, kEarthRadius, {0.0, 0.0});
+    for (const SelectedNode& node : selectNodes(view, kEarthRadius, {0.0, 0.0}, byError)) {
+      const NodeShell shell = shells.shellOf(node.key);
+      if (shells.projectedArea(shell, node.key) * byError.threshold <= byError.gridVertices()) continue;
+      EXPECT_LE(shells.screenError(shell, node.key, byError.gridCells), byError.pixelError);
+    }
+  }
+}
+
 // Per-node heights (a HEALPix pyramid's page ranges, HealpixFaceLayer::faceNodeValues) in place of one global range: 5
 // km above ground whose heights reach +-240 km somewhere (procedural.yaml's relief exaggerated 20 times) but lie within
 // +-2 km here, the shells near the eye shrink from columns 480 km tall to 4 km, and far fewer nodes are drawn; every
@@ -74,12 +101,14 @@ TEST(NodeSelection, PerNodeHeightsRefineOnlyWhatTheViewNeeds) {
   const HeightRange global{-240000.0, 240000.0}, local{-2000.0, 2000.0};
   const View view = makeView(Body{"Earth", kEarthRadius}, {20.0, 30.0, 5000.0, 60.0, 70.0, 45.0}, kWidth, kHeight);
   const std::vector<SelectedNode> coarse = selectNodes(view, kEarthRadius, global, {});
-  const NodeHeights known = [&](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> { return local; };
+  const NodeHeights known = [&](const NodeKey&, const NodeCone&) -> std::optional<RegionalHeights> {
+    return RegionalHeights{local};
+  };
   const std::vector<SelectedNode> fine = selectNodes(view, kEarthRadius, global, {}, known);
   std::printf("5 km up, heights +-240 km: %zu nodes; known to lie within +-2 km: %zu nodes\n", coarse.size(),
               fine.size());
   EXPECT_LT(fine.size() * 4, coarse.size());
-  const NodeHeights unknown = [](const NodeKey&, const NodeCone&) -> std::optional<HeightRange> {
+  const NodeHeights unknown = [](const NodeKey&, const NodeCone&) -> std::optional<RegionalHeights> {
     return std::nullopt;
   };
   EXPECT_EQ(selectNodes(view, kEarthRadius, global, {}, unknown).size(), coarse.size());

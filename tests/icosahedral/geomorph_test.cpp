@@ -39,7 +39,7 @@ class Geomorphing : public ::testing::TestWithParam<bool> {
   PatchTree tree() const {
     if (!GetParam()) return PatchTree(kEarth, {-kRelief, kRelief});
     return PatchTree(kEarth, {-kRelief, kRelief}, {}, [](const SphericalTriangle&) {
-      return HeightRange{-kRelief, kRelief};
+      return RegionalHeights{{-kRelief, kRelief}};
     });
   }
   // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.

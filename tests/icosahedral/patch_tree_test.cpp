@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <random>
 
 #include <strata/body.hpp>
@@ -164,7 +165,7 @@ PatchHeights proceduralHeights(const procedural::PlanetModel& planet, const Heig
   return [&planet, range](const SphericalTriangle& corners) {
     const SphericalCap cap = sampledCap(corners, 5);
     const procedural::HeightBounds bounds = procedural::heightsWithin(planet, cap.centre, cap.angle);
-    return HeightRange{std::max(bounds.least, range.lowest), std::min(bounds.greatest, range.highest)};
+    return RegionalHeights{{std::max(bounds.least, range.lowest), std::min(bounds.greatest, range.highest)}};
   };
 }
 
@@ -225,6 +226,45 @@ TEST(PatchTree, RoughTerrainCloseByTakesMorePatchesThanTheBareSphere) {
   EXPECT_GT(rough.visibleCount(), 2 * bare.visibleCount());
 }
 
+// How the terrain's relief scales with size decides how much of a patch's relief its vertex spacing may hide
+// (PatchTree::errorOf): a swell sloping 1 % everywhere, whose relief grows as the size (the layer's finest blocks,
+// 2 mrad wide, holding their share of it), takes under half the patches that the same relief takes where the
+// blocks say it is Brownian (their relief the patch's times the square root of the sizes' ratio) or where no
+// blocks are known; the last two, both rough, take the same. Each keeps every visible patch within its pixel error.
+TEST(PatchTree, SmoothReliefTakesFewerPatchesThanRoughReliefOfTheSameRange) {
+  constexpr double kSlope = 0.01, kBlockWidth = 2e-3;
+  enum class Blocks { kSmooth, kBrownian, kUnknown };
+  const auto heightsWith = [](Blocks blocks) -> PatchHeights {
+    return [blocks](const SphericalTriangle& corners) {
+      const double width = 2.0 * capAround(corners).angle, relief = kSlope * kEarth * width;
+      RegionalHeights heights{{0.0, relief}};
+      if (blocks == Blocks::kSmooth) heights.finest = BlockRelief{kSlope * kEarth * kBlockWidth, kBlockWidth};
+      if (blocks == Blocks::kBrownian)
+        heights.finest = BlockRelief{relief * std::sqrt(kBlockWidth / width), kBlockWidth};
+      return heights;
+    };
+  };
+  const View view = makeView(Body{"Earth", kEarth}, {.lon = 137.4, .lat = -4.6, .altitude = 2e5, .tilt = 45, .fov = 36},
+                             1280, 720, {0.0, kSlope * kEarth * std::numbers::pi});
+  const std::vector<ViewVolume> views{ViewVolume(view)};
+  const PatchTreeSettings settings{.patches = 20000};
+  std::vector<int> counts;
+  for (const Blocks blocks : {Blocks::kSmooth, Blocks::kBrownian, Blocks::kUnknown}) {
+    PatchTree tree(kEarth, {0.0, kSlope * kEarth * std::numbers::pi}, settings, heightsWith(blocks));
+    settle(tree, views);
+    ASSERT_LT(tree.visibleCount(), settings.patches);
+    for (const std::int32_t id : leaves(tree)) {
+      const PatchNode& node = tree.topology()[id];
+      if (!node.visible) continue;
+      EXPECT_LE(tree.errorOf(id) * views[0].pixelsPerRadian() / node.distance, settings.pixelError);
+    }
+    counts.push_back(tree.visibleCount());
+  }
+  std::printf("visible patches: %d smooth, %d Brownian, %d without blocks\n", counts[0], counts[1], counts[2]);
+  EXPECT_LT(2 * counts[0], counts[1]);
+  EXPECT_EQ(counts[1], counts[2]);
+}
+
 // Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser
 // exactly where the patch flags that edge as coarse.
 void expectOneLevelApartWithCoarseEdgesFlagged(const PatchTree& tree) {
@@ -269,8 +309,8 @@ TEST(PatchTree, TwoMetresAboveAPlateauSplitsAsTwoMetresAboveTheSphere) {
   // The plateau: everything within 20 km of the point below the eye.
   const PatchHeights plateau = [&](const SphericalTriangle& corners) {
     for (const glm::dvec3& corner : corners)
-      if (std::acos(std::min(glm::dot(corner, below), 1.0)) * kEarth > 20e3) return terrain;
-    return HeightRange{3000.0, 3000.0};
+      if (std::acos(std::min(glm::dot(corner, below), 1.0)) * kEarth > 20e3) return RegionalHeights{terrain};
+    return RegionalHeights{{3000.0, 3000.0}};
   };
   PatchTree bare(kEarth, {0.0, 0.0}, kCappedByPatches);
   settle(bare, std::vector<ViewVolume>{ViewVolume(viewFrom(overSphere))});

@@ -129,6 +129,32 @@ TEST(BlockCaps, AGridCentredOnThePolesBoundsSmallCapsByTheirOwnBlocks) {
   EXPECT_FALSE(near.gaps);
 }
 
+// The relief of the finest blocks (BlockRelief): the whole body's query finds the largest range any one block
+// holds, counted by brute force, and that block's width, its cap's diameter: at least a texel's quarter degree
+// and at most a block's diagonal with its margins; a small cap's blocks hold no more relief than the cap's
+// whole range.
+TEST(BlockCaps, TheFinestBlocksReliefIsTheLargestOneBlockHolds) {
+  const Raster grid{"+proj=longlat", {-180.125, 0.25, 0.0, 90.125, 0.0, -0.25}, 1440, 721, true};
+  std::shared_ptr<const Projection> projection = test::makeProjection(grid.terms, Ellipsoid{kEarth, 0.0});
+  const std::shared_ptr<BlockRanges> ranges = countField(grid, *projection);
+  double largest = 0.0;
+  for (int row = 0; row < ranges->rows(); ++row)
+    for (int column = 0; column < ranges->columns(); ++column)
+      if (const BlockRanges::Block& block = ranges->at(column, row); block.counted > 0)
+        largest = std::max(largest, block.greatest - block.least);
+  const BlockCaps blockCaps(ranges, {projection, grid.geotransform}, true);
+  const BlockValues whole = blockCaps.within({glm::dvec3(0.0, 0.0, 1.0), std::numbers::pi});
+  EXPECT_DOUBLE_EQ(whole.blockRange, largest);
+  const double blockDegrees = 0.25 * ranges->blockTexels();
+  EXPECT_GT(whole.blockWidth, radians(0.25));
+  EXPECT_LT(whole.blockWidth, radians(std::numbers::sqrt2 * (blockDegrees + 0.5) * 1.1));
+  for (const SphericalCap& cap : capsNear({137.4, -4.6}, {1e-3, 0.05, 0.6})) {
+    const BlockValues near = blockCaps.within(cap);
+    EXPECT_GT(near.blockRange, 0.0);
+    EXPECT_LE(near.blockRange, near.greatest - near.least);
+  }
+}
+
 TEST(BlockCaps, APolarStereographicMapHoldsEveryTexelACapSamples) {
   const Raster polar{
       "+proj=stere +lat_0=-90 +lat_ts=-71", {-3.0e6, 5000.0, 0.0, 3.0e6, 0.0, -5000.0}, 1200, 1200, false};

@@ -29,13 +29,17 @@ std::vector<BlockValues> valuesOf(const BlockRanges& ranges) {
   for (int row = 0; row < ranges.rows(); ++row)
     for (int column = 0; column < ranges.columns(); ++column) {
       const BlockRanges::Block& block = ranges.at(column, row);
-      values.push_back({block.least, block.greatest, ranges.holdsGaps(column, row)});
+      values.push_back({.least = block.least, .greatest = block.greatest, .gaps = ranges.holdsGaps(column, row)});
     }
   return values;
 }
 
+// Both blocks' values; of their blocks' relief, the larger's (a real block's range and width, which a block
+// flattened to a point at a pole does not take the width of).
 BlockValues spanning(const BlockValues& a, const BlockValues& b) {
-  return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps};
+  const BlockValues& rougher = a.blockRange >= b.blockRange ? a : b;
+  return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps, rougher.blockRange,
+          rougher.blockWidth};
 }
 
 // Whether `outer` holds every direction of `inner`.
@@ -58,8 +62,14 @@ BlockCaps::BlockCaps(BlockLayout layout, std::vector<BlockValues> values, Raster
     : layout_(layout), georeference_(std::move(georeference)), repeatX_(repeatX), coversBody_(coversBody) {
   Level blocks;
   for (int row = 0; row < layout_.rows(); ++row)
-    for (int column = 0; column < layout_.columns(); ++column)
-      blocks.push_back({capOfBlock(column, row), values[std::size_t(row) * layout_.columns() + column]});
+    for (int column = 0; column < layout_.columns(); ++column) {
+      Group block{capOfBlock(column, row), values[std::size_t(row) * layout_.columns() + column]};
+      if (block.values.counted()) {
+        block.values.blockRange = block.values.greatest - block.values.least;
+        block.values.blockWidth = 2.0 * block.cap.angle;
+      }
+      blocks.push_back(block);
+    }
   levels_.push_back(std::move(blocks));
   while (columnsAt(levels_.size() - 1) > 1 || rowsAt(levels_.size() - 1) > 1) addCoarserLevel();
 }

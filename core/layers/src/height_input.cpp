@@ -86,12 +86,13 @@ bool HeightInput::boundsRegions() const {
   return regional && regional->valuesWithin(SphericalCap{glm::dvec3(0.0, 0.0, 1.0), std::numbers::pi}).has_value();
 }
 
-HeightRange HeightInput::within(const SphericalCap& cap) const {
+RegionalHeights HeightInput::within(const SphericalCap& cap) const {
   const auto* regional = layer_ ? layer_->as<RegionalValueLayer>() : nullptr;
   const std::optional<ValueRange> known = regional ? regional->valuesWithin(cap) : std::nullopt;
-  if (!known) return range_;
+  if (!known) return {range_};
   const HeightRange there{std::max(known->least, range_.lowest), std::min(known->greatest, range_.highest)};
-  return there.lowest <= there.highest ? there : range_;
+  if (there.lowest > there.highest) return {range_};
+  return {there, known->finest};
 }
 
 void HeightInput::checkGivenHold(const ValueRange& known) const {

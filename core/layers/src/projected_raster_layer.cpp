@@ -56,11 +56,14 @@ std::optional<ValueRange> ProjectedRasterLayer::valueRange() const {
 std::optional<ValueRange> ProjectedRasterLayer::valuesWithin(const SphericalCap& cap) const {
   if (!blockCaps_ || isColour(kind_)) return std::nullopt;
   const BlockValues found = blockCaps_->within(cap);
-  std::optional<ValueRange> values;
-  if (found.counted()) values = transformed(found.least, found.greatest);
-  if (found.gaps)
-    values = values ? ValueRange{std::min(values->least, 0.0), std::max(values->greatest, 0.0)} : ValueRange{};
-  return values.value_or(ValueRange{});
+  if (!found.counted()) return ValueRange{};
+  ValueRange values = transformed(found.least, found.greatest);
+  values.finest = BlockRelief{found.blockRange * std::abs(scale_), found.blockWidth};
+  if (found.gaps) {
+    values.least = std::min(values.least, 0.0);
+    values.greatest = std::max(values.greatest, 0.0);
+  }
+  return values;
 }
 
 ValueRange ProjectedRasterLayer::transformed(double rawLeast, double rawGreatest) const {

@@ -10,11 +10,14 @@
 
 namespace strata {
 
-// What a raster's blocks hold within a cap (BlockCaps::within): raw values, and whether no data shows there.
+// What a raster's blocks hold within a cap (BlockCaps::within): raw values, whether no data shows there, and the
+// relief of the blocks themselves (BlockRelief).
 struct BlockValues {
   double least = std::numeric_limits<double>::infinity();
   double greatest = -std::numeric_limits<double>::infinity();
-  bool gaps = false;  // some texel there holds no data, or the cap reaches beyond the raster: the sphere shows
+  bool gaps = false;        // some texel there holds no data, or the cap reaches beyond the raster: the sphere shows
+  double blockRange = 0.0;  // the largest greatest - least of one block
+  double blockWidth = std::numeric_limits<double>::infinity();  // rad: that block's cap's diameter
   bool counted() const { return least <= greatest; }
 };
 

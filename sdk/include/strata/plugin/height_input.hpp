@@ -7,6 +7,7 @@
 
 #include <strata/body.hpp>
 #include <strata/error.hpp>
+#include <strata/plugin/layer.hpp>
 #include <strata/plugin/parameter.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/port.hpp>
@@ -15,9 +16,15 @@ STRATA_EXPORTS_BEGIN
 namespace strata {
 
 class Layer;
-struct ValueRange;
 struct NodeSetup;
 struct SphericalCap;
+
+// The heights within a region of the body (HeightInput::within), and their relief at the finest scale the
+// height layer knows, where it knows one: geometry scales a region's relief down to its vertex spacing by them.
+struct RegionalHeights {
+  HeightRange range;
+  std::optional<BlockRelief> finest;
+};
 
 // The heights a generator is told to trust, as a pipeline writes them. Unset: the height layer's own range
 // is exact (a raster's statistics or every texel counted, the analytic bound of procedural relief, the union
@@ -55,7 +62,7 @@ class HeightInput {
   bool boundsRegions() const;
   // The heights within `cap`, where the layer knows them there, within range(); else range(). Culling and
   // levels of detail take a patch's own, so that a patch on a plateau lies on it.
-  HeightRange within(const SphericalCap& cap) const;
+  RegionalHeights within(const SphericalCap& cap) const;
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
   // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when

@@ -16,11 +16,21 @@ class ShaderProgram;
 struct SourceLocation;
 class TextureUnits;
 
+// How a one-channel layer's values vary at the finest scale it bounds them by (RegionalValueLayer::valuesWithin,
+// a raster's blocks of texels): the largest range within any one block of the region asked, and that block's
+// width, rad (its cap's diameter). With a region's own range it tells how fast the values' range shrinks with the
+// region's size: smooth data's as the size, rough data's as its square root.
+struct BlockRelief {
+  double range = 0.0;
+  double width = 0.0;
+};
+
 // The least and greatest values a one-channel layer returns, as its sampling function returns them
 // (heights: metres, after the source's scale and offset).
 struct ValueRange {
   double least = 0.0;
   double greatest = 0.0;
+  std::optional<BlockRelief> finest;  // valuesWithin() of a layer that knows its values by block: theirs
 };
 
 // A layer is a GLSL sampling function over a projection, plus the GPU resources behind it
