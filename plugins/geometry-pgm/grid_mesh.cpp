@@ -1,6 +1,7 @@
 #include "grid_mesh.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include <strata/camera.hpp>
 
@@ -32,33 +33,40 @@ glm::vec2 sinCosOfLatitude(const View& view) {
 
 }  // namespace
 
-GridMesh::GridMesh(glm::ivec2 size) : size_(size) {
+GridMesh::GridMesh(glm::ivec2 capacity) {
   glCreateBuffers(1, &vertices_);
-  glNamedBufferStorage(vertices_, GLsizeiptr(size.x) * size.y * GLsizeiptr(sizeof(Vertex)), nullptr, 0);
-  const std::vector<GLuint> indices = triangleIndices(size);
-  glCreateBuffers(1, &indices_);
-  glNamedBufferStorage(indices_, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
+  glNamedBufferStorage(vertices_, GLsizeiptr(capacity.x) * capacity.y * GLsizeiptr(sizeof(Vertex)), nullptr, 0);
   glCreateVertexArrays(1, &vertexArray_);
-  glVertexArrayElementBuffer(vertexArray_, indices_);
 }
 
 GridMesh::~GridMesh() {
   glDeleteVertexArrays(1, &vertexArray_);
-  const GLuint buffers[] = {vertices_, indices_};
-  glDeleteBuffers(2, buffers);
+  glDeleteBuffers(1, &vertices_);
+  for (const auto& [size, buffer] : indices_) glDeleteBuffers(1, &buffer);
 }
 
-void GridMesh::displace(const CastBuffers& cast) const {
+GLuint GridMesh::indicesOf(glm::ivec2 size) {
+  GLuint& buffer = indices_[{size.x, size.y}];
+  if (buffer == 0) {
+    const std::vector<GLuint> indices = triangleIndices(size);
+    glCreateBuffers(1, &buffer);
+    glNamedBufferStorage(buffer, GLsizeiptr(indices.size() * sizeof(GLuint)), indices.data(), 0);
+  }
+  return buffer;
+}
+
+void GridMesh::displace(const CastBuffers& cast, glm::ivec2 size) const {
   cast.bind(0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, vertices_);
-  dispatchOver(size_);
+  dispatchOver(size);
 }
 
-void GridMesh::draw() const {
+void GridMesh::draw(glm::ivec2 size) {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vertices_);
+  glVertexArrayElementBuffer(vertexArray_, indicesOf(size));
   glBindVertexArray(vertexArray_);
-  glDrawElements(GL_TRIANGLES, GLsizei(6 * cells()), GL_UNSIGNED_INT, nullptr);
+  glDrawElements(GL_TRIANGLES, GLsizei(3 * triangles(size)), GL_UNSIGNED_INT, nullptr);
   glBindVertexArray(0);
 }
 

@@ -1,5 +1,7 @@
 #pragma once
 #include <cstdint>
+#include <map>
+#include <utility>
 
 #include <glm/glm.hpp>
 
@@ -16,20 +18,22 @@ namespace strata::pgm {
 // grid cell, drawn by pgm_grid.vert. Every ray has a point (one that misses lies on the horizon,
 // pgm_cast.comp), so the triangles are the same every frame: the diagonal from each cell's lower left to
 // its upper right corner, counter-clockwise as rows and columns run in the sampling camera's image, and so
-// as seen from the eye, whatever the camera's rotation.
+// as seen from the eye, whatever the camera's rotation. A frame's grid may be any size up to the capacity
+// (grid_detail.hpp): the vertices of a grid of size (c, r) take the first c x r places, and each size drawn
+// keeps its own triangles.
 class GridMesh {
  public:
-  explicit GridMesh(glm::ivec2 size);
+  explicit GridMesh(glm::ivec2 capacity);
   ~GridMesh();
   GridMesh(const GridMesh&) = delete;
   GridMesh& operator=(const GridMesh&) = delete;
 
-  // With pgm_displace.comp in use (useDisplacement): the vertices from the cast pass's buffers.
-  void displace(const CastBuffers& cast) const;
-  // With pgm_grid.vert in use: draws the triangles.
-  void draw() const;
+  // With pgm_displace.comp in use (useDisplacement with `size`): the vertices from the cast pass's buffers.
+  void displace(const CastBuffers& cast, glm::ivec2 size) const;
+  // With pgm_grid.vert in use: draws the triangles of a grid of `size`.
+  void draw(glm::ivec2 size);
 
-  std::uint64_t triangles() const { return 2 * cells(); }
+  static std::uint64_t triangles(glm::ivec2 size) { return 2 * std::uint64_t(size.x - 1) * std::uint64_t(size.y - 1); }
 
   // What pgm_displace.comp writes for each grid point (pgm_grid_vertex.glsl).
   struct Vertex {
@@ -39,12 +43,11 @@ class GridMesh {
   };
 
  private:
-  std::size_t cells() const { return std::size_t(size_.x - 1) * std::size_t(size_.y - 1); }
+  GLuint indicesOf(glm::ivec2 size);
 
-  glm::ivec2 size_;
   GLuint vertices_ = 0;
-  GLuint indices_ = 0;
-  GLuint vertexArray_ = 0;  // empty: the vertex shader pulls its vertices; it holds the index buffer
+  std::map<std::pair<int, int>, GLuint> indices_;  // by the grid's columns and rows, made when first drawn
+  GLuint vertexArray_ = 0;  // empty: the vertex shader pulls its vertices; it holds the index buffer drawn
 };
 
 // The displacement pass's uniforms for a view (pgm_displace.comp): the local frame at View::reference, the

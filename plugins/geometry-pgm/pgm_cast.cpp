@@ -34,10 +34,10 @@ void useCast(const ShaderProgram& program, const SamplingCamera& camera, const C
   program.set("outermostTangent", float(std::tan(outermost)));
 }
 
-CastBuffers::CastBuffers(glm::ivec2 size) : size_(size) {
+CastBuffers::CastBuffers(glm::ivec2 capacity) : capacity_(capacity) {
   glCreateBuffers(GLsizei(buffers_.size()), buffers_.data());
   for (const GLuint buffer : buffers_)
-    glNamedBufferStorage(buffer, GLsizeiptr(size.x) * size.y * GLsizeiptr(sizeof(glm::vec4)), nullptr, 0);
+    glNamedBufferStorage(buffer, GLsizeiptr(capacity.x) * capacity.y * GLsizeiptr(sizeof(glm::vec4)), nullptr, 0);
 }
 
 CastBuffers::~CastBuffers() { glDeleteBuffers(GLsizei(buffers_.size()), buffers_.data()); }
@@ -46,13 +46,13 @@ void CastBuffers::bind(GLuint first) const {
   for (GLuint i = 0; i < buffers_.size(); ++i) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, first + i, buffers_[i]);
 }
 
-void CastBuffers::cast() const {
+void CastBuffers::cast(glm::ivec2 size) const {
   bind(0);
-  glDispatchCompute(GLuint(size_.x + 7) / 8, GLuint(size_.y + 7) / 8, 1);  // local size 8 x 8
+  glDispatchCompute(GLuint(size.x + 7) / 8, GLuint(size.y + 7) / 8, 1);  // local size 8 x 8
 }
 
 std::vector<CastBuffers::Point> CastBuffers::read() const {
-  const std::size_t count = std::size_t(size_.x) * std::size_t(size_.y);
+  const std::size_t count = std::size_t(capacity_.x) * std::size_t(capacity_.y);
   std::vector<glm::vec4> normals(count), positions(count);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(buffers_[0], 0, GLsizeiptr(count * sizeof(glm::vec4)), normals.data());

@@ -24,18 +24,19 @@ glm::dvec3 gridRay(const SamplingCamera& camera, glm::ivec2 size, int column, in
 void useCast(const ShaderProgram& program, const SamplingCamera& camera, const CrossSection& view,
              const glm::dmat3& samplingToLocal, glm::ivec2 size);
 
-// The pass's two grid-sized buffers, row by row [Mahsman 2010, §3.6.1].
+// The pass's two grid-sized buffers, row by row [Mahsman 2010, §3.6.1], for grids of up to `capacity` points.
 class CastBuffers {
  public:
-  explicit CastBuffers(glm::ivec2 size);
+  explicit CastBuffers(glm::ivec2 capacity);
   ~CastBuffers();
   CastBuffers(const CastBuffers&) = delete;
   CastBuffers& operator=(const CastBuffers&) = delete;
 
-  // Casts the grid's rays with the program in use (pgm_cast.comp).
-  void cast() const;
+  // Casts the rays of a grid of `size` points with the program in use (pgm_cast.comp, whose gridSize it must be).
+  void cast(glm::ivec2 size) const;
 
-  // What the pass wrote for each grid point, read back from the GPU (which this waits for): for tests.
+  // What the pass wrote for each grid point of a grid of the capacity, read back from the GPU (which this waits
+  // for): for tests.
   struct Point {
     glm::vec4 normal;    // xyz: the unit sphere normal in the local frame; w: 1 for a hit, 0 for a miss
     glm::vec4 position;  // xyz: from the eye in the local frame; zero for a miss
@@ -46,7 +47,7 @@ class CastBuffers {
   void bind(GLuint first) const;
 
  private:
-  glm::ivec2 size_;
+  glm::ivec2 capacity_;
   std::array<GLuint, 2> buffers_{};  // normals, positions: bindings 0 and 1
 };
 

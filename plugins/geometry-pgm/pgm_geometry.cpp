@@ -8,6 +8,7 @@
 #include <deque>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 
 #include <strata/camera.hpp>
@@ -20,7 +21,9 @@
 #include <strata/plugin/layer.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
+#include "grid_detail.hpp"
 #include "grid_mesh.hpp"
 #include "grid_size.hpp"
 #include "pgm_cast.hpp"
@@ -35,6 +38,7 @@ namespace {
 // The node's settings as a pipeline writes them, each default's reason beside it.
 struct PgmSettings {
   std::string grid = "1024x1024";  // the thesis's largest: a ray for every two pixels at 1920x1080
+  double pixelError = 1.0;         // px: an error under a pixel does not show
   double zeta = 0.9;               // the thesis's
 };
 
@@ -43,9 +47,14 @@ const ParameterBindings<PgmSettings>& pgmParameters() {
   static const auto bindings =
       ParameterBindings<S>()
           .add(&S::grid, {.name = "grid",
-                          .doc = "rays cast each frame, columns x rows, whatever the screen's size (1024x1024, the "
-                                 "thesis's largest, is a ray for every two pixels at 1920x1080; a smaller grid "
+                          .doc = "the most rays a frame casts, columns x rows, whatever the screen's size (1024x1024, "
+                                 "the thesis's largest, is a ray for every two pixels at 1920x1080; a smaller grid "
                                  "undersamples sharp peaks)"})
+          .add(&S::pixelError, {.name = "pixel_error",
+                                .minimum = 0.0,
+                                .maximum = 100.0,
+                                .doc = "px: a frame casts the coarsest halving of grid whose geometric error shows no "
+                                       "more than this (one pixel is what the eye cannot resolve; 0: grid always)"})
           .add(&S::zeta, {.name = "zeta",
                           .minimum = 0.0,
                           .maximum = 1.0,
@@ -83,13 +92,15 @@ class PgmGeometry : public Node, public SurfaceGeometry {
       : heights_(setup),
         radius_(setup.body->radius),
         grid_(gridOf(setup)),
+        castGrid_(grid_),
+        pixelError_(pgmParameters().read(setup.parameters).pixelError),
         zeta_(pgmParameters().read(setup.parameters).zeta) {}
 
   // The height layer has opened: where it knows its heights, they must lie within the reference spheres'.
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
-    cast_ = ShaderProgram(
+    castProgram_ = ShaderProgram(
         {{GL_COMPUTE_SHADER, "geometry-pgm/pgm_cast.comp", gpu.shaders->expand("geometry-pgm/pgm_cast.comp")}});
     displacement_ = ShaderProgram({{GL_COMPUTE_SHADER, "geometry-pgm/pgm_displace.comp",
                                     gpu.shaders->expand("geometry-pgm/pgm_displace.comp", heights_.substitutions())}});
@@ -106,8 +117,8 @@ class PgmGeometry : public Node, public SurfaceGeometry {
 
   GeometryStatistics statistics() const override {
     return {0,
-            std::uint64_t(grid_.x) * std::uint64_t(grid_.y),
-            mesh_->triangles(),
+            std::uint64_t(castGrid_.x) * std::uint64_t(castGrid_.y),
+            GridMesh::triangles(castGrid_),
             visibilityMs_,
             gridTimer_->milliseconds(),
             rasterisationTimer_->milliseconds()};
@@ -121,14 +132,17 @@ class PgmGeometry : public Node, public SurfaceGeometry {
 
  private:
   std::optional<double> leastVisibleHeight(const View& view);
+  glm::ivec2 gridFor(const View& view, const SamplingCamera& camera) const;
   void makeGrid(const View& view);
   void rasterise(const View& view);
 
   HeightInput heights_;
   double radius_;
-  glm::ivec2 grid_;
+  glm::ivec2 grid_;      // the most rays a frame casts
+  glm::ivec2 castGrid_;  // those the last frame cast (gridForError)
+  double pixelError_;
   double zeta_;
-  ShaderProgram cast_, displacement_, surface_;
+  ShaderProgram castProgram_, displacement_, surface_;
   std::optional<CastBuffers> castBuffers_;
   std::optional<GridMesh> mesh_;
   std::optional<VisibleRadius> visibleRadius_;
@@ -169,17 +183,31 @@ void PgmGeometry::makeGrid(const View& view) {
   const CrossSection section = crossSection(distance, spheres.primary, spheres.secondary, zeta_);
   const SamplingCamera camera = samplingCamera(viewCamera(view), spheres.primary);
   const glm::dmat3 samplingToLocal = planetToLocal(view.reference) * glm::transpose(camera.planetToSampling);
+  castGrid_ = gridFor(view, camera);
   visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   gridTimer_->begin();
-  useCast(cast_, camera, section, samplingToLocal, grid_);
-  castBuffers_->cast();
+  useCast(castProgram_, camera, section, samplingToLocal, castGrid_);
+  castBuffers_->cast(castGrid_);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  useDisplacement(displacement_, grid_, view, radius_, spheres.primary);
+  useDisplacement(displacement_, castGrid_, view, radius_, spheres.primary);
   TextureUnits units;
   if (heights_.layer()) heights_.layer()->bind(displacement_, units);
-  mesh_->displace(*castBuffers_);
+  mesh_->displace(*castBuffers_, castGrid_);
   gridTimer_->end();
+}
+
+// The grid's error bounded over the ground the eye can see: the cap out to the horizon of the lowest terrain.
+glm::ivec2 PgmGeometry::gridFor(const View& view, const SamplingCamera& camera) const {
+  const double distance = glm::length(view.eye), lowest = radius_ + heights_.range().lowest;
+  const double horizon = distance > lowest ? std::acos(lowest / distance) : std::numbers::pi;
+  const GridScene scene{.radius = radius_,
+                        .eyeDistance = distance,
+                        .pixelsPerRadian = 0.5 * view.height / view.halfFrameTangents().y,
+                        .visible = heights_.within(SphericalCap{view.eye / distance, horizon}),
+                        .visibleWidth = 2.0 * horizon};
+  const glm::dvec2 extent((camera.right - camera.left) / camera.near, (camera.top - camera.bottom) / camera.near);
+  return gridForError(grid_, extent, scene, pixelError_);
 }
 
 void PgmGeometry::rasterise(const View& view) {
@@ -191,7 +219,7 @@ void PgmGeometry::rasterise(const View& view) {
   // would leave the pixel to the sky (geometry.healpix lost a pixel so, 2 m up and tilted 88 degrees).
   useGridSurface(surface_, view);
   rasterisationTimer_->begin();
-  mesh_->draw();
+  mesh_->draw(castGrid_);
   rasterisationTimer_->end();
   glDisable(GL_DEPTH_TEST);
 }

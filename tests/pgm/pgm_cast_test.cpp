@@ -123,7 +123,7 @@ Errors castOnGpu(double altitude, double tilt) {
   const ShaderProgram program({{GL_COMPUTE_SHADER, "pgm_cast.comp", library.expand("geometry-pgm/pgm_cast.comp")}});
   useCast(program, camera, section, samplingToLocal, kGrid);
   const CastBuffers buffers(kGrid);
-  buffers.cast();
+  buffers.cast(kGrid);
   const std::vector<CastBuffers::Point> gpu = buffers.read();
   Errors errors;
   for (int row = 0; row < kGrid.y; ++row) {

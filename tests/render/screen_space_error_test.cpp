@@ -107,10 +107,11 @@ TEST_P(ScreenSpaceError, OnSmoothTerrainTheDefaultThresholdDrawsWhatAFinerOneDra
 }
 
 // geometry.icosahedral's finer threshold may take up to 20,000 patches rather than 300; geometry.healpix's asks
-// for five times the paper's recommended density as well.
+// for five times the paper's recommended density as well; geometry.pgm's casts up to its whole grid.
 INSTANTIATE_TEST_SUITE_P(Generators, ScreenSpaceError,
                          ::testing::Values(Generator{"geometry.icosahedral", ", patches: 20000"},
-                                           Generator{"geometry.healpix", ", threshold: 1.0"}),
+                                           Generator{"geometry.healpix", ", threshold: 1.0"},
+                                           Generator{"geometry.pgm", ""}),
                          [](const ::testing::TestParamInfo<Generator>& generator) {
                            return generator.param.type.substr(generator.param.type.find('.') + 1);
                          });
