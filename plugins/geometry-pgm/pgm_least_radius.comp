@@ -1,9 +1,11 @@
 #version 450 core
 // The least visible height of a frame, for the next frame's primary reference sphere ([Mahsman 2010, §3.4.1],
 // its second method; plugins/geometry-pgm/visible_radius.cpp). The input holds each pixel's height above the
-// body's radius in metres, +infinity where no terrain was drawn. Each 16 x 16 workgroup folds its texels in
-// shared memory, then one atomicMin per workgroup folds them all into one uint: one dispatch, where the
-// thesis's min mipmap takes a pass per level. GL 4.5 has no float atomicMin, so the heights go through
+// body's radius in metres, +infinity where no terrain was drawn. Each invocation folds a block of 4 x 4 texels,
+// each 16 x 16 workgroup its invocations' in shared memory, then one atomicMin per workgroup folds them all into
+// one uint: one dispatch, where the thesis's min mipmap takes a pass per level. The blocks keep the workgroups,
+// and their barriers, few: llvmpipe runs each barrier of each workgroup as a switch of all its invocations, and
+// a texel per invocation took most of the geometry's pass. GL 4.5 has no float atomicMin, so the heights go through
 // orderedBits, which orders their uints as the floats are ordered; min is exact, so the result is the least
 // texel to the bit, whatever order the workgroups finish in.
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -15,6 +17,8 @@ const int kSamples = STRATA_HEIGHT_SAMPLES;
 layout(std430, binding = 0) buffer Least { uint least; };  // orderedBits of the minimum; cleared to +inf's
 
 uniform ivec2 size;  // the part of `heights` to reduce, from its corner (0, 0)
+
+const int kBlock = 4;  // texels an invocation folds each way: visible_radius.cpp's dispatch counts them
 
 const uint kGroupSize = 256u;
 const float kUncovered = uintBitsToFloat(0x7f800000u);  // +infinity
@@ -28,6 +32,17 @@ float leastOfPixel(ivec2 texel) {
   return least;
 }
 
+// The least of the block of texels from `corner`, within `size`.
+float leastOfBlock(ivec2 corner) {
+  float least = kUncovered;
+  for (int y = 0; y < kBlock; ++y)
+    for (int x = 0; x < kBlock; ++x) {
+      ivec2 texel = corner + ivec2(x, y);
+      if (all(lessThan(texel, size))) least = min(least, leastOfPixel(texel));
+    }
+  return least;
+}
+
 // A uint that compares as the float does: positives get the sign bit set, negatives are flipped whole.
 uint orderedBits(float value) {
   const uint bits = floatBitsToUint(value);
@@ -35,9 +50,8 @@ uint orderedBits(float value) {
 }
 
 void main() {
-  const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   const uint index = gl_LocalInvocationIndex;
-  partial[index] = all(lessThan(texel, size)) ? leastOfPixel(texel) : kUncovered;
+  partial[index] = leastOfBlock(ivec2(gl_GlobalInvocationID.xy) * kBlock);
   memoryBarrierShared();
   barrier();
   for (uint stride = kGroupSize / 2u; stride > 0u; stride /= 2u) {

@@ -15,7 +15,7 @@ namespace strata::pgm {
 namespace {
 
 constexpr std::uint32_t kSignBit = 0x80000000u;
-constexpr int kGroupSide = 16;  // pgm_least_radius.comp's local size
+constexpr int kGroupSide = 16 * 4;  // texels a workgroup of pgm_least_radius.comp folds each way: 16 x 16 blocks of 4
 
 // pgm_least_radius.comp's orderedBits of +infinity: what the minimum starts from, and stays at when no
 // texel was covered.
