@@ -170,7 +170,8 @@ NodeTypeDeclaration declaration() {
   type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
   type.type = "geometry.healpix";
   type.category = NodeCategory::Geometry;
-  type.summary = "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size and error on screen, placed on the GPU";
+  type.summary =
+      "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size and error on screen, placed on the GPU";
   type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = healpixParameters().declarations();
