@@ -133,7 +133,7 @@ NodeHeights HealpixGeometry::nodeHeights() const {
 // The heights' footprint: the threshold asks for `threshold` vertices a pixel, so vertices stand
 // 1 / sqrt(threshold) pixels apart, a pixel's angle times that per metre from the eye on the ground.
 void HealpixGeometry::useSurface(const View& view) {
-  const double pixelAngle = 2.0 * view.halfFrameTangents().y / view.height;
+  const double pixelAngle = 1.0 / view.pixelsPerRadian();
   surface_.use();
   surface_.set("gridCells", settings_.gridCells);
   surface_.set("planetToEye", glm::mat3(view.planetToEye));

@@ -78,7 +78,7 @@ ShellView::ShellView(const View& view, double radius, HeightRange heights, NodeH
     : eye_(view.eye),
       planetToEye_(view.planetToEye),
       near_(view.near),
-      focal_(0.5 * double(view.height) / view.halfFrameTangents().y),
+      focal_(view.pixelsPerRadian()),
       halfScreen_(0.5 * double(view.width), 0.5 * double(view.height)),
       pixelsPerSteradian_(focal_ * focal_ *
                           std::pow(1.0 + glm::dot(halfScreen_, halfScreen_) / (focal_ * focal_), 1.5)),

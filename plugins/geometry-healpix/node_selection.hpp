@@ -92,11 +92,11 @@ class ShellView {
     glm::dvec3 normal;  // unit, toward the inside
     double offset;      // inside where dot(normal, p - eye) + offset >= 0
   };
-  glm::dvec3 eye_;
-  glm::dmat3 planetToEye_;
-  double near_, focal_;  // focal length in pixels
   double nearestDistanceSquared(const NodeShell& shell) const;
 
+  glm::dvec3 eye_;
+  glm::dmat3 planetToEye_;
+  double near_, focal_;        // focal length in pixels
   glm::dvec2 halfScreen_;      // pixels
   double pixelsPerSteradian_;  // at the screen's corners, the most
   double radius_;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <strata/body.hpp>
-#include <strata/plugin/layer.hpp>
 
 #include "icosahedron.hpp"
 
@@ -22,7 +21,7 @@ struct PatchNode {
   bool visible = false;                // set by the tree's visibility test
   double distance = 0.0;               // m: the least face-on distance (patch_shell.hpp) from an eye that sees it
   std::optional<HeightRange> heights;  // the terrain's within it, once the tree asked (PatchHeights)
-  std::optional<BlockRelief> finest;   // and its relief at the height layer's finest scale, where that is known
+  double terrainError = 0.0;           // m: the relief a vertex spacing may hide, set with heights (PatchTree::errorOf)
   bool leaf() const { return children[0] < 0; }
 };
 

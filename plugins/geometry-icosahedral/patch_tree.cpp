@@ -86,25 +86,32 @@ double PatchTree::splitDistance(int level, double detail) const {
   return std::ldexp(detail * radius_ * kFaceEdgeAngle, -level);
 }
 
+// The shell and, the first time, the terrain's error over the patch's cap, its spacings in the same measure: the
+// relief a spacing may hide (reliefWithinSpacing), which stays the patch's while its heights do.
 PatchShell PatchTree::shellOf(std::int32_t id) {
   const SphericalTriangle corners = topology_.cornersOf(id);
-  if (!topology_[id].heights) topology_[id].heights = heightsOf(id, corners);
+  if (!topology_[id].heights) {
+    const RegionalHeights heights = heightsOf(id, corners);
+    const double width = 2.0 * capAround(corners).angle;
+    topology_[id].heights = heights.range;
+    topology_[id].terrainError = reliefWithinSpacing(heights.range.highest - heights.range.lowest, heights.finest,
+                                                     width, std::ldexp(width, -settings_.depth));
+  }
   return {corners, radius_ + topology_[id].heights->lowest, radius_ + topology_[id].heights->highest};
 }
 
 // A patch's heights within its parent's: what a child samples lies within what its parent samples, so both
 // bound the child's terrain, and nested shells keep a split patch's children no nearer than itself can be (bounds
 // such as source.procedural's, from the value at each cap's centre, need not nest by themselves).
-HeightRange PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& corners) {
-  if (!patchHeights_) return heights_;
+RegionalHeights PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& corners) {
+  if (!patchHeights_) return {heights_};
   const auto [own, finest] = patchHeights_(corners);
-  topology_[id].finest = finest;
   const std::int32_t parent = topology_[id].parent;
-  if (parent < 0) return own;
+  if (parent < 0) return {own, finest};
   const PatchShell outer = shellOf(parent);
   const HeightRange nested{std::max(own.lowest, outer.innerRadius - radius_),
                            std::min(own.highest, outer.outerRadius - radius_)};
-  return nested.lowest <= nested.highest ? nested : own;
+  return {nested.lowest <= nested.highest ? nested : own, finest};
 }
 
 // A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. Its
@@ -213,10 +220,9 @@ double PatchTree::pixelsPerRadian() const {
   return finest;
 }
 
-// The sphere's error: the chords' (chordError), from the patch's point nearest a pole. The terrain's: the relief a
-// spacing may hide (reliefWithinSpacing, over the patch's cap and its spacings in the same measure). It shrinks as
-// the patch does on smooth terrain and stays large on rough, and keeps the vertices, whose normals shade the
-// relief, within a pixel or two of each other where relief shows.
+// The sphere's error: the chords' (chordError), from the patch's point nearest a pole. The terrain's: shellOf's. It
+// shrinks as the patch does on smooth terrain and stays large on rough, and keeps the vertices, whose normals shade
+// the relief, within a pixel or two of each other where relief shows.
 double PatchTree::errorOf(std::int32_t id) {
   const PatchShell shell = shellOf(id);
   const double patchAngle = std::ldexp(kFaceEdgeAngle, -topology_[id].level);
@@ -224,11 +230,7 @@ double PatchTree::errorOf(std::int32_t id) {
   double fromPole = std::numbers::pi;
   for (const glm::dvec3& corner : shell.corners)
     fromPole = std::min(fromPole, std::acos(std::min(std::abs(corner.z), 1.0)));
-  const double sphere = chordError(radius_, spacing, fromPole - patchAngle);
-  const double width = 2.0 * capAround(shell.corners).angle;
-  const double terrain = reliefWithinSpacing(shell.outerRadius - shell.innerRadius, topology_[id].finest, width,
-                                             std::ldexp(width, -settings_.depth));
-  return std::max(sphere, terrain);
+  return std::max(chordError(radius_, spacing, fromPole - patchAngle), topology_[id].terrainError);
 }
 
 // The visible leaves that would split at the detail scale `detail`.

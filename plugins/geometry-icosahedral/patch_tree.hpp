@@ -85,7 +85,7 @@ class PatchTree {
 
  private:
   PatchShell shellOf(std::int32_t id);
-  HeightRange heightsOf(std::int32_t id, const SphericalTriangle& corners);
+  RegionalHeights heightsOf(std::int32_t id, const SphericalTriangle& corners);
   std::optional<double> viewedDistance(const PatchShell& shell) const;
   void classify(std::int32_t id);
   int refine(int operations);

@@ -8,7 +8,7 @@ namespace strata::icosahedral {
 ViewVolume::ViewVolume(const View& view) : eye_(view.eye) {
   const glm::dvec2 halfFrame = view.halfFrameTangents();
   const double tx = halfFrame.x, ty = halfFrame.y;
-  pixelsPerRadian_ = 0.5 * double(view.height) / ty;
+  pixelsPerRadian_ = view.pixelsPerRadian();
   // Eye-space normals (x right, y up, looking down -z) of the planes through the eye, and the near plane.
   const std::array<glm::dvec3, 5> eyeNormals{glm::dvec3(1, 0, -tx), glm::dvec3(-1, 0, -tx), glm::dvec3(0, 1, -ty),
                                              glm::dvec3(0, -1, -ty), glm::dvec3(0, 0, -1)};

@@ -15,7 +15,7 @@ namespace {
 constexpr double kLeastCosine = 1.0 / 8.0;
 constexpr double kLeastHeight = 0.01;  // m: the nearest ground counted, so that an eye on it asks for the most
 
-glm::ivec2 halved(glm::ivec2 size, int times) { return glm::ivec2((size - 1) >> times) + 1; }
+glm::ivec2 halved(glm::ivec2 size) { return glm::ivec2((size - 1) >> 1) + 1; }  // (side - 1) / 2 cells
 
 }  // namespace
 
@@ -34,9 +34,8 @@ double gridError(const GridScene& scene, double cell) {
 
 glm::ivec2 gridForError(glm::ivec2 largest, glm::dvec2 extent, const GridScene& scene, double pixelError) {
   glm::ivec2 chosen = largest;
-  if (pixelError <= 0.0) return chosen;
-  for (int times = 1; glm::all(glm::greaterThanEqual(halved(largest, times) - 1, glm::ivec2(kFewestCells))); ++times) {
-    const glm::ivec2 size = halved(largest, times);
+  for (glm::ivec2 size = halved(largest);
+       pixelError > 0.0 && glm::all(glm::greaterThan(size, glm::ivec2(kFewestCells))); size = halved(size)) {
     const double cell = std::max(extent.x / (size.x - 1), extent.y / (size.y - 1));
     if (gridError(scene, cell) > pixelError) break;
     chosen = size;

@@ -63,8 +63,9 @@ const ParameterBindings<PgmSettings>& pgmParameters() {
   return bindings;
 }
 
-glm::ivec2 gridOf(const NodeSetup& setup) {
-  const std::string grid = pgmParameters().read(setup.parameters).grid;
+// The grid as `settings` (read from `setup`) write it.
+glm::ivec2 gridOf(const PgmSettings& settings, const NodeSetup& setup) {
+  const std::string& grid = settings.grid;
   const std::optional<glm::ivec2> size = parseGridSize(grid);
   if (!size)
     throw Error(pgmParameters().where(setup.parameters, &PgmSettings::grid), "grid '" + grid + "' is not a grid size",
@@ -88,13 +89,7 @@ ViewCamera viewCamera(const View& view) {
 
 class PgmGeometry : public Node, public SurfaceGeometry {
  public:
-  explicit PgmGeometry(const NodeSetup& setup)
-      : heights_(setup),
-        radius_(setup.body->radius),
-        grid_(gridOf(setup)),
-        castGrid_(grid_),
-        pixelError_(pgmParameters().read(setup.parameters).pixelError),
-        zeta_(pgmParameters().read(setup.parameters).zeta) {}
+  explicit PgmGeometry(const NodeSetup& setup) : PgmGeometry(setup, pgmParameters().read(setup.parameters)) {}
 
   // The height layer has opened: where it knows its heights, they must lie within the reference spheres'.
   void open() override { heights_.open(); }
@@ -131,6 +126,14 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   HeightRange heights() const override { return heights_.range(); }
 
  private:
+  PgmGeometry(const NodeSetup& setup, const PgmSettings& settings)
+      : heights_(setup),
+        radius_(setup.body->radius),
+        grid_(gridOf(settings, setup)),
+        castGrid_(grid_),
+        pixelError_(settings.pixelError),
+        zeta_(settings.zeta) {}
+
   std::optional<double> leastVisibleHeight(const View& view);
   glm::ivec2 gridFor(const View& view, const SamplingCamera& camera) const;
   void makeGrid(const View& view);
@@ -203,7 +206,7 @@ glm::ivec2 PgmGeometry::gridFor(const View& view, const SamplingCamera& camera) 
   const double horizon = distance > lowest ? std::acos(lowest / distance) : std::numbers::pi;
   const GridScene scene{.radius = radius_,
                         .eyeDistance = distance,
-                        .pixelsPerRadian = 0.5 * view.height / view.halfFrameTangents().y,
+                        .pixelsPerRadian = view.pixelsPerRadian(),
                         .visible = heights_.within(SphericalCap{view.eye / distance, horizon}),
                         .visibleWidth = 2.0 * horizon};
   const glm::dvec2 extent((camera.right - camera.left) / camera.near, (camera.top - camera.bottom) / camera.near);

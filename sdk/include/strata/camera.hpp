@@ -38,6 +38,8 @@ struct View {
   // The tangents of half the field of view across (x) and up (y): where the frame's edges lie at unit distance
   // ahead, in eye space. The rays through the frame's corners are (+-x, +-y, -1).
   glm::dvec2 halfFrameTangents() const;
+  // Pixels per radian at the frame's centre: the focal length in pixels.
+  double pixelsPerRadian() const { return 0.5 * double(height) / halfFrameTangents().y; }
 };
 
 // Resolves a camera over a body for a viewport of width x height pixels. `terrain`: the heights the drawn
