@@ -78,10 +78,15 @@ double distanceAtAngle(double oneLessDot, double distance, double radius) {
 // A point r u's cosine is (dot(u, eye) - r) / |eye - r u|: at most the largest numerator, at the inner
 // radius, over the least denominator. Along the nearest direction the distance is least at r = |eye| cos,
 // taken into the shell.
-double leastFaceOnDistance(const PatchShell& shell, const glm::dvec3& eye) {
+double leastDistance(const PatchShell& shell, const glm::dvec3& eye) {
   const auto [oneLessDot, distance] = nearestAngle(shell.corners, eye);
   const double nearestRadius = std::clamp(distance * (1.0 - oneLessDot), shell.innerRadius, shell.outerRadius);
-  const double nearest = distanceAtAngle(oneLessDot, distance, nearestRadius);
+  return distanceAtAngle(oneLessDot, distance, nearestRadius);
+}
+
+double leastFaceOnDistance(const PatchShell& shell, const glm::dvec3& eye) {
+  const auto [oneLessDot, distance] = nearestAngle(shell.corners, eye);
+  const double nearest = leastDistance(shell, eye);
   const double largestCosine = nearest > 0.0 ? ((distance - shell.innerRadius) - distance * oneLessDot) / nearest : 1.0;
   return nearest / std::sqrt(std::clamp(largestCosine, kGrazingCosine, 1.0));
 }

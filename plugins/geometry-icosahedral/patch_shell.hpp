@@ -37,6 +37,10 @@ bool outsidePlane(const PatchShell& shell, const glm::dvec3& normal, double offs
 // Errata).
 bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occluderRadius);
 
+// The least distance of any point of the shell from the eye, m (exact: the nearest point lies in the direction of
+// largest dot with the eye's, found by the support function, at the radius nearest the eye's projection on it).
+double leastDistance(const PatchShell& shell, const glm::dvec3& eye);
+
 // The face-on distance of a point of the sphere: its distance from the eye over the square root of the
 // cosine between its normal and the direction to the eye (at least kGrazingCosine). A small patch there
 // subtends the solid angle it would face on at that distance, so splitting by it splits by solid angle as
@@ -45,9 +49,8 @@ bool belowHorizon(const PatchShell& shell, const glm::dvec3& eye, double occlude
 constexpr double kGrazingCosine = 1.0 / 16.0;  // at the horizon a patch counts as 4 times as far: seen edge on
                                                // it still needs some detail for its silhouette
 // The least face-on distance of any point of the shell, its cosine taken to the sphere's normal below it as
-// the compute pass takes a displaced vertex's: a bound from below, from the nearest distance (exact: the
-// nearest point lies in the direction of largest dot with the eye's, found by the support function, at the
-// radius nearest the eye's projection on it) and the largest cosine any point can have.
+// the compute pass takes a displaced vertex's: a bound from below, from the least distance and the largest
+// cosine any point can have.
 double leastFaceOnDistance(const PatchShell& shell, const glm::dvec3& eye);
 
 }  // namespace strata::icosahedral

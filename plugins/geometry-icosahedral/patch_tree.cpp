@@ -117,17 +117,34 @@ RegionalHeights PatchTree::heightsOf(std::int32_t id, const SphericalTriangle& c
 // A shell is seen by a view when it rises above the view's horizon and reaches into its frustum. Its
 // distance is the least face-on distance of any point of the shell, which bounds from below that of every
 // vertex the compute pass displaces into it: so a split brings its vertices in at their parents' midpoints.
-// Without each patch's heights, both measure on the sphere: an eye inside the whole terrain's range would
-// lie at no distance from every shell near it, and the tree would split beneath it to the deepest level.
+// Without each patch's heights, both measure on the sphere (measured()): an eye inside the whole terrain's range
+// would lie at no distance from every shell near it, and the tree would split beneath it to the deepest level.
 std::optional<double> PatchTree::viewedDistance(const PatchShell& shell) const {
-  const double occluder = radius_ + heights_.lowest;
   std::optional<double> distance;
   for (const ViewVolume& view : views_)
-    if (!belowHorizon(shell, view.eye(), occluder) && view.mayHold(shell))
-      distance = std::min(
-          distance.value_or(std::numeric_limits<double>::infinity()),
-          leastFaceOnDistance(measuresOnTerrain() ? shell : PatchShell{shell.corners, radius_, radius_}, view.eye()));
+    if (sees(view, shell))
+      distance = std::min(distance.value_or(std::numeric_limits<double>::infinity()),
+                          leastFaceOnDistance(measured(shell), view.eye()));
   return distance;
+}
+
+// The least distance of the shell from an eye that sees it, m (infinite where none does): where its error shows
+// most, since the errors are heights' and the sphere's chords', radial, and show in full where the ground is seen
+// edge on, which the face-on distance discounts up to four times (a mountain's top 150 km away stood three pixels
+// low where the pixel error was one).
+double PatchTree::nearestSeen(const PatchShell& shell) const {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const ViewVolume& view : views_)
+    if (sees(view, shell)) nearest = std::min(nearest, leastDistance(measured(shell), view.eye()));
+  return nearest;
+}
+
+bool PatchTree::sees(const ViewVolume& view, const PatchShell& shell) const {
+  return !belowHorizon(shell, view.eye(), radius_ + heights_.lowest) && view.mayHold(shell);
+}
+
+PatchShell PatchTree::measured(const PatchShell& shell) const {
+  return measuresOnTerrain() ? shell : PatchShell{shell.corners, radius_, radius_};
 }
 
 void PatchTree::classify(std::int32_t id) {
@@ -193,9 +210,10 @@ void PatchTree::followError(double largestStep) {
 }
 
 // The least detail scale at which every visible patch whose error would show more than the pixel error is
-// split: the visible leaves, and the parents of leaves only (an ancestor is nearer in split distances than
-// its children and is split whenever they are). Its error seen from a patch's distance, ε·ppr/d, is the
-// screen-space error of [Cignoni et al. 2003, §4.3] with the face-on distance the split measures.
+// split: the visible leaves and every split patch seen. A split patch's children may be split only by the scale
+// it asks for, so leaving it out once they were would let the scale fall and merge them, and take it back up: the
+// tree swung by a split a frame. Its error seen from the patch, ε·ppr/d, is the screen-space error of [Cignoni et
+// al. 2003, §4.3] (errorShows); the detail it asks for, the face-on distance the split measures.
 double PatchTree::wantedDetail() {
   const double finest = pixelsPerRadian();
   double wanted = kLeastDetail;
@@ -205,12 +223,21 @@ double PatchTree::wantedDetail() {
     std::optional<double> distance;
     if (node.leaf() && node.visible)
       distance = node.distance;
-    else if (mergeable(id))
+    else if (!node.leaf())
       distance = viewedDistance(shellOf(id));
-    if (!distance || errorOf(id) * finest <= settings_.pixelError * *distance) continue;
+    if (!distance || !errorShows(id, *distance, finest)) continue;
     wanted = std::max(wanted, kSplitMargin * *distance / splitDistance(node.level, 1.0));
   }
   return std::min(wanted, kMostDetail);
+}
+
+// Whether the patch's error shows more than the pixel error: the whole of it seen from the face-on distance
+// (`faceOn`), and its radial part, the terrain's and the chords' sagitta, from the least distance (nearestSeen),
+// where it shows in full seen edge on. `pixelsPerRadian`: the views' finest.
+bool PatchTree::errorShows(std::int32_t id, double faceOn, double pixelsPerRadian) {
+  const double radial = std::max(chordSagitta(radius_, spacingOf(id)), topology_[id].terrainError);
+  return errorOf(id) * pixelsPerRadian > settings_.pixelError * faceOn ||
+         radial * pixelsPerRadian > settings_.pixelError * nearestSeen(shellOf(id));
 }
 
 // The views' finest angular resolution.
@@ -226,11 +253,15 @@ double PatchTree::pixelsPerRadian() const {
 double PatchTree::errorOf(std::int32_t id) {
   const PatchShell shell = shellOf(id);
   const double patchAngle = std::ldexp(kFaceEdgeAngle, -topology_[id].level);
-  const double spacing = std::ldexp(patchAngle, -settings_.depth);
+  const double spacing = spacingOf(id);
   double fromPole = std::numbers::pi;
   for (const glm::dvec3& corner : shell.corners)
     fromPole = std::min(fromPole, std::acos(std::min(std::abs(corner.z), 1.0)));
   return std::max(chordError(radius_, spacing, fromPole - patchAngle), topology_[id].terrainError);
+}
+
+double PatchTree::spacingOf(std::int32_t id) const {
+  return std::ldexp(kFaceEdgeAngle, -topology_[id].level - settings_.depth);
 }
 
 // The visible leaves that would split at the detail scale `detail`.

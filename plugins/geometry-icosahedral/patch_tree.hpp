@@ -87,6 +87,11 @@ class PatchTree {
   PatchShell shellOf(std::int32_t id);
   RegionalHeights heightsOf(std::int32_t id, const SphericalTriangle& corners);
   std::optional<double> viewedDistance(const PatchShell& shell) const;
+  double nearestSeen(const PatchShell& shell) const;
+  bool errorShows(std::int32_t id, double faceOn, double pixelsPerRadian);
+  double spacingOf(std::int32_t id) const;
+  bool sees(const ViewVolume& view, const PatchShell& shell) const;
+  PatchShell measured(const PatchShell& shell) const;
   void classify(std::int32_t id);
   int refine(int operations);
   bool wantsSplit(std::int32_t id, double distance) const;

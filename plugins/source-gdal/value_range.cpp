@@ -9,6 +9,7 @@
 
 #include "quiet_gdal_errors.hpp"
 #include "stored_block_ranges.hpp"
+#include "texel_bends.hpp"
 
 namespace strata::gdal {
 namespace {
@@ -109,6 +110,7 @@ std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset) {
   const QuietGdalErrors quiet;  // as exactRawRange()
   visitDrawnTexels(*dataset.GetRasterBand(1),
                    [&](int column, int row, double value) { blocks->count(column, row, value); });
+  countTexelBends(*dataset.GetRasterBand(1), *blocks);
   return blocks;
 }
 

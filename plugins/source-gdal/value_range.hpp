@@ -17,8 +17,8 @@ namespace strata::gdal {
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset);
 // The same from the blocks blockRangesOf() gives, where the file holds no exact statistics.
 std::optional<ValueRange> exactRawRange(GDALDataset& dataset, const BlockRanges& blocks);
-// The ranges of band 1's blocks, by the same rules, for a raster small enough to read whole quickly; for a
-// larger one those `strata tile` stored in it (stored_block_ranges.hpp), or null.
+// The ranges of band 1's blocks, by the same rules, and their texels' bends, for a raster small enough to read
+// whole quickly; for a larger one those `strata tile` stored in it (stored_block_ranges.hpp; bends unknown), or null.
 std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset);
 // The same for a HEALPix pyramid from the true page ranges `strata tile` stored in it (`ranges`, or null where
 // it stored none), which need no reading.

@@ -227,18 +227,23 @@ TEST(PatchTree, RoughTerrainCloseByTakesMorePatchesThanTheBareSphere) {
 }
 
 // How the terrain's relief scales with size decides how much of a patch's relief its vertex spacing may hide
-// (PatchTree::errorOf): a swell sloping 1 % everywhere, whose relief grows as the size (the layer's finest blocks,
+// (PatchTree::errorOf): a swell sloping 5 % everywhere, whose relief grows as the size (the layer's finest blocks,
 // 2 mrad wide, holding their share of it), takes under half the patches that the same relief takes where the
 // blocks say it is Brownian (their relief the patch's times the square root of the sizes' ratio) or where no
-// blocks are known; the last two, both rough, take the same. Each keeps every visible patch within its pixel error.
+// blocks are known; the last two, both rough, take the same. Where the blocks also know the swell's curvature,
+// that of a slope turning by 1 % over 100 km (linear interpolation misses it by a second-order share), it takes
+// under half the swell's again: measured 49, 163 and 1,468 patches. Each keeps every visible patch within its
+// pixel error.
 TEST(PatchTree, SmoothReliefTakesFewerPatchesThanRoughReliefOfTheSameRange) {
-  constexpr double kSlope = 0.01, kBlockWidth = 2e-3;
-  enum class Blocks { kSmooth, kBrownian, kUnknown };
+  constexpr double kSlope = 0.05, kBlockWidth = 2e-3, kCurvature = 0.01 * kEarth * kEarth / 1e5;  // m per rad^2
+  enum class Blocks { kCurved, kSmooth, kBrownian, kUnknown };
   const auto heightsWith = [](Blocks blocks) -> PatchHeights {
     return [blocks](const SphericalTriangle& corners) {
       const double width = 2.0 * capAround(corners).angle, relief = kSlope * kEarth * width;
       RegionalHeights heights{{0.0, relief}};
       if (blocks == Blocks::kSmooth) heights.finest = BlockRelief{kSlope * kEarth * kBlockWidth, kBlockWidth};
+      if (blocks == Blocks::kCurved)
+        heights.finest = BlockRelief{kSlope * kEarth * kBlockWidth, kBlockWidth, kCurvature, kBlockWidth / 8.0};
       if (blocks == Blocks::kBrownian)
         heights.finest = BlockRelief{relief * std::sqrt(kBlockWidth / width), kBlockWidth};
       return heights;
@@ -249,7 +254,7 @@ TEST(PatchTree, SmoothReliefTakesFewerPatchesThanRoughReliefOfTheSameRange) {
   const std::vector<ViewVolume> views{ViewVolume(view)};
   const PatchTreeSettings settings{.patches = 20000};
   std::vector<int> counts;
-  for (const Blocks blocks : {Blocks::kSmooth, Blocks::kBrownian, Blocks::kUnknown}) {
+  for (const Blocks blocks : {Blocks::kCurved, Blocks::kSmooth, Blocks::kBrownian, Blocks::kUnknown}) {
     PatchTree tree(kEarth, {0.0, kSlope * kEarth * std::numbers::pi}, settings, heightsWith(blocks));
     settle(tree, views);
     ASSERT_LT(tree.visibleCount(), settings.patches);
@@ -260,9 +265,11 @@ TEST(PatchTree, SmoothReliefTakesFewerPatchesThanRoughReliefOfTheSameRange) {
     }
     counts.push_back(tree.visibleCount());
   }
-  std::printf("visible patches: %d smooth, %d Brownian, %d without blocks\n", counts[0], counts[1], counts[2]);
+  std::printf("visible patches: %d curved, %d smooth, %d Brownian, %d without blocks\n", counts[0], counts[1],
+              counts[2], counts[3]);
   EXPECT_LT(2 * counts[0], counts[1]);
-  EXPECT_EQ(counts[1], counts[2]);
+  EXPECT_LT(2 * counts[1], counts[2]);
+  EXPECT_EQ(counts[2], counts[3]);
 }
 
 // Just across each edge of every leaf lies a leaf at most one level apart; it is one level coarser

@@ -1,14 +1,16 @@
 // A raster's block ranges stored in a file's metadata (strata/plugin/block_ranges.hpp) and read back: every value a
 // block holds stays within its stored range although floats hold the extremes, blocks with gaps keep them,
 // a raster too large for the file's share is stored in larger blocks, and items that do not fit the raster
-// or are damaged are refused rather than trusted.
+// or are damaged are refused rather than trusted. And the texels' bends, which files do not store.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <strata/plugin/block_ranges.hpp>
 
@@ -92,6 +94,39 @@ TEST(BlockRanges, ALargeRasterIsStoredInLargerBlocks) {
   EXPECT_TRUE(read->holdsGaps(0, 0)) << "a few texels a block";
   EXPECT_LE(read->whole()->least, counted.whole()->least);
   EXPECT_NEAR(read->whole()->least, counted.whole()->least, 1e-4);
+}
+
+// A texel's bends (BlockRanges::countBends) are its second differences: on the quadric 0.5 a x^2 + 0.5 b y^2 + c x y
+// (texels) exactly a along rows, b along columns and c of twist, whatever the offsets; a texel beside no data
+// counts none, so a block all of whose texels are is unknown, as are all blocks after forgetBends() and blocks
+// read from a file, which stores none.
+TEST(BlockRanges, BendsAreTheTexelsSecondDifferences) {
+  constexpr int kWidth = 24, kHeight = 16;
+  constexpr double a = 0.75, b = -2.5, c = 0.375;  // binary fractions: the differences are exact
+  const auto value = [](int x, int y) {
+    return x < 16 ? 0.5 * a * x * x + 0.5 * b * y * y + c * x * y + 3.0 * x - 7.0 * y + 100.0
+                  : std::numeric_limits<double>::quiet_NaN();
+  };
+  BlockRanges blocks(kWidth, kHeight, 8);
+  std::vector<std::vector<double>> rows;
+  for (int y = 0; y < kHeight; ++y) {
+    rows.emplace_back();
+    for (int x = 0; x < kWidth; ++x) rows.back().push_back(value(x, y));
+  }
+  for (int y = 1; y + 1 < kHeight; ++y)
+    blocks.countBends(y, rows[std::size_t(y - 1)], rows[std::size_t(y)], rows[std::size_t(y + 1)]);
+  for (int row = 0; row < 2; ++row)
+    for (int column = 0; column < 2; ++column) {
+      const BlockRanges::Block& block = blocks.at(column, row);
+      ASSERT_TRUE(block.bendsCounted());
+      EXPECT_EQ(block.rowBend, a);
+      EXPECT_EQ(block.columnBend, -b);
+      EXPECT_EQ(block.twist, c);
+    }
+  EXPECT_FALSE(blocks.at(2, 0).bendsCounted()) << "every texel there holds no data, or lies beside some";
+  EXPECT_FALSE(BlockRanges::fromMetadata(kWidth, kHeight, lookup(stored(blocks)))->at(0, 0).bendsCounted());
+  blocks.forgetBends();
+  EXPECT_FALSE(blocks.at(0, 0).bendsCounted());
 }
 
 TEST(BlockRanges, ItemsThatDoNotFitTheRasterOrAreDamagedAreRefused) {

@@ -29,17 +29,43 @@ std::vector<BlockValues> valuesOf(const BlockRanges& ranges) {
   for (int row = 0; row < ranges.rows(); ++row)
     for (int column = 0; column < ranges.columns(); ++column) {
       const BlockRanges::Block& block = ranges.at(column, row);
-      values.push_back({.least = block.least, .greatest = block.greatest, .gaps = ranges.holdsGaps(column, row)});
+      values.push_back({.least = block.least,
+                        .greatest = block.greatest,
+                        .gaps = ranges.holdsGaps(column, row),
+                        .bends = {block.rowBend, block.columnBend, block.twist}});
     }
   return values;
 }
 
 // Both blocks' values; of their blocks' relief, the larger's (a real block's range and width, which a block
-// flattened to a point at a pole does not take the width of).
+// flattened to a point at a pole does not take the width of); the larger curvature and texel.
 BlockValues spanning(const BlockValues& a, const BlockValues& b) {
   const BlockValues& rougher = a.blockRange >= b.blockRange ? a : b;
-  return {std::min(a.least, b.least), std::max(a.greatest, b.greatest), a.gaps || b.gaps, rougher.blockRange,
-          rougher.blockWidth};
+  return {.least = std::min(a.least, b.least),
+          .greatest = std::max(a.greatest, b.greatest),
+          .gaps = a.gaps || b.gaps,
+          .blockRange = rougher.blockRange,
+          .blockWidth = rougher.blockWidth,
+          .curvature = std::max(a.curvature, b.curvature),
+          .texel = std::max(a.texel, b.texel)};
+}
+
+// Spans below this, rad, are a pole's row of texels, all at one point.
+constexpr double kDegenerateSpan = 1e-12;
+
+// A block's curvature (BlockValues): the largest of its second differences along rows and columns, each over the
+// least its texels span that way, squared, plus the twist over both (the Hessian's largest eigenvalue is at most
+// the larger of its diagonal's magnitudes plus the off-diagonal's), so that it bounds the values' second
+// derivative along the ground whichever way the texels are stretched. Unknown where the bends are, where the
+// block holds gaps, or where its texels span nothing one way (a pole, or a single row or column).
+double curvatureOf(const BlockValues& block, double alongRows, double alongColumns) {
+  const auto [row, column, twist] = block.bends;
+  if (row < 0.0 || block.gaps) return std::numeric_limits<double>::infinity();
+  if (row == 0.0 && column == 0.0 && twist == 0.0) return 0.0;
+  if (!(alongRows > kDegenerateSpan && alongColumns > kDegenerateSpan) || !std::isfinite(alongRows + alongColumns))
+    return std::numeric_limits<double>::infinity();
+  return std::max(row / (alongRows * alongRows), column / (alongColumns * alongColumns)) +
+         twist / (alongRows * alongColumns);
 }
 
 // Whether `outer` holds every direction of `inner`.
@@ -63,11 +89,14 @@ BlockCaps::BlockCaps(BlockLayout layout, std::vector<BlockValues> values, Raster
   Level blocks;
   for (int row = 0; row < layout_.rows(); ++row)
     for (int column = 0; column < layout_.columns(); ++column) {
-      Group block{capOfBlock(column, row), values[std::size_t(row) * layout_.columns() + column]};
+      const Placement placement = placementOf(column, row);
+      Group block{placement.cap, values[std::size_t(row) * layout_.columns() + column]};
       if (block.values.counted()) {
         block.values.blockRange = block.values.greatest - block.values.least;
         block.values.blockWidth = 2.0 * block.cap.angle;
       }
+      block.values.curvature = curvatureOf(block.values, placement.leastAlongRows, placement.leastAlongColumns);
+      block.values.texel = placement.largestTexel;
       blocks.push_back(block);
     }
   levels_.push_back(std::move(blocks));
@@ -85,8 +114,9 @@ int BlockCaps::rowsAt(std::size_t level) const { return ((layout_.rows() - 1) >>
 // The cap around the centres of the block's outer texels as the georeference places them, widened by the
 // filter's reach; the whole sphere where some lies outside the projection's domain. Texel centres, not the
 // block's edges: a global map's edges may lie half a texel beyond a pole, where no projection is defined, and
-// a HEALPix strip's grids meet in the raster though not on the body.
-SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
+// a HEALPix strip's grids meet in the raster though not on the body. With it, the least and largest angle a texel
+// spans along the edges.
+BlockCaps::Placement BlockCaps::placementOf(int blockColumn, int blockRow) const {
   const double side = layout_.blockTexels;
   const double x0 = blockColumn * side + 0.5, y0 = blockRow * side + 0.5;
   const double x1 = std::min(blockColumn * side + side, double(layout_.width)) - 0.5;
@@ -99,17 +129,25 @@ SphericalCap BlockCaps::capOfBlock(int blockColumn, int blockRow) const {
                                    glm::dvec2(x1 - s * (x1 - x0), y1), glm::dvec2(x0, y1 - s * (y1 - y0))}) {
       const glm::dvec2 map(t[0] + texel.x * t[1] + texel.y * t[2], t[3] + texel.x * t[4] + texel.y * t[5]);
       const std::optional<glm::dvec2> lonlat = georeference_.projection->inverse(map);
-      if (!lonlat) return {glm::dvec3(0, 0, 1), std::numbers::pi};
+      if (!lonlat) return {{glm::dvec3(0, 0, 1), std::numbers::pi}};
       edge.push_back(directionOf(*lonlat));
     }
   }
-  // The largest angle a texel spans along the edges: the samples of an edge lie (its texels) / kEdgeSamples apart.
+  // The angles a texel spans along the edges: the samples of an edge lie (its texels) / kEdgeSamples apart.
   const std::array<double, 2> step{(x1 - x0) / kEdgeSamples, (y1 - y0) / kEdgeSamples};
-  double texel = 0.0;
+  std::array<double, 2> least{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double largest = 0.0;
   for (std::size_t k = 0; k + 4 < edge.size(); ++k)
-    if (step[k % 2] > 0.0) texel = std::max(texel, angleBetween(edge[k], edge[k + 4]) / step[k % 2]);
+    if (step[k % 2] > 0.0) {
+      const double texel = angleBetween(edge[k], edge[k + 4]) / step[k % 2];
+      least[k % 2] = std::min(least[k % 2], texel);
+      largest = std::max(largest, texel);
+    }
   const SphericalCap cap = capAround(edge);
-  return {cap.centre, std::min((cap.angle + kFilterReach * texel) * kCapMargin, std::numbers::pi)};
+  return {{cap.centre, std::min((cap.angle + kFilterReach * largest) * kCapMargin, std::numbers::pi)},
+          least[0],
+          least[1],
+          largest};
 }
 
 void BlockCaps::addCoarserLevel() {

@@ -50,6 +50,26 @@ void BlockRanges::count(int column, int row, double value) {
   ++block.counted;
 }
 
+void BlockRanges::countBends(int row, const std::vector<double>& above, const std::vector<double>& here,
+                             const std::vector<double>& below) {
+  for (int x = 1; x + 1 < width_; ++x) {
+    const std::size_t i = std::size_t(x);
+    const double alongRow = std::abs(here[i - 1] - 2.0 * here[i] + here[i + 1]);
+    const double alongColumn = std::abs(above[i] - 2.0 * here[i] + below[i]);
+    const double twist = 0.25 * std::abs(below[i + 1] - below[i - 1] - above[i + 1] + above[i - 1]);
+    // a neighbour holds no data: the edge of the data is a cliff to the sphere, which no bend bounds
+    if (std::isnan(alongRow) || std::isnan(alongColumn) || std::isnan(twist)) continue;
+    Block& block = blocks_[index(x / blockTexels_, row / blockTexels_)];
+    block.rowBend = std::max(block.rowBend, alongRow);
+    block.columnBend = std::max(block.columnBend, alongColumn);
+    block.twist = std::max(block.twist, twist);
+  }
+}
+
+void BlockRanges::forgetBends() {
+  for (Block& block : blocks_) block.rowBend = block.columnBend = block.twist = -1.0;
+}
+
 std::int64_t BlockRanges::texelsOf(int blockColumn, int blockRow) const {
   const std::int64_t across = std::min<std::int64_t>(blockTexels_, width_ - std::int64_t(blockColumn) * blockTexels_);
   const std::int64_t down = std::min<std::int64_t>(blockTexels_, height_ - std::int64_t(blockRow) * blockTexels_);

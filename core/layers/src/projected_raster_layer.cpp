@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <strata/gl/shader_program.hpp>
@@ -58,10 +59,12 @@ std::optional<ValueRange> ProjectedRasterLayer::valuesWithin(const SphericalCap&
   const BlockValues found = blockCaps_->within(cap);
   if (!found.counted()) return ValueRange{};
   ValueRange values = transformed(found.least, found.greatest);
-  values.finest = BlockRelief{found.blockRange * std::abs(scale_), found.blockWidth};
-  if (found.gaps) {
+  values.finest = BlockRelief{found.blockRange * std::abs(scale_), found.blockWidth, found.curvature * std::abs(scale_),
+                              found.texel};
+  if (found.gaps) {  // the sphere shows there: a cliff down to it, which no curvature bounds
     values.least = std::min(values.least, 0.0);
     values.greatest = std::max(values.greatest, 0.0);
+    values.finest->curvature = std::numeric_limits<double>::infinity();
   }
   return values;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -11,13 +12,18 @@
 namespace strata {
 
 // What a raster's blocks hold within a cap (BlockCaps::within): raw values, whether no data shows there, and the
-// relief of the blocks themselves (BlockRelief).
+// relief and curvature of the blocks themselves (BlockRelief).
 struct BlockValues {
   double least = std::numeric_limits<double>::infinity();
   double greatest = -std::numeric_limits<double>::infinity();
   bool gaps = false;        // some texel there holds no data, or the cap reaches beyond the raster: the sphere shows
   double blockRange = 0.0;  // the largest greatest - least of one block
   double blockWidth = std::numeric_limits<double>::infinity();  // rad: that block's cap's diameter
+  // One block's second differences, raw per texel squared (BlockRanges::Block): row, column, twist; < 0 unknown.
+  std::array<double, 3> bends{-1.0, -1.0, -1.0};
+  double curvature = 0.0;  // the largest second derivative along the ground, raw per rad squared, a block's bends
+                           // show; infinite where some block's are unknown, or its data end (gaps)
+  double texel = 0.0;      // rad: the largest a texel spans in those blocks
   bool counted() const { return least <= greatest; }
 };
 
@@ -52,7 +58,12 @@ class BlockCaps {
   };
   using Level = std::vector<Group>;  // row by row, columnsAt(level) across
 
-  SphericalCap capOfBlock(int blockColumn, int blockRow) const;
+  struct Placement {
+    SphericalCap cap;
+    // rad: the least a texel spans along the block's rows and along its columns, and the largest either way
+    double leastAlongRows = 0.0, leastAlongColumns = 0.0, largestTexel = 0.0;
+  };
+  Placement placementOf(int blockColumn, int blockRow) const;
   void addCoarserLevel();
   int columnsAt(std::size_t level) const;
   int rowsAt(std::size_t level) const;

@@ -31,6 +31,10 @@ class BlockRanges {
     double least = std::numeric_limits<double>::infinity();
     double greatest = -std::numeric_limits<double>::infinity();
     std::int64_t counted = 0;  // texels that hold data
+    // The largest second differences of the block's texels (countBends), raw: along a row, along a column, and
+    // their twist (the mixed difference); < 0: none counted, the bends unknown.
+    double rowBend = -1.0, columnBend = -1.0, twist = -1.0;
+    bool bendsCounted() const { return rowBend >= 0.0; }
   };
 
   // Blocks of `blockTexels` a side (a power of two, at least kLeastBlockTexels).
@@ -41,6 +45,14 @@ class BlockRanges {
 
   // A texel that holds data (drawn: finite and let through by the mask).
   void count(int column, int row, double value);
+  // The bends of row `row`'s texels from it and the rows above and below (each width() values, NaN where no
+  // data is drawn): a texel's second differences along the row and the column and their twist, the values'
+  // second derivatives there in raw units per texel squared. Only texels whose eight neighbours all hold data
+  // are counted: a block's bends are unknown where none of its texels is.
+  void countBends(int row, const std::vector<double>& above, const std::vector<double>& here,
+                  const std::vector<double>& below);
+  // Every block's bend unknown again: for a raster some of whose rows could not be read for them.
+  void forgetBends();
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -53,7 +65,7 @@ class BlockRanges {
   // The extremes of every counted texel; none where no texel holds data.
   std::optional<ValueRange> whole() const;
 
-  // Blocks twice as large each way, each holding the four it covers.
+  // Blocks twice as large each way, each holding the four it covers (their bends unknown: files store none).
   BlockRanges coarsened() const;
 
   // The items that store the ranges in a file's metadata (GDAL's default domain), coarsened to at most

@@ -1,4 +1,5 @@
 #pragma once
+#include <limits>
 #include <optional>
 #include <strata/export.hpp>
 #include <string>
@@ -19,10 +20,14 @@ class TextureUnits;
 // How a one-channel layer's values vary at the finest scale it bounds them by (RegionalValueLayer::valuesWithin,
 // a raster's blocks of texels): the largest range within any one block of the region asked, and that block's
 // width, rad (its cap's diameter). With a region's own range it tells how fast the values' range shrinks with the
-// region's size: smooth data's as the size, rough data's as its square root.
+// region's size: smooth data's as the size, rough data's as its square root. And how sharply the values bend
+// there: the largest second derivative along the ground any texel of those blocks shows (the curvature, values
+// per rad squared; infinite where not known), and the largest texel, rad, below which the data are bilinear.
 struct BlockRelief {
   double range = 0.0;
   double width = 0.0;
+  double curvature = std::numeric_limits<double>::infinity();
+  double texel = 0.0;
 };
 
 // The least and greatest values a one-channel layer returns, as its sampling function returns them
