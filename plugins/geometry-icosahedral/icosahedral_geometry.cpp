@@ -94,8 +94,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
       tree_->settle(views);  // a still image, or the first of many, is drawn from a settled tree
     else
       tree_->update(views);
-    batch_ = batchPatches(tree_->visiblePatches(), frame.view, radius_, tree_->splitDistanceAtLevelZero(), table_,
-                          windings_);
+    batch_ = batchPatches(tree_->visiblePatches(), frame.view, radius_, tree_->splitDistanceUnit(), table_, windings_);
     batch_.onTerrain = tree_->measuresOnTerrain();
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

@@ -17,13 +17,11 @@ double centreLongitude(const SphericalTriangle& corners, double referenceLon) {
 
 }  // namespace
 
-PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        double splitDistanceAtLevelZero, const SubdivisionTable& table, const EdgeWindings& windings) {
-  PatchBatch batch{{view.reference.x, view.reference.y},
-                   splitDistanceAtLevelZero,
-                   kFaceEdgeAngle / (std::numbers::sqrt2 * table.segments() * splitDistanceAtLevelZero),
-                   {},
-                   {}};
+PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius, double splitDistanceUnit,
+                        const SubdivisionTable& table, const EdgeWindings& windings) {
+  PatchBatch batch{.reference = {view.reference.x, view.reference.y},
+                   .splitDistanceUnit = splitDistanceUnit,
+                   .footprintPerMetre = kFaceEdgeAngle / (std::numbers::sqrt2 * table.segments() * splitDistanceUnit)};
   batch.seeds.reserve(3 * patches.size());
   batch.draws.reserve(patches.size());
   const glm::dvec2 reference(batch.reference.lon, batch.reference.lat);
@@ -33,6 +31,7 @@ PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, dou
       batch.seeds.push_back({glm::vec4(glm::vec3(seed.positions[c]), float(patch.level)),
                              glm::vec4(glm::vec3(seed.normals[c]), 0.0f),
                              glm::vec4(glm::vec2(seed.lonlat[c] - reference), 0.0f, 0.0f)});
+    batch.details.insert(batch.details.end(), patch.details.begin(), patch.details.end());
     const IndexRange winding = windings.range(patch.coarseEdges);
     batch.draws.push_back({winding.count, 1, winding.first, std::int32_t(batch.draws.size()) * table.vertexCount(), 0});
   }

@@ -26,20 +26,22 @@ struct SeedCorner {
 // [Kooima 2008, §3.4.1].
 struct PatchBatch {
   LonLatReference reference;  // View::reference, the point below the eye: longitude and latitude are measured from it
-  double splitDistanceAtLevelZero = 0.0;  // m: PatchTree::splitDistanceAtLevelZero(), for the morphs
+  double splitDistanceUnit = 0.0;  // m: PatchTree::splitDistanceUnit(), for the morphs
   // The angle between neighbouring vertices, rad, per metre of their face-on distance, where a patch's
-  // vertices lie between its split distance and twice that: the geometric middle. As a function of the
-  // vertex alone it gives a vertex shared by two patches the same height footprint in both, so that the
-  // displaced surface stays closed where their levels differ.
+  // vertices lie between its split distance and twice that (the geometric middle) and the detail scale is 1: the
+  // compute pass divides it by each vertex's. As a function of the vertex alone it gives a vertex shared by two
+  // patches the same height footprint in both, so that the displaced surface stays closed where their levels
+  // differ.
   double footprintPerMetre = 0.0;
   // Whether vertices measure their face-on distances at their displaced points, as the tree measures to each
   // patch's own shell (PatchTree::measuresOnTerrain), or on the sphere.
   bool onTerrain = false;
   std::vector<SeedCorner> seeds;
+  std::vector<float> details;  // DetailField::kPatchValues a patch: Patch::details
   std::vector<DrawElementsIndirectCommand> draws;
 };
 
-PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius,
-                        double splitDistanceAtLevelZero, const SubdivisionTable& table, const EdgeWindings& windings);
+PatchBatch batchPatches(const std::vector<Patch>& patches, const View& view, double radius, double splitDistanceUnit,
+                        const SubdivisionTable& table, const EdgeWindings& windings);
 
 }  // namespace strata::icosahedral

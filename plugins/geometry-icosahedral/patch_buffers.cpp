@@ -37,7 +37,8 @@ void PatchBuffers::reserve(std::size_t patches) {
   if (patches <= capacity_) return;
   capacity_ = std::max(patches, capacity_ + capacity_ / 2);
   const std::size_t vertexVector = verticesPerPatch_ * sizeof(glm::vec4);
-  const std::array<std::pair<Buffer, std::size_t>, 7> sizes{{{kSeeds, 3 * sizeof(SeedCorner)},
+  const std::array<std::pair<Buffer, std::size_t>, 8> sizes{{{kSeeds, 3 * sizeof(SeedCorner)},
+                                                             {kDetails, DetailField::kPatchValues * sizeof(float)},
                                                              {kDraws, sizeof(DrawElementsIndirectCommand)},
                                                              {kPositions, vertexVector},
                                                              {kNormals, vertexVector},
@@ -59,14 +60,15 @@ void PatchBuffers::upload(const PatchBatch& batch) {
   reserve(patches_);
   if (patches_ == 0) return;
   glNamedBufferSubData(buffers_[kSeeds], 0, GLsizeiptr(batch.seeds.size() * sizeof(SeedCorner)), batch.seeds.data());
+  glNamedBufferSubData(buffers_[kDetails], 0, GLsizeiptr(batch.details.size() * sizeof(float)), batch.details.data());
   glNamedBufferSubData(buffers_[kDraws], 0, GLsizeiptr(batch.draws.size() * sizeof(DrawElementsIndirectCommand)),
                        batch.draws.data());
 }
 
 void PatchBuffers::subdivide() const {
   if (patches_ == 0) return;
-  const std::array<Buffer, 7> bindings{kParents, kSeeds,   kPositions, kNormals,
-                                       kLonLats, kSurface, kShading};  // as the shader binds them
+  const std::array<Buffer, 8> bindings{kParents, kSeeds,   kPositions, kNormals,
+                                       kLonLats, kSurface, kShading,   kDetails};  // as the shader binds them
   for (GLuint binding = 0; binding < bindings.size(); ++binding)
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffers_[bindings[binding]]);
   glDispatchCompute(GLuint(patches_), 1, 1);
@@ -105,7 +107,9 @@ void useSubdivision(const ShaderProgram& program, const PatchBatch& batch, int d
   program.set("referenceLonlat", glm::vec2(batch.reference.lon, batch.reference.lat));
   program.set("radius", float(radius));
   program.set("footprintPerMetre", float(batch.footprintPerMetre));
-  program.set("splitDistanceAtLevelZero", float(batch.splitDistanceAtLevelZero));
+  program.set("splitDistanceUnit", float(batch.splitDistanceUnit));
+  program.set("latticeLevel", DetailField::kLevel);
+  program.set("patchValues", DetailField::kPatchValues);
   program.set("grazingCosine", float(kGrazingCosine));
   program.set("onTerrain", int(batch.onTerrain));
 }

@@ -34,12 +34,24 @@ class PatchBuffers {
     glm::vec2 lonlat;         // rad from the frame's reference
     glm::vec2 drawnLonlat;    // rad from the frame's reference, as drawn (morphed)
     glm::vec4 drawn;          // xyz: m from the eye, displaced and morphed; w: the morph, 0 to 1
-    glm::vec4 shadingNormal;  // xyz: planet-fixed normal of the displaced surface, as drawn
+    glm::vec4 shadingNormal;  // xyz: planet-fixed normal of the displaced surface, as drawn; w: the detail scale
   };
   std::vector<Vertex> readVertices() const;
 
  private:
-  enum Buffer { kParents, kElements, kSeeds, kDraws, kPositions, kNormals, kLonLats, kSurface, kShading, kBufferCount };
+  enum Buffer {
+    kParents,
+    kElements,
+    kSeeds,
+    kDraws,
+    kPositions,
+    kNormals,
+    kLonLats,
+    kSurface,
+    kShading,
+    kDetails,
+    kBufferCount
+  };
   void reserve(std::size_t patches);
 
   std::size_t verticesPerPatch_;

@@ -21,7 +21,8 @@ PatchTopology::PatchTopology() {
     std::array<std::uint32_t, 3> corners{};
     for (std::size_t i = 0; i < 3; ++i) {
       const auto shared = std::ranges::find_if(vertices_, [&](const Vertex& v) { return v.normal == face[i]; });
-      corners[i] = shared != vertices_.end() ? std::uint32_t(shared - vertices_.begin()) : addVertex(face[i], kNoEdge);
+      corners[i] =
+          shared != vertices_.end() ? std::uint32_t(shared - vertices_.begin()) : addVertex(face[i], kNoEdge, 0);
     }
     addNode(corners, -1, 0);
   }
@@ -55,10 +56,17 @@ std::int32_t PatchTopology::coarserNeighbour(std::int32_t id, int edge) const {
   return -1;
 }
 
+std::array<std::uint32_t, 2> PatchTopology::parentsOf(std::uint32_t vertex) const {
+  const std::uint64_t edge = vertices_[vertex].splitEdge;
+  if (edge == kNoEdge) return {vertex, vertex};
+  return {std::uint32_t(edge >> 32), std::uint32_t(edge & 0xffffffffu)};
+}
+
 void PatchTopology::split(std::int32_t leaf) {
   const std::array<std::uint32_t, 3> c = (*this)[leaf].corners;
-  const std::uint32_t m01 = midpoint(c[0], c[1]), m12 = midpoint(c[1], c[2]), m20 = midpoint(c[2], c[0]);
   const int level = (*this)[leaf].level + 1;
+  const std::uint32_t m01 = midpoint(c[0], c[1], level), m12 = midpoint(c[1], c[2], level),
+                      m20 = midpoint(c[2], c[0], level);
   const std::array<std::array<std::uint32_t, 3>, 4> quarters{
       {{c[0], m01, m20}, {m01, c[1], m12}, {m20, m12, c[2]}, {m01, m12, m20}}};
   std::array<std::int32_t, 4> children{};
@@ -102,8 +110,8 @@ void PatchTopology::removeNode(std::int32_t id) {
   freeNodes_.push_back(id);
 }
 
-std::uint32_t PatchTopology::addVertex(const glm::dvec3& normal, std::uint64_t splitEdge) {
-  const Vertex vertex{normal, splitEdge, 0};
+std::uint32_t PatchTopology::addVertex(const glm::dvec3& normal, std::uint64_t splitEdge, int level) {
+  const Vertex vertex{normal, splitEdge, 0, level};
   if (freeVertices_.empty()) {
     vertices_.push_back(vertex);
     return std::uint32_t(vertices_.size() - 1);
@@ -114,10 +122,10 @@ std::uint32_t PatchTopology::addVertex(const glm::dvec3& normal, std::uint64_t s
   return index;
 }
 
-std::uint32_t PatchTopology::midpoint(std::uint32_t a, std::uint32_t b) {
+std::uint32_t PatchTopology::midpoint(std::uint32_t a, std::uint32_t b, int level) {
   const std::uint64_t key = edgeKey(a, b);
   if (const auto found = midpoints_.find(key); found != midpoints_.end()) return found->second;
-  const std::uint32_t vertex = addVertex(greatCircleMidpoint(vertices_[a].normal, vertices_[b].normal), key);
+  const std::uint32_t vertex = addVertex(greatCircleMidpoint(vertices_[a].normal, vertices_[b].normal), key, level);
   midpoints_.emplace(key, vertex);
   return vertex;
 }

@@ -44,6 +44,12 @@ class PatchTopology {
   // The coarser patch across an edge that has no patch of the same level across it.
   std::int32_t coarserNeighbour(std::int32_t id, int edge) const;
 
+  // A vertex's direction, its level (the split that made it, plus one; 0 for the icosahedron's own), and the two
+  // whose edge it is the midpoint of (itself twice for the icosahedron's own).
+  const glm::dvec3& normalOf(std::uint32_t vertex) const { return vertices_[vertex].normal; }
+  int levelOf(std::uint32_t vertex) const { return vertices_[vertex].level; }
+  std::array<std::uint32_t, 2> parentsOf(std::uint32_t vertex) const;
+
   void split(std::int32_t leaf);
   void merge(std::int32_t parent);  // the four children must be leaves
 
@@ -52,12 +58,13 @@ class PatchTopology {
     glm::dvec3 normal;
     std::uint64_t splitEdge;  // the edge it is the midpoint of, or kNoEdge for the icosahedron's own
     int users;
+    int level;
   };
 
   std::int32_t addNode(const std::array<std::uint32_t, 3>& corners, std::int32_t parent, int level);
   void removeNode(std::int32_t id);
-  std::uint32_t addVertex(const glm::dvec3& normal, std::uint64_t splitEdge);
-  std::uint32_t midpoint(std::uint32_t a, std::uint32_t b);
+  std::uint32_t addVertex(const glm::dvec3& normal, std::uint64_t splitEdge, int level);
+  std::uint32_t midpoint(std::uint32_t a, std::uint32_t b, int level);
   void release(std::uint32_t vertex);
 
   std::vector<PatchNode> nodes_;

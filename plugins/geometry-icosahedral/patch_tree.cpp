@@ -9,6 +9,8 @@
 
 #include <strata/plugin/geometric_error.hpp>
 
+#include "subdivision_table.hpp"
+
 namespace strata::icosahedral {
 namespace {
 
@@ -37,10 +39,10 @@ void PatchTree::settle(std::span<const ViewVolume> views) {
   views_ = views;
   double step = kSettlingStep;
   for (int round = 0; round < kSettlingRounds; ++round) {
-    const double before = detail_;
+    const Details before = field_.values();
     const int made = refine(std::numeric_limits<int>::max());
     followError(step);
-    if (made > 0 || detail_ != before) continue;
+    if (made > 0 || field_.values() != before) continue;
     if (step == kFollowingStep) break;
     step = std::max(step / 4.0, kFollowingStep);
   }
@@ -75,15 +77,61 @@ std::vector<Patch> PatchTree::visiblePatches() const {
     for (int e = 0; e < 3; ++e)
       if (topology_.across(id, e) < 0) coarse |= 1u << e;
     patches.push_back({topology_.cornersOf(id), node.level, coarse});
+    fillDetails(id, patches.back());
   };
   for (std::int32_t face = 0; face < PatchTopology::kFaces; ++face) visit(face);
   return patches;
 }
 
-double PatchTree::splitDistance(int level) const { return splitDistance(level, detail_); }
+double PatchTree::splitDistanceUnit() const { return radius_ * kFaceEdgeAngle; }
 
-double PatchTree::splitDistance(int level, double detail) const {
-  return std::ldexp(detail * radius_ * kFaceEdgeAngle, -level);
+double PatchTree::splitDistanceOf(const Patch& patch) const {
+  const int held = verticesPerPatch(std::max(DetailField::kLevel - patch.level, 0));
+  return std::ldexp(splitDistanceUnit() * *std::max_element(patch.details.begin(), patch.details.begin() + held),
+                    -patch.level);
+}
+
+double PatchTree::splitDistance(std::int32_t id, const Details& details) const {
+  return std::ldexp(splitDistanceUnit() * detailOver(id, details), -topology_[id].level);
+}
+
+// The largest detail scale over a patch: the field is linear in the lattice's triangles, so at its corners where it
+// lies within one, else at the lattice's vertices within it.
+double PatchTree::detailOver(std::int32_t id, const Details& details) const {
+  const PatchNode& node = topology_[id];
+  double largest = 0.0;
+  if (node.level < DetailField::kLevel) {
+    for (const int v : field_.gridOf(topology_.cornersOf(id), node.level))
+      largest = std::max(largest, details[std::size_t(v)]);
+    return largest;
+  }
+  std::unordered_map<std::uint32_t, float> known;
+  for (const std::uint32_t corner : node.corners) largest = std::max(largest, double(detailAt(corner, details, known)));
+  return largest;
+}
+
+// The detail scale at a vertex of the tree, as the compute pass finds it: the lattice's value at a vertex of its
+// levels, else the float mean of its parents' (`known`: those found so far).
+float PatchTree::detailAt(std::uint32_t vertex, const Details& details,
+                          std::unordered_map<std::uint32_t, float>& known) const {
+  if (topology_.levelOf(vertex) <= DetailField::kLevel)
+    return float(details[std::size_t(field_.vertexAt(topology_.normalOf(vertex)))]);
+  if (const auto found = known.find(vertex); found != known.end()) return found->second;
+  const auto [a, b] = topology_.parentsOf(vertex);
+  const float detail = 0.5f * (detailAt(a, details, known) + detailAt(b, details, known));
+  known.emplace(vertex, detail);
+  return detail;
+}
+
+void PatchTree::fillDetails(std::int32_t id, Patch& patch) const {
+  const PatchNode& node = topology_[id];
+  if (node.level < DetailField::kLevel) {
+    const std::vector<int> grid = field_.gridOf(patch.corners, node.level);
+    for (std::size_t i = 0; i < grid.size(); ++i) patch.details[i] = float(field_.values()[std::size_t(grid[i])]);
+    return;
+  }
+  std::unordered_map<std::uint32_t, float> known;
+  for (std::size_t c = 0; c < 3; ++c) patch.details[c] = detailAt(node.corners[c], field_.values(), known);
 }
 
 // The shell and, the first time, the terrain's error over the patch's cap, its spacings in the same measure: the
@@ -157,7 +205,7 @@ void PatchTree::classify(std::int32_t id) {
 
 bool PatchTree::wantsSplit(std::int32_t id, double distance) const {
   const PatchNode& node = topology_[id];
-  return node.level < kDeepestLevel && distance < splitDistance(node.level);
+  return node.level < kDeepestLevel && distance < splitDistance(id);
 }
 
 // Folds every family whose parent would not be split (out of every view, or far enough); returns the
@@ -181,7 +229,7 @@ int PatchTree::splitNear(int operations) {
   for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
     const PatchNode& node = topology_[id];
     if (node.alive && node.leaf() && node.visible && wantsSplit(id, node.distance))
-      near.emplace_back(node.distance / splitDistance(node.level), id);
+      near.emplace_back(node.distance / splitDistance(id), id);
   }
   std::ranges::sort(near);
   int made = 0;
@@ -194,29 +242,42 @@ int PatchTree::splitNear(int operations) {
   return made;
 }
 
-// Moves the detail scale toward the one the pixel error asks for by at most the factor 1 + largestStep. Over
-// `patches` visible patches it shrinks instead (the count grows about as the square of the scale, each level's
-// ring of patches does, hence the square root); it grows only while the splits that would bring keep within
-// `patches`: seen from afar, a whole level splits at once, and the count would swing across the cap.
+// Moves the detail field toward the one the pixel error asks for by at most the factor 1 + largestStep at each
+// lattice vertex. Over `patches` visible patches it shrinks everywhere instead (the count grows about as the
+// square of the scale, each level's ring of patches does, hence the square root); it grows only while the splits
+// that would bring keep within `patches`: seen from afar, a whole level splits at once, and the count would swing
+// across the cap. Each step (a common factor, clamps, the least of two fields) keeps neighbouring values within
+// DetailField::kNeighbourRatio, as the asked field and the field before are.
 void PatchTree::followError(double largestStep) {
   const double count = std::max(visibleCount_, 1);
+  Details next = field_.values();
   if (count > settings_.patches) {
-    detail_ *= std::max(std::sqrt(settings_.patches / count), 1.0 / (1.0 + largestStep));
-  } else {
-    const double toward = std::clamp(wantedDetail(), detail_ / (1.0 + largestStep), detail_ * (1.0 + largestStep));
-    if (toward < detail_ || visibleCount_ + 3 * splitsAt(toward) <= settings_.patches) detail_ = toward;
+    const double shrink = std::max(std::sqrt(settings_.patches / count), 1.0 / (1.0 + largestStep));
+    for (double& value : next) value = std::max(value * shrink, kLeastDetail);
+    field_.assign(std::move(next));
+    return;
   }
-  detail_ = std::clamp(detail_, kLeastDetail, kMostDetail);
+  const Details wanted = wantedDetail();
+  bool grows = false;
+  for (std::size_t v = 0; v < next.size(); ++v) {
+    next[v] = std::clamp(wanted[v], next[v] / (1.0 + largestStep), next[v] * (1.0 + largestStep));
+    grows = grows || next[v] > field_.values()[v];
+  }
+  if (grows && visibleCount_ + 3 * splitsAt(next) > settings_.patches)
+    for (std::size_t v = 0; v < next.size(); ++v) next[v] = std::min(next[v], field_.values()[v]);
+  for (double& value : next) value = std::clamp(value, kLeastDetail, kMostDetail);
+  field_.assign(std::move(next));
 }
 
-// The least detail scale at which every visible patch whose error would show more than the pixel error is
-// split: the visible leaves and every split patch seen. A split patch's children may be split only by the scale
-// it asks for, so leaving it out once they were would let the scale fall and merge them, and take it back up: the
-// tree swung by a split a frame. Its error seen from the patch, ε·ppr/d, is the screen-space error of [Cignoni et
-// al. 2003, §4.3] (errorShows); the detail it asks for, the face-on distance the split measures.
-double PatchTree::wantedDetail() {
+// The least detail field at which every visible patch whose error would show more than the pixel error is
+// split, each asking at the lattice vertices that decide its split distance (latticeVerticesOf), the field then
+// smoothed (DetailField::smoothed): the visible leaves and every split patch seen. A split patch's children may be
+// split only by the scale it asks for, so leaving it out once they were would let the scale fall and merge them, and
+// take it back up: the tree swung by a split a frame. Its error seen from the patch, ε·ppr/d, is the screen-space error
+// of [Cignoni et al. 2003, §4.3] (errorShows); the detail it asks for, the face-on distance the split measures.
+PatchTree::Details PatchTree::wantedDetail() {
   const double finest = pixelsPerRadian();
-  double wanted = kLeastDetail;
+  Details wanted(std::size_t(field_.vertexCount()), kLeastDetail);
   for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
     const PatchNode& node = topology_[id];
     if (!node.alive || node.level >= kDeepestLevel) continue;
@@ -226,9 +287,18 @@ double PatchTree::wantedDetail() {
     else if (!node.leaf())
       distance = viewedDistance(shellOf(id));
     if (!distance || !errorShows(id, *distance, finest)) continue;
-    wanted = std::max(wanted, kSplitMargin * *distance / splitDistance(node.level, 1.0));
+    const double asked = std::min(kSplitMargin * std::ldexp(*distance / splitDistanceUnit(), node.level), kMostDetail);
+    for (const int v : latticeVerticesOf(id)) wanted[std::size_t(v)] = std::max(wanted[std::size_t(v)], asked);
   }
-  return std::min(wanted, kMostDetail);
+  return field_.smoothed(std::move(wanted));
+}
+
+// The lattice vertices whose values decide a patch's largest detail scale: those within it, or where it lies within
+// a triangle of the lattice, that triangle's corners.
+std::vector<int> PatchTree::latticeVerticesOf(std::int32_t id) const {
+  std::int32_t within = id;
+  while (topology_[within].level > DetailField::kLevel) within = topology_[within].parent;
+  return field_.gridOf(topology_.cornersOf(within), topology_[within].level);
 }
 
 // Whether the patch's error shows more than the pixel error: the whole of it seen from the face-on distance
@@ -264,13 +334,13 @@ double PatchTree::spacingOf(std::int32_t id) const {
   return std::ldexp(kFaceEdgeAngle, -topology_[id].level - settings_.depth);
 }
 
-// The visible leaves that would split at the detail scale `detail`.
-int PatchTree::splitsAt(double detail) const {
+// The visible leaves that would split were the detail field `details`.
+int PatchTree::splitsAt(const Details& details) const {
   int splits = 0;
   for (std::int32_t id = 0; id < std::int32_t(topology_.capacity()); ++id) {
     const PatchNode& node = topology_[id];
     splits += int(node.alive && node.leaf() && node.visible && node.level < kDeepestLevel &&
-                  node.distance < splitDistance(node.level, detail));
+                  node.distance < splitDistance(id, details));
   }
   return splits;
 }

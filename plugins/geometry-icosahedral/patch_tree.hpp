@@ -1,12 +1,15 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include <strata/plugin/height_input.hpp>
 
+#include "detail_field.hpp"
 #include "patch_topology.hpp"
 #include "view_volume.hpp"
 
@@ -27,18 +30,23 @@ struct Patch {
   SphericalTriangle corners;
   int level = 0;             // splits from the icosahedron's face
   unsigned coarseEdges = 0;  // bit e: the neighbour across the edge from corner e to corner e + 1 is coarser
+  // The detail scale at its first nv(max(DetailField::kLevel - level, 0)) vertices in SubdivisionTable's order
+  // (its corners, and where it is coarser than the field's lattice, the lattice's vertices within it), as float:
+  // the compute pass takes every other vertex's as its parents' mean (DetailField).
+  std::array<float, DetailField::kPatchValues> details{};
 };
 
 // The frame-coherent patch tree of [Kooima 2008, §3.2.1], computed once for all views: the faces of
 // the icosahedron split 1-to-4. A visible patch is split while its face-on distance from an eye
 // (patch_shell.hpp: the least over the patch's shell, between its own lowest and highest heights, where
-// they are known; else on the sphere) is below its level's split distance, the detail scale times the level's nominal
-// size, and four siblings are merged when their parent would not be split: the largest patches in solid
+// they are known; else on the sphere) is below its split distance, the detail scale there times the level's
+// nominal size, and four siblings are merged when their parent would not be split: the largest patches in solid
 // angle split first, as in [Kooima 2008], but by a threshold on a measure each vertex also has, which is what
 // geomorphing needs (docs/geometry.md; the split distances are CDLOD's, Strugar 2009, on the sphere).
-// The detail scale follows, slowly, the least that keeps every visible patch's projected error under
-// `pixelError` pixels (level of detail by screen-space error, [Cignoni et al. 2003, §4.3]), with `patches` as a
-// cap on the count of visible patches. A patch is visible when its shell
+// The detail scale is a field over the body (DetailField), the largest of it over a patch that patch's; it
+// follows, slowly, the least that keeps every visible patch's projected error under `pixelError` pixels (level of
+// detail by screen-space error, [Cignoni et al. 2003, §4.3]), region by region, with `patches` as a cap on the
+// count of visible patches. A patch is visible when its shell
 // [Kooima 2008, §3.2.3] rises above the horizon and reaches into a view's frustum. Neighbouring leaves differ
 // by at most one level [Kooima 2008, §3.4.1]: a split first splits coarser neighbours, and a merge that would
 // break the rule is not made (how the tree of [Kooima 2008, §3.2.1] keeps the rule is left unsaid there).
@@ -65,10 +73,11 @@ class PatchTree {
   // measuring its vertices' displaced points (PatchBatch::onTerrain); else both measure on the sphere.
   bool measuresOnTerrain() const { return bool(patchHeights_); }
 
-  // A patch of `level` is split while its face-on distance from an eye is below this, m.
-  double splitDistance(int level) const;
-  // The split distance of the icosahedron's faces: every level's is this halved `level` times.
-  double splitDistanceAtLevelZero() const { return splitDistance(0); }
+  // A face of the icosahedron's split distance where the detail scale is 1, m: a patch of level L is split while
+  // its face-on distance from an eye is below this halved L times, times the largest detail scale over it.
+  double splitDistanceUnit() const;
+  double splitDistanceOf(const Patch& patch) const;
+  const DetailField& detailField() const { return field_; }
   // The geometric error of a patch drawn with `depth` subdivisions, m: the larger of the sphere's error (the
   // chords' sagitta, grown toward a pole where longitude bends fastest) and the terrain's (its relief over
   // the patch scaled down to one vertex spacing as the relief's own roughness scales it).
@@ -82,6 +91,8 @@ class PatchTree {
   // across. Below 1 it would fill a view (so the bare sphere rests at 1: about 20 patches, whatever the
   // view); beyond 64 it would cover under 2 percent of one, finer than 300 patches can cover a view with.
   static constexpr double kLeastDetail = 1.0, kMostDetail = 64.0;
+
+  using Details = std::vector<double>;  // a detail field's values (DetailField::values)
 
  private:
   PatchShell shellOf(std::int32_t id);
@@ -101,10 +112,15 @@ class PatchTree {
   int mergeFar(int operations);
   int splitNear(int operations);
   void followError(double largestStep);
-  double wantedDetail();
+  Details wantedDetail();
+  std::vector<int> latticeVerticesOf(std::int32_t id) const;
   double pixelsPerRadian() const;
-  int splitsAt(double detail) const;
-  double splitDistance(int level, double detail) const;
+  int splitsAt(const Details& details) const;
+  double splitDistance(std::int32_t id, const Details& details) const;
+  double splitDistance(std::int32_t id) const { return splitDistance(id, field_.values()); }
+  double detailOver(std::int32_t id, const Details& details) const;
+  float detailAt(std::uint32_t vertex, const Details& details, std::unordered_map<std::uint32_t, float>& known) const;
+  void fillDetails(std::int32_t id, Patch& patch) const;
 
   double radius_;
   HeightRange heights_;
@@ -113,7 +129,7 @@ class PatchTree {
   PatchTopology topology_;
   std::span<const ViewVolume> views_;  // during update() only
   int visibleCount_ = 0;
-  double detail_ = 16.0;  // the detail scale: a start between the bounds that settle() moves from
+  DetailField field_{16.0};  // the detail scale: a start between the bounds that settle() moves from
 };
 
 }  // namespace strata::icosahedral

@@ -24,14 +24,18 @@ layout(std430, binding = 2) restrict buffer Positions { vec4 positions[]; };  //
 layout(std430, binding = 3) restrict buffer Normals { vec4 normals[]; };  // xyz: normal; w: angle to the parents
 layout(std430, binding = 4) restrict buffer LonLats { vec4 lonlats[]; };  // xy: own, zw: drawn; rad from the reference
 layout(std430, binding = 5) restrict buffer Surface { vec4 surface[]; };  // xyz: drawn point, m from the eye; w: morph
-layout(std430, binding = 6) restrict buffer Shading { vec4 shadingNormals[]; };  // xyz: drawn shading normal
+layout(std430, binding = 6) restrict buffer Shading { vec4 shadingNormals[]; };  // xyz: drawn shading normal;
+                                                                                 // w: the detail scale
+layout(std430, binding = 7) readonly buffer Details { float seedDetails[]; };  // patchValues a patch
 
 uniform int depth;
 uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
 uniform vec2 referenceLonlat;    // rad: the point below the eye
 uniform float radius;            // m, only to turn height differences into slopes
-uniform float footprintPerMetre;  // rad between vertices per metre of face-on distance (patch_batch.hpp)
-uniform float splitDistanceAtLevelZero;  // m: a patch of level L splits nearer than this halved L times
+uniform float footprintPerMetre;  // rad between vertices per metre of face-on distance at detail 1 (patch_batch.hpp)
+uniform float splitDistanceUnit;  // m: a patch of level L splits nearer than this halved L times, times the detail
+uniform int latticeLevel;         // the detail field's lattice (detail_field.hpp): its vertices' values are seeded
+uniform int patchValues;          // seeded values a patch
 uniform float grazingCosine;  // the least cosine a face-on distance counts (patch_shell.hpp's kGrazingCosine)
 uniform bool onTerrain;       // face-on distances at the displaced points, else on the sphere (PatchBatch::onTerrain)
 
@@ -80,12 +84,13 @@ float faceOnDistance(vec3 fromEye, vec3 normal) {
 }
 
 // How far a vertex of `globalLevel` (its patch's level plus its level within the patch) at `faceOn`
-// distance has morphed toward its own point: 0 where the split that brought it in is just being made, 1
-// a morph band nearer. Vertices of the faces' own levels never morph: the faces are never merged.
-float morphOf(int globalLevel, float faceOn) {
+// distance, where the detail scale is `detail`, has morphed toward its own point: 0 where the split that brought
+// it in is just being made, 1 a morph band nearer. Vertices of the faces' own levels never morph: the faces are
+// never merged.
+float morphOf(int globalLevel, float faceOn, float detail) {
   int splitLevel = globalLevel - depth - 1;  // the level whose split makes the vertex a patch's finest
   if (splitLevel < 0) return 1.0;
-  float splitDistance = splitDistanceAtLevelZero * exp2(-float(splitLevel));
+  float splitDistance = splitDistanceUnit * detail * exp2(-float(splitLevel));
   return clamp((1.0 - faceOn / splitDistance) / kMorphBand, 0.0, 1.0);
 }
 
@@ -96,17 +101,18 @@ float morphOf(int globalLevel, float faceOn) {
 void displace(uint v) {
   vec3 position = positions[v].xyz, n = normals[v].xyz;
   vec2 lonlat = lonlats[v].xy;
-  float h = 0.0;
+  float h = 0.0, detail = shadingNormals[v].w;
   vec3 shading = n;
 #ifdef STRATA_HAS_HEIGHT
-  float spacing = footprintPerMetre * faceOnDistance(position, n);
-  if (onTerrain) spacing = footprintPerMetre * faceOnDistance(position + heightAt(lonlat, n, spacing) * n, n);
+  float footprint = footprintPerMetre / detail;
+  float spacing = footprint * faceOnDistance(position, n);
+  if (onTerrain) spacing = footprint * faceOnDistance(position + heightAt(lonlat, n, spacing) * n, n);
   h = heightAt(lonlat, n, spacing);
   shading = shadingNormal(h, lonlat, n, spacing);
 #endif
   surface[v] = vec4(position + h * n, 1.0);
   lonlats[v] = vec4(lonlat, lonlat);
-  shadingNormals[v] = vec4(shading, 0.0);
+  shadingNormals[v] = vec4(shading, detail);
 }
 
 // Morphs displaced vertex v, of `globalLevel`, from the midpoint of its parents' drawn points toward its
@@ -115,7 +121,8 @@ void displace(uint v) {
 // the tree's distance to the patch's shell bounds from below: patch_shell.hpp), so that a split brings a
 // vertex in at morph 0.
 void morph(uint v, uint j, uint k, int globalLevel) {
-  float m = morphOf(globalLevel, faceOnDistance(onTerrain ? surface[v].xyz : positions[v].xyz, normals[v].xyz));
+  float m = morphOf(globalLevel, faceOnDistance(onTerrain ? surface[v].xyz : positions[v].xyz, normals[v].xyz),
+                    shadingNormals[v].w);
   surface[v].w = m;
   if (m == 1.0) return;
   surface[v].xyz = mix(0.5 * (surface[j].xyz + surface[k].xyz), surface[v].xyz, m);
@@ -124,9 +131,13 @@ void morph(uint v, uint j, uint k, int globalLevel) {
       normalize(mix(normalize(shadingNormals[j].xyz + shadingNormals[k].xyz), shadingNormals[v].xyz, m));
 }
 
-void subdivide(uint base, uint i) {
+// Vertex i of the patch from its parents j and k: its normal, longitude and latitude and position, and its detail
+// scale, seeded where it is one of the first `seeded` (the lattice's vertices), else its parents' mean (DetailField).
+void subdivide(uint base, uint i, uint firstSeed, uint seeded) {
   uvec2 p = parents[i];
   uint j = base + p.x, k = base + p.y;
+  shadingNormals[base + i].w =
+      i < seeded ? seedDetails[firstSeed + i] : 0.5 * (shadingNormals[j].w + shadingNormals[k].w);
   vec3 nj = normals[j].xyz, nk = normals[k].xyz;
   // [Kooima 2008, §3.3.3], w from the chord, which keeps its resolution near 0 where acos would not
   // (docs/references.md, Errata).
@@ -151,18 +162,20 @@ void subdivide(uint base, uint i) {
 void main() {
   uint patchIndex = gl_WorkGroupID.x, base = patchIndex * uint(verticesUpTo(depth));
   int patchLevel = int(seeds[3u * patchIndex].position.w);
+  uint detailSeeds = patchIndex * uint(patchValues), seeded = uint(verticesUpTo(max(latticeLevel - patchLevel, 0)));
   if (gl_LocalInvocationID.x < 3u) {
     uint v = base + gl_LocalInvocationID.x;
     SeedCorner corner = seeds[3u * patchIndex + gl_LocalInvocationID.x];
     positions[v] = corner.position;
     normals[v] = vec4(corner.normal.xyz, 0.0);
     lonlats[v] = vec4(corner.lonlat.xy, corner.lonlat.xy);
+    shadingNormals[v].w = seedDetails[detailSeeds + gl_LocalInvocationID.x];
   }
   memoryBarrierBuffer();
   barrier();
   for (int level = 1; level <= depth; ++level) {
     for (uint i = uint(verticesUpTo(level - 1)) + gl_LocalInvocationID.x; i < uint(verticesUpTo(level)); i += gl_WorkGroupSize.x)
-      subdivide(base, i);
+      subdivide(base, i, detailSeeds, seeded);
     memoryBarrierBuffer();
     barrier();
   }

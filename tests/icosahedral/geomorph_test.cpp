@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <strata/body.hpp>
@@ -44,13 +46,13 @@ class Geomorphing : public ::testing::TestWithParam<bool> {
   }
   // The planet-fixed drawn points (x, y, z) and morphs (w) of the patches seen from `view`.
   std::vector<glm::dvec4> drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches, const View& view,
-                                      double splitDistanceAtLevelZero) const;
+                                      double splitDistanceUnit) const;
 };
 
 std::vector<glm::dvec4> Geomorphing::drawnPoints(test::GpuPatches& gpu, const std::vector<Patch>& patches,
-                                                 const View& view, double splitDistanceAtLevelZero) const {
+                                                 const View& view, double splitDistanceUnit) const {
   std::vector<glm::dvec4> points;
-  for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceAtLevelZero, GetParam()).vertices)
+  for (const PatchBuffers::Vertex& vertex : gpu.subdivide(patches, view, splitDistanceUnit, GetParam()).vertices)
     points.emplace_back(glm::dvec3(vertex.drawn) + view.eye, vertex.drawn.w);
   return points;
 }
@@ -61,19 +63,21 @@ View viewFrom(double altitude) {
 
 // The largest move of a drawn vertex between steps, over its distance from the eye, must stay under 2e-5:
 // a thirtieth of a pixel of a 1280-pixel, 45-degree view (6e-4 rad), where vertices drawn without
-// morphing (a morph band of 1e-6) jumped by up to 4.7e-4, most of a pixel, at every step.
+// morphing (a morph band of 1e-6) jumped by up to 4.7e-4, most of a pixel, at every step. The detail scale
+// differs across the view (DetailField: the near patches ask for more), and vertices morph by the scale where
+// they lie.
 TEST_P(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
   test::GpuPatches gpu("testTerrain", kTerrain);
   PatchTree tree = this->tree();
   const std::vector<ViewVolume> views{ViewVolume(viewFrom(3e4))};
   tree.settle(views);
   const std::vector<Patch> patches = tree.visiblePatches();
-  std::vector<glm::dvec4> previous = drawnPoints(gpu, patches, viewFrom(3e4), tree.splitDistanceAtLevelZero());
+  std::vector<glm::dvec4> previous = drawnPoints(gpu, patches, viewFrom(3e4), tree.splitDistanceUnit());
   double largest = 0.0;
   int morphing = 0;
   for (int step = 1; step <= 40; ++step) {
     const View view = viewFrom(3e4 * std::pow(0.999, step));
-    const std::vector<glm::dvec4> next = drawnPoints(gpu, patches, view, tree.splitDistanceAtLevelZero());
+    const std::vector<glm::dvec4> next = drawnPoints(gpu, patches, view, tree.splitDistanceUnit());
     for (std::size_t i = 0; i < next.size(); ++i) {
       const double distance = glm::length(glm::dvec3(next[i]) - view.eye);
       largest = std::max(largest, glm::length(glm::dvec3(next[i] - previous[i])) / distance);
@@ -83,6 +87,8 @@ TEST_P(Geomorphing, DrawnVerticesMoveContinuouslyAsTheEyeDescends) {
   }
   EXPECT_LT(largest, 2e-5);
   EXPECT_GT(morphing, 10000) << "vertex-steps between their parents' midpoint and their own point";
+  const std::vector<double>& field = tree.detailField().values();
+  EXPECT_GT(std::ranges::max(field), 2.0 * std::ranges::min(field)) << "the detail scale varies across the view";
 }
 
 // The four children of every visible leaf: a leaf lies at or beyond its split distance, so the children's
@@ -95,13 +101,20 @@ TEST_P(Geomorphing, ASplitBeingMadeDrawsTheNewVerticesAtTheirParentsMidpoints) {
   tree.settle(views);
   std::vector<Patch> children;
   for (const Patch& leaf : tree.visiblePatches()) {
+    ASSERT_GE(leaf.level, DetailField::kLevel) << "its children's detail scales are their corners' means";
     const auto& [a, b, c] = leaf.corners;
     const glm::dvec3 ab = greatCircleMidpoint(a, b), bc = greatCircleMidpoint(b, c), ca = greatCircleMidpoint(c, a);
-    for (const SphericalTriangle& corners : {SphericalTriangle{a, ab, ca}, SphericalTriangle{ab, b, bc},
-                                             SphericalTriangle{ca, bc, c}, SphericalTriangle{ab, bc, ca}})
+    const auto& [da, db, dc] = std::array<float, 3>{leaf.details[0], leaf.details[1], leaf.details[2]};
+    const float dab = 0.5f * (da + db), dbc = 0.5f * (db + dc), dca = 0.5f * (dc + da);
+    for (const auto& [corners, details] : {std::pair{SphericalTriangle{a, ab, ca}, std::array{da, dab, dca}},
+                                           std::pair{SphericalTriangle{ab, b, bc}, std::array{dab, db, dbc}},
+                                           std::pair{SphericalTriangle{ca, bc, c}, std::array{dca, dbc, dc}},
+                                           std::pair{SphericalTriangle{ab, bc, ca}, std::array{dab, dbc, dca}}}) {
       children.push_back({corners, leaf.level + 1, 0});
+      std::ranges::copy(details, children.back().details.begin());
+    }
   }
-  const std::vector<glm::dvec4> drawn = drawnPoints(gpu, children, view, tree.splitDistanceAtLevelZero());
+  const std::vector<glm::dvec4> drawn = drawnPoints(gpu, children, view, tree.splitDistanceUnit());
   const SubdivisionTable& table = gpu.table();
   double largestMorph = 0.0;
   for (std::size_t patch = 0; patch < children.size(); ++patch)

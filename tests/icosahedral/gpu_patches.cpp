@@ -17,8 +17,8 @@ GpuPatches::GpuPatches(const std::string& heightFunction, const std::string& hei
 }
 
 GpuPatches::Subdivided GpuPatches::subdivide(const std::vector<Patch>& patches, const View& view,
-                                             double splitDistanceAtLevelZero, bool onTerrain) {
-  Subdivided result{batchPatches(patches, view, kRadius, splitDistanceAtLevelZero, table_, windings_), {}};
+                                             double splitDistanceUnit, bool onTerrain) {
+  Subdivided result{batchPatches(patches, view, kRadius, splitDistanceUnit, table_, windings_), {}};
   result.batch.onTerrain = onTerrain;
   buffers_.upload(result.batch);
   useSubdivision(program_, result.batch, kDepth, kRadius);

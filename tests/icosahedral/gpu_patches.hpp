@@ -26,7 +26,7 @@ class GpuPatches {
     std::vector<PatchBuffers::Vertex> vertices;  // kDepth's vertices of each patch in turn
   };
   // `onTerrain`: vertices measure their distances at their displaced points (PatchBatch::onTerrain).
-  Subdivided subdivide(const std::vector<Patch>& patches, const View& view, double splitDistanceAtLevelZero,
+  Subdivided subdivide(const std::vector<Patch>& patches, const View& view, double splitDistanceUnit,
                        bool onTerrain = false);
   const SubdivisionTable& table() const { return table_; }
 
