@@ -67,7 +67,10 @@ int DetailField::vertexAt(const glm::dvec3& direction) const {
   return nearest;
 }
 
-std::vector<int> DetailField::gridOf(const SphericalTriangle& corners, int level) const {
+const std::vector<int>& DetailField::gridOf(const SphericalTriangle& corners, int level) const {
+  const auto [kept, found] =
+      grids_.try_emplace({vertexAt(corners[0]), vertexAt(corners[1]), vertexAt(corners[2]), level}, std::vector<int>());
+  if (!found) return kept->second;
   const SubdivisionTable table(std::max(kLevel - level, 0));
   std::vector<glm::dvec3> directions(corners.begin(), corners.end());
   std::vector<int> grid;
@@ -78,7 +81,8 @@ std::vector<int> DetailField::gridOf(const SphericalTriangle& corners, int level
     }
     grid.push_back(vertexAt(directions[v]));
   }
-  return grid;
+  kept->second = std::move(grid);
+  return kept->second;
 }
 
 // A shortest-path relaxation in the logarithm: each pass raises a vertex to its largest neighbour over the

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -33,8 +34,9 @@ class DetailField {
   // the nearest.
   int vertexAt(const glm::dvec3& direction) const;
   // The lattice vertices of a triangle of level <= kLevel whose corners are lattice vertices, in the order of a
-  // SubdivisionTable of depth kLevel - level: the first vertices of any deeper table, whose levels nest.
-  std::vector<int> gridOf(const SphericalTriangle& corners, int level) const;
+  // SubdivisionTable of depth kLevel - level: the first vertices of any deeper table, whose levels nest. Found
+  // once for each triangle and corner order, then kept: the tree asks every frame.
+  const std::vector<int>& gridOf(const SphericalTriangle& corners, int level) const;
   // `wanted` raised wherever a neighbour's value over kNeighbourRatio exceeds it, until nowhere does.
   std::vector<double> smoothed(std::vector<double> wanted) const;
 
@@ -42,7 +44,8 @@ class DetailField {
   std::vector<glm::dvec3> directions_;
   std::vector<std::vector<int>> neighbours_;
   std::vector<double> values_;
-  std::unordered_map<std::uint64_t, int> byDirection_;  // a hash of a direction's bits, to its vertex
+  std::unordered_map<std::uint64_t, int> byDirection_;            // a hash of a direction's bits, to its vertex
+  mutable std::map<std::array<int, 4>, std::vector<int>> grids_;  // gridOf's, by corners' lattice vertices, level
 };
 
 }  // namespace strata::icosahedral

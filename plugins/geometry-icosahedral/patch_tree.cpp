@@ -126,7 +126,7 @@ float PatchTree::detailAt(std::uint32_t vertex, const Details& details,
 void PatchTree::fillDetails(std::int32_t id, Patch& patch) const {
   const PatchNode& node = topology_[id];
   if (node.level < DetailField::kLevel) {
-    const std::vector<int> grid = field_.gridOf(patch.corners, node.level);
+    const std::vector<int>& grid = field_.gridOf(patch.corners, node.level);
     for (std::size_t i = 0; i < grid.size(); ++i) patch.details[i] = float(field_.values()[std::size_t(grid[i])]);
     return;
   }
@@ -295,7 +295,7 @@ PatchTree::Details PatchTree::wantedDetail() {
 
 // The lattice vertices whose values decide a patch's largest detail scale: those within it, or where it lies within
 // a triangle of the lattice, that triangle's corners.
-std::vector<int> PatchTree::latticeVerticesOf(std::int32_t id) const {
+const std::vector<int>& PatchTree::latticeVerticesOf(std::int32_t id) const {
   std::int32_t within = id;
   while (topology_[within].level > DetailField::kLevel) within = topology_[within].parent;
   return field_.gridOf(topology_.cornersOf(within), topology_[within].level);

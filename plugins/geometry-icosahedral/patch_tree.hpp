@@ -113,7 +113,7 @@ class PatchTree {
   int splitNear(int operations);
   void followError(double largestStep);
   Details wantedDetail();
-  std::vector<int> latticeVerticesOf(std::int32_t id) const;
+  const std::vector<int>& latticeVerticesOf(std::int32_t id) const;
   double pixelsPerRadian() const;
   int splitsAt(const Details& details) const;
   double splitDistance(std::int32_t id, const Details& details) const;
