@@ -82,15 +82,15 @@ std::string ReliefLayer::tint() const {
 }
 
 // The layer's value, grey where the height has data, or multiplying the surface's colour (which shows
-// unshaded where the height has none). The slopes are found once: each costs four samples of the height,
-// which for procedural heights are loops of noise that llvmpipe's compiler takes minutes over when inlined
-// twice more.
+// unshaded where the height has none). The height and its slopes are sampled once (for procedural heights,
+// whose slopes cost four more samples, loops of noise that llvmpipe's compiler takes minutes over when
+// inlined twice more).
 std::string ReliefLayer::shaded() const {
   const std::string& p = prefix_;
-  const std::string shade = "  vec2 slopes = " + p +
-                            "_slopes(p, height.r);\n"
-                            "  vec3 shade = " +
-                            p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
+  const std::string shade =
+      "  vec2 slopes = height.gb;\n"
+      "  vec3 shade = " +
+      p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
   if (!surface_) return "  if (height.a <= 0.0) return vec4(0.0);\n" + shade + "  return vec4(shade, height.a);\n";
   return "  vec4 surface = " + surface_->samplingFunction() +
          "(p);\n"
@@ -139,7 +139,7 @@ std::string ReliefLayer::glsl() const {
          tint() + "vec4 " + p +
          "(SurfacePoint p) {\n"
          "  vec4 height = " +
-         height_.samplingFunction() + "(p);\n" + shaded() + "}\n";
+         p + "_slopes(p);\n" + shaded() + "}\n";
 }
 
 void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {

@@ -88,10 +88,10 @@ void main() {
   float spacing = footprintPerMetre * length(fromEye + groundLevel * normal);  // measured on the ground
 #ifdef STRATA_HEIGHT_FACE_FUNCTION
   float h = heightAtFacePoint(facePoint, spacing);  // the layer's texels are the faces: no projection
-#else
-  float h = heightAt(lonlat, normal, spacing);
-#endif
   shading = shadingNormal(h, lonlat, normal, spacing);
+#else
+  float h = heightAndShadingNormal(lonlat, normal, spacing, shading);
+#endif
   fromEye += h * normal;
 #endif
   gl_Position = projection * vec4(planetToEye * fromEye, 1.0);

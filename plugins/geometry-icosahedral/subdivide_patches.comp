@@ -107,8 +107,7 @@ void displace(uint v) {
   float footprint = footprintPerMetre / detail;
   float spacing = footprint * faceOnDistance(position, n);
   if (onTerrain) spacing = footprint * faceOnDistance(position + heightAt(lonlat, n, spacing) * n, n);
-  h = heightAt(lonlat, n, spacing);
-  shading = shadingNormal(h, lonlat, n, spacing);
+  h = heightAndShadingNormal(lonlat, n, spacing, shading);
 #endif
   surface[v] = vec4(position + h * n, 1.0);
   lonlats[v] = vec4(lonlat, lonlat);

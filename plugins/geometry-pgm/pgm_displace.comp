@@ -56,8 +56,7 @@ void main() {
 #ifdef STRATA_HAS_HEIGHT
   vec2 fromReference = lonlatFromReference(s, referenceLatitude);
   float spacing = gridSpacing(point, s);
-  h = heightAt(fromReference, sphereNormal, spacing);
-  shading = shadingNormal(h, fromReference, sphereNormal, spacing);
+  h = heightAndShadingNormal(fromReference, sphereNormal, spacing, shading);
 #endif
   vertices[i] = GridVertex(vec4(positions[i].xyz + (h + primaryOffset) * s, h), vec4(s, normals[i].w), vec4(shading, 0.0));
 }

@@ -29,15 +29,52 @@ float heightAtFacePoint(vec3 point, float spacing) {
 }
 #endif
 
-// The displaced surface's normal from central differences of the height over one vertex spacing.
-vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
-  vec2 lonlat = referenceLonlat + fromReference;
-  float dLon = spacing / max(cos(lonlat.y), 1e-4);
-  float eastSlope = (heightAt(fromReference + vec2(dLon, 0.0), normal, spacing) -
-                     heightAt(fromReference - vec2(dLon, 0.0), normal, spacing)) / (2.0 * (radius + h) * spacing);
-  float northSlope = (heightAt(fromReference + vec2(0.0, spacing), normal, spacing) -
-                      heightAt(fromReference - vec2(0.0, spacing), normal, spacing)) / (2.0 * (radius + h) * spacing);
+// The displaced surface's normal at height `h` from its slopes east and north (rise per rad along the ground).
+vec3 normalOfSlopes(float h, vec2 lonlat, vec3 normal, vec2 slopes) {
   vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
   vec3 north = cross(normal, east);
-  return normalize(normal - eastSlope * east - northSlope * north);
+  slopes /= radius + h;
+  return normalize(normal - slopes.x * east - slopes.y * north);
+}
+
+#ifdef STRATA_HEIGHT_SLOPED_FUNCTION
+// The height and its slopes (per rad along the ground) at `fromReference`, filtered as heightAt filters: one sample
+// of a layer that gives its slopes with its value (SlopedLayer), its slopes over the vertex spacing's level.
+vec4 slopedHeightAt(vec2 fromReference, vec3 normal, float spacing) {
+  float east = spacing / max(cos(referenceLonlat.y + fromReference.y), 1e-4);
+  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(east, 0.0), vec2(0.0, spacing),
+                                fromReference);
+  vec4 sampled = STRATA_HEIGHT_SLOPED_FUNCTION(p);
+  return sampled.a > 0.0 ? sampled : vec4(0.0);  // no height data: the sphere
+}
+#endif
+
+// The displaced surface's normal at height `h`: from the layer's own slopes where it gives them, else from central
+// differences of the height over one vertex spacing.
+vec3 shadingNormal(float h, vec2 fromReference, vec3 normal, float spacing) {
+  vec2 lonlat = referenceLonlat + fromReference;
+#ifdef STRATA_HEIGHT_SLOPED_FUNCTION
+  return normalOfSlopes(h, lonlat, normal, slopedHeightAt(fromReference, normal, spacing).gb);
+#else
+  float dLon = spacing / max(cos(lonlat.y), 1e-4);
+  float eastRise = heightAt(fromReference + vec2(dLon, 0.0), normal, spacing) -
+                   heightAt(fromReference - vec2(dLon, 0.0), normal, spacing);
+  float northRise = heightAt(fromReference + vec2(0.0, spacing), normal, spacing) -
+                    heightAt(fromReference - vec2(0.0, spacing), normal, spacing);
+  return normalOfSlopes(h, lonlat, normal, vec2(eastRise, northRise) / (2.0 * spacing));
+#endif
+}
+
+// The height at `fromReference` as heightAt has it, and in `shading` the displaced surface's normal there: one
+// sample where the layer gives its slopes with its value, else five.
+float heightAndShadingNormal(vec2 fromReference, vec3 normal, float spacing, out vec3 shading) {
+#ifdef STRATA_HEIGHT_SLOPED_FUNCTION
+  vec4 sampled = slopedHeightAt(fromReference, normal, spacing);
+  shading = normalOfSlopes(sampled.r, referenceLonlat + fromReference, normal, sampled.gb);
+  return sampled.r;
+#else
+  float h = heightAt(fromReference, normal, spacing);
+  shading = shadingNormal(h, fromReference, normal, spacing);
+  return h;
+#endif
 }

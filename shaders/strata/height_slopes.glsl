@@ -1,12 +1,6 @@
 // The pieces of strata::heightSlopesGlsl (strata/plugin/height_slopes.hpp): a height layer's slopes at a surface
-// point, from its samples one footprint away along the ground each way.
-
-// The sample's footprint along the ground, rad: the longer of its two steps (SurfacePoint), so that the
-// height's differences span a pixel.
-float slopeStep(SurfacePoint p) {
-  float c = cos(p.lonlat.y);
-  return max(max(length(vec2(p.lonlatDx.x * c, p.lonlatDx.y)), length(vec2(p.lonlatDy.x * c, p.lonlatDy.y))), 1e-12);
-}
+// point, from its samples one footprint away along the ground each way, for height layers that do not give their
+// slopes with their value (SlopedLayer).
 
 // The point `step` (rad of longitude, latitude) from `p`, with the same footprint. Its normal is turned
 // from p's along the local east and north rather than rebuilt from lonlat, which float resolves to about a

@@ -10,6 +10,13 @@ struct SurfacePoint {
   vec2 fromReference;
 };
 
+// The sample's footprint along the ground, rad: the longer of its two steps, so that what is measured over
+// it (a height's slopes) spans a pixel.
+float groundFootprint(SurfacePoint p) {
+  float c = cos(p.lonlat.y);
+  return max(max(length(vec2(p.lonlatDx.x * c, p.lonlatDx.y)), length(vec2(p.lonlatDy.x * c, p.lonlatDy.y))), 1e-12);
+}
+
 #include "strata/anisotropic_taps.glsl"
 
 #ifdef STRATA_GEOMETRY_STAGE

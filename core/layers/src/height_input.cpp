@@ -109,10 +109,11 @@ void HeightInput::checkGivenHold(const ValueRange& known) const {
 
 std::map<std::string, std::string> HeightInput::substitutions() const {
   if (!layer_) return {{"STRATA_PROGRAM_DEFINES", ""}, {"STRATA_HEIGHT_LAYER_GLSL", ""}};
-  const std::string byFace = faceSamplingFunctionOf(*layer_);
+  const std::string byFace = faceSamplingFunctionOf(*layer_), sloped = slopedSamplingFunctionOf(*layer_);
   return {{"STRATA_PROGRAM_DEFINES", "#define STRATA_HAS_HEIGHT\n#define STRATA_HEIGHT_FUNCTION " +
                                          layer_->samplingFunction() +
-                                         (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace)},
+                                         (byFace.empty() ? "" : "\n#define STRATA_HEIGHT_FACE_FUNCTION " + byFace) +
+                                         (sloped.empty() ? "" : "\n#define STRATA_HEIGHT_SLOPED_FUNCTION " + sloped)},
           {"STRATA_HEIGHT_LAYER_GLSL", layer_->glslOnce()}};
 }
 

@@ -40,11 +40,14 @@ std::string PagedRasterLayer::glsl() const {
                  p + "_levels;\n",
              "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) + ", " + p +
                  "_indexBase, " + p + "_levels, " + p + "_size, " + p + "_texel(at, p), stepX, stepY, repeatX, " +
-                 (onHealpixFaces() ? p + "_size.y" : "0") + ")") +
+                 (onHealpixFaces() ? p + "_size.y" : "0") + ", gradient)",
+             true) +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
 
 std::string PagedRasterLayer::faceSamplingFunction() const { return onHealpixFaces() ? prefix() + "_face" : ""; }
+
+std::string PagedRasterLayer::slopedSamplingFunction() const { return oneChannel() ? prefix() + "_sloped" : ""; }
 
 // Texel positions straight from the face point, in level-0 texels of the strip (nside = its height): exact for
 // the dyadic face points geometry.healpix makes, so that two nodes sharing a vertex on a face edge, each in its
@@ -57,10 +60,11 @@ std::string PagedRasterLayer::faceSamplingGlsl() const {
          p +
          "_size.y);\n"
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
+         "  TexelGradient gradient;\n"
          "  return " +
          p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) +
          ", " + p + "_indexBase, " + p + "_levels, " + p +
-         "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
+         "_size, texelAddressOf(texel), footprint * nside, int(point.x), gradient));\n"
          "}\n";
 }
 

@@ -142,7 +142,8 @@ void ProjectedRasterLayer::setAffineReference(glm::dvec2 referenceLonlat) {
   centreFromReference_ = float(centre - longitude);
 }
 
-std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered) const {
+std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, const std::string& filtered,
+                                               bool sloped) const {
   const std::string& p = prefix_;
   const bool colour = isColour(kind_);
   const std::string value = colour
@@ -152,25 +153,35 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
   return "#include \"strata/projected_raster.glsl\"\n" + uniform("vec2", p + "_scaleOffset") +
          uniform("bool", p + "_repeatX") + uniform("ivec2", p + "_size") + declarations +
          (affine_ ? affineGlsl() : absoluteGlsl() + relativeGlsl()) + texelGlsl() + "vec4 " + p +
-         "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value +
-         " : vec4(0.0); }\n"
-         "vec4 " +
-         p +
-         "(SurfacePoint p) {\n"
-         "  vec3 at = " +
-         p +
-         "_at(p);\n"
-         "  bool repeatX = " +
-         p +
+         "_value(vec4 t) { return " + coverage + " > 0.0 ? " + value + " : vec4(0.0); }\n" + "vec4 " + p +
+         "(SurfacePoint p) {\n" + filteredAt() + "  return " + p + "_value(" + filtered + ");\n}\n" +
+         (sloped && oneChannel() ? slopedGlsl(filtered) : std::string());
+}
+
+// The sampling functions' common start: texture coordinates, whether they fall on the raster, the footprint's
+// steps, and the gradient `filtered` may write.
+std::string ProjectedRasterLayer::filteredAt() const {
+  const std::string& p = prefix_;
+  return "  vec3 at = " + p + "_at(p);\n  bool repeatX = " + p +
          "_repeatX;\n"
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
          "  vec2 uv = at.xy, stepX = " +
          p + "_step(at, p, p.lonlatDx), stepY = " + p +
          "_step(at, p, p.lonlatDy);\n"
-         "  return " +
-         p + "_value(" + filtered +
-         ");\n"
-         "}\n";
+         "  TexelGradient gradient;\n";
+}
+
+// slopedSamplingFunction(): the filtered texel with its gradient, turned along the ground by the projection's
+// steps over one footprint east and north (a footprint east is footprint / cos(latitude) of longitude).
+std::string ProjectedRasterLayer::slopedGlsl(const std::string& filtered) const {
+  const std::string& p = prefix_;
+  return "vec4 " + p + "_sloped(SurfacePoint p) {\n" + filteredAt() + "  vec4 t = " + filtered +
+         ";\n"
+         "  float d = groundFootprint(p);\n"
+         "  vec2 east = " +
+         p + "_step(at, p, vec2(d / max(cos(p.lonlat.y), 1e-4), 0.0)) * vec2(" + p + "_size) / d;\n" +
+         "  vec2 north = " + p + "_step(at, p, vec2(0.0, d)) * vec2(" + p + "_size) / d;\n" +
+         "  return slopedValue(t, gradient, east, north, " + p + "_scaleOffset);\n}\n";
 }
 
 // Texture coordinates and footprint steps at absolute longitude and latitude, through the projection's GLSL.
@@ -346,6 +357,8 @@ std::string ProjectedRasterLayer::texelGlsl() const {
          "  return min(across, min(edges.y, edges.w));\n"
          "}\n";
 }
+
+bool ProjectedRasterLayer::oneChannel() const { return !isColour(kind_); }
 
 ProjectionAspect ProjectedRasterLayer::aspect() const {
   return georeference_.projection ? georeference_.projection->aspect() : ProjectionAspect::Other;

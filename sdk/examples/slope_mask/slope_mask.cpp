@@ -77,8 +77,8 @@ MaskStyle styleOf(const strata::ParameterSet& parameters) {
           settings.opacity};
 }
 
-// The layer: its GLSL samples the surface and the heights at a point, and the heights one footprint away
-// each way for the slope (strata::heightSlopesGlsl), then lays the paint over the surface where the slope
+// The layer: its GLSL samples the surface, and the heights at a point with their slopes
+// (strata::heightSlopesGlsl), then lays the paint over the surface where the slope
 // is steeper than the threshold, weighted by the heights' coverage (no data, no paint).
 class SlopeMaskLayer : public strata::Layer {
  public:
@@ -98,13 +98,13 @@ class SlopeMaskLayer : public strata::Layer {
   std::string glsl() const override {
     const std::string& p = name_;
     const std::string slopes = strata::heightSlopesGlsl(p + "_slopes", height_, p + "_radius");
-    return height_.glslOnce() + surface_.glslOnce() + "#include \"slope_mask/slope_mask.glsl\"\n" +    //
-           "uniform float " + p + "_radius, " + p + "_threshold, " + p + "_opacity;\n" +               //
-           "uniform vec3 " + p + "_colour;\n" + slopes +                                               //
-           "vec4 " + p + "(SurfacePoint p) {\n" +                                                      //
-           "  vec4 height = " + height_.samplingFunction() + "(p);\n" +                                //
-           "  return slopeMaskOver(" + surface_.samplingFunction() + "(p), height, slopeAngle(" + p +  //
-           "_slopes(p, height.r), 1.0), " + p + "_threshold, " + p + "_colour, " + p + "_opacity);\n}\n";
+    return height_.glslOnce() + surface_.glslOnce() + "#include \"slope_mask/slope_mask.glsl\"\n" +                 //
+           "uniform float " + p + "_radius, " + p + "_threshold, " + p + "_opacity;\n" +                            //
+           "uniform vec3 " + p + "_colour;\n" + slopes +                                                            //
+           "vec4 " + p + "(SurfacePoint p) {\n" +                                                                   //
+           "  vec4 height = " + p + "_slopes(p);\n" +                                                               //
+           "  return slopeMaskOver(" + surface_.samplingFunction() + "(p), height, slopeAngle(height.gb, 1.0), " +  //
+           p + "_threshold, " + p + "_colour, " + p + "_opacity);\n}\n";
   }
 
   void bind(strata::ShaderProgram& program, strata::TextureUnits& units) const override {

@@ -65,8 +65,9 @@ class HeightInput {
   RegionalHeights within(const SphericalCap& cap) const;
 
   // The substitutions of a geometry program that samples heights: STRATA_PROGRAM_DEFINES (defining
-  // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, and STRATA_HEIGHT_FACE_FUNCTION when
-  // it can be sampled by HEALPix face point: HealpixFaceLayer::faceSamplingFunction) and STRATA_HEIGHT_LAYER_GLSL.
+  // STRATA_HAS_HEIGHT and STRATA_HEIGHT_FUNCTION when there is a layer, STRATA_HEIGHT_FACE_FUNCTION when
+  // it can be sampled by HEALPix face point: HealpixFaceLayer::faceSamplingFunction, and
+  // STRATA_HEIGHT_SLOPED_FUNCTION when it gives its slopes with its value: SlopedLayer) and STRATA_HEIGHT_LAYER_GLSL.
   std::map<std::string, std::string> substitutions() const;
 
  private:

@@ -68,6 +68,17 @@ class HealpixFaceLayer {
   virtual std::optional<ValueRange> faceNodeValues(int face, int level, std::int64_t ix, std::int64_t iy) const = 0;
 };
 
+// One-channel layers that give their value's slopes with the value, from the texels one sample filters:
+//   vec4 <slopedSamplingFunction()>(SurfacePoint p)
+// returns the value in .r, its change per radian along the ground east (.g) and north (.b), and the coverage
+// in .a, as Layer::samplingFunction() has them. Relief and slopes (strata/plugin/height_slopes.hpp) take one
+// such sample where other layers take five.
+class SlopedLayer {
+ public:
+  virtual ~SlopedLayer() = default;
+  virtual std::string slopedSamplingFunction() const = 0;
+};
+
 // What a layer offers through its capabilities, "" (or ProjectionAspect::Other) where it lacks them: for
 // consumers that paste the functions or pass them on.
 inline std::string texelStepsFunctionOf(const Layer& layer) {
@@ -77,6 +88,10 @@ inline std::string texelStepsFunctionOf(const Layer& layer) {
 inline std::string edgeDistanceFunctionOf(const Layer& layer) {
   const auto* texels = layer.as<TexelledLayer>();
   return texels ? texels->edgeDistanceFunction() : std::string();
+}
+inline std::string slopedSamplingFunctionOf(const Layer& layer) {
+  const auto* sloped = layer.as<SlopedLayer>();
+  return sloped ? sloped->slopedSamplingFunction() : std::string();
 }
 inline ProjectionAspect aspectOf(const Layer& layer) {
   const auto* projected = layer.as<ProjectedLayer>();

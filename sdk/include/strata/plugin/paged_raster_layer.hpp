@@ -13,8 +13,9 @@ namespace strata {
 // A layer sampled through the page cache (docs/architecture.md, "Data and paging"): like RasterLayer, per
 // sample the projection maps longitude/latitude to texture coordinates, but the texels come from the pages
 // of a PageSource that the cache holds, so the raster may be far larger than GPU memory. Sources attach in
-// createResources(), to the cache GpuContext::pages.
-class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer {
+// createResources(), to the cache GpuContext::pages. One-channel layers give their slopes with their value
+// (SlopedLayer), from the texels a sample filters.
+class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer, public SlopedLayer {
  public:
   PagedRasterLayer(std::string nodeId, LayerKind kind);
 
@@ -25,6 +26,8 @@ class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer {
   std::string glsl() const override;
   // On a HEALPix pyramid's faces: sampled by face point, with no projection (HealpixFaceLayer); "" elsewhere.
   std::string faceSamplingFunction() const override;
+  // One-channel kinds: <prefix>_sloped; "" for colours.
+  std::string slopedSamplingFunction() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
 

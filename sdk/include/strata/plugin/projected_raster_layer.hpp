@@ -59,8 +59,10 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   // defined there) and SurfacePoint p, giving the filtered texel: value x coverage and coverage (.rgb and .a
   // for colour kinds, .r and .g for the others), which <prefix>_value(vec4) turns into what the sampling
   // function returns. <prefix>_texel(at, p) gives the point's level-0 texel as a TexelAddress
-  // (strata/texel_address.glsl), exact near the reference however wide the raster.
-  std::string samplingGlsl(const std::string& declarations, const std::string& filtered) const;
+  // (strata/texel_address.glsl), exact near the reference however wide the raster. `filtered` may write the
+  // filtered texel's derivatives per level-0 texel into TexelGradient gradient; where it does, `sloped` adds
+  // for one-channel kinds vec4 <prefix>_sloped(SurfacePoint p), the value with its slopes (SlopedLayer).
+  std::string samplingGlsl(const std::string& declarations, const std::string& filtered, bool sloped = false) const;
   // Sets the uniforms samplingGlsl() declares.
   void bindSampling(ShaderProgram& program) const;
   const std::string& prefix() const { return prefix_; }
@@ -73,9 +75,13 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   // window of one face.
   bool onHealpixFaces() const;
   bool repeatX() const { return repeatX_; }
+  // Heights, luminance, masks and scalars: a value and its coverage, not colour.
+  bool oneChannel() const;
 
  private:
   std::string texelGlsl() const;
+  std::string filteredAt() const;
+  std::string slopedGlsl(const std::string& filtered) const;
   std::string absoluteGlsl() const;
   std::string referenceGlsl() const;
   std::string relativeGlsl() const;
