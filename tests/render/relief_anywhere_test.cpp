@@ -11,7 +11,8 @@
 // relief_test.cpp judges its cone at (0, 0); the same tolerance, 1 level of the sRGB frame, for the same reasons
 // (quantisation 0.5; the gradient of central differences mixed across a cell, second order in a texel; float
 // heights). The exact normal is normalize(s away, 1) in east/north/up, `away` the unit direction away from the
-// apex along the great circle, s = H / D. Measured on llvmpipe: see each case.
+// apex along the great circle, s = H / D. Measured on llvmpipe: 0.50 levels at most at Gale and across the
+// antimeridian (a mean of 0.24), 0.21 about the pole (its flank faces the pole everywhere, one shade).
 #include <gtest/gtest.h>
 
 #include <algorithm>

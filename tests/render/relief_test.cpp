@@ -10,16 +10,18 @@
 // max(0, n . l) for the light l at the azimuth and altitude.
 //
 // Judged: pixels on the flank between 0.2 R and 0.8 R, several kilometres from the apex and the rim, whose
-// creases the footprint (one pixel each way, through a height pyramid level of 4 texels) rounds off.
+// creases the footprint rounds off. The slopes are the central differences of the texels of the pyramid level the
+// footprint picks (4 texels a pixel: level 2, 556 m texels), mixed across the texel cell (SlopedLayer).
 // Tolerance, in 8-bit levels of the sRGB-encoded frame: 0.5 for quantisation, plus the gradient's error. On
 // a plane both the central differences and bilinear filtering are exact; the cone's curvature across its
 // radius (H / (R r), at most 2.8e-5 / m at 0.2 R) turns the gradient by under 1e-3 rad over a pixel, and the
 // heights (float, about 2 mm at 20 km) rise 370 m over the difference's 1.1 km, a 1e-5 error: together under
-// 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.52
-// levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.77 for exaggeration 2 under a
-// light at 30 degrees; 0.51 multiplied over a surface, 0.52 alone; 0.50 multidirectional (Mark's four lights);
-// 0.41 for the slope and 0.51 for the aspect (output: slope, aspect); normalised 0.51; tinted by elevation 0.50, by
-// slope 0.51; the same tolerance.
+// 0.2 levels (a level is some 0.004 of the shade there). So 1 level. Measured on llvmpipe: at most 0.50
+// levels (a mean of 0.24) for azimuths 0, 90, 225 and 315 at altitude 45; 0.56 for exaggeration 2 under a
+// light at 30 degrees (2.2 with the gradient of each texel cell's bilinear patch, which jumps at its edges, and
+// 0.77 with central differences of samples a footprint apart); 0.56 multiplied over a surface, 0.50 alone; 0.50
+// multidirectional (Mark's four lights); 0.41 for the slope and 0.50 for the aspect (output: slope, aspect);
+// normalised 0.50; tinted by elevation 0.50, by slope 0.50; the same tolerance.
 #include <gtest/gtest.h>
 
 #include <algorithm>

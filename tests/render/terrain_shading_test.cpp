@@ -12,7 +12,8 @@
 // Tolerance, 1 level of the sRGB frame: 0.5 for quantisation; a plane's slopes are exact from bilinear texels and
 // central differences alike, and every vertex's normal is the same, so interpolation and geomorphing keep it; the
 // raster's plane in longitude and latitude departs from a plane along the ground by the change of cos(latitude)
-// across it, 0.6% of the east slope at lat 75 (0.1 level). Measured on llvmpipe: see each case.
+// across it, 0.6% of the east slope at lat 75 (0.1 level). Measured on llvmpipe: 0.23 levels at Gale, 0.21 at lat 75,
+// with each generator (the plane is one shade); lit by swapped slopes it stood 38 levels off.
 #include <gtest/gtest.h>
 
 #include <algorithm>
