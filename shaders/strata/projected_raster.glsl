@@ -2,7 +2,6 @@
 // maps longitude/latitude to texture coordinates (its projection, then its geotransform) and calls these.
 #include "strata/constants.glsl"
 #include "strata/surface_point.glsl"
-#include "strata/texel_address.glsl"
 
 // Whether texture coordinates (.z: the projection is defined there) fall on the raster. A raster that
 // wraps around the body is inside at every u.
@@ -30,15 +29,13 @@ vec2 footprintStep(vec3 at, vec3 ahead, vec3 behind, bool repeatX) {
   return dot(forward, forward) < dot(backward, backward) ? forward : backward;
 }
 
-// A one-channel layer's filtered texel `t` (value x coverage in .r, coverage in .g) and its `gradient` per level-0
-// texel, as a value with its slopes: raw x scale + offset in .r, its change per radian along the ground east (.g)
-// and north (.b), coverage in .a; vec4(0) where there is no data. `east` and `north`: level-0 texels per radian
-// along the ground each way. The value is the quotient of the two channels, so its change is by the quotient rule.
-vec4 slopedValue(vec4 t, TexelGradient gradient, vec2 east, vec2 north, vec2 scaleOffset) {
+// A one-channel layer's filtered texel `t` (value x coverage in .r, coverage in .g, the value's slopes per level-0
+// texel x coverage in .b and .a: strata/paged_texture.glsl) as a value with its slopes: raw x scale + offset in .r,
+// its change per radian along the ground east (.g) and north (.b), coverage in .a; vec4(0) where there is no data.
+// Both are their texels' means weighted by coverage: beside no data, the data's own. `east` and `north`: level-0
+// texels per radian along the ground each way.
+vec4 slopedValue(vec4 t, vec2 east, vec2 north, vec2 scaleOffset) {
   if (t.g <= 0.0) return vec4(0.0);
-  vec2 alongEast = (gradient.alongX * east.x + gradient.alongY * east.y).rg;
-  vec2 alongNorth = (gradient.alongX * north.x + gradient.alongY * north.y).rg;
-  float value = t.r / t.g;
-  vec2 change = vec2(alongEast.x - value * alongEast.y, alongNorth.x - value * alongNorth.y) / t.g;
-  return vec4(value * scaleOffset.x + scaleOffset.y, change * scaleOffset.x, t.g);
+  vec2 change = vec2(dot(t.ba, east), dot(t.ba, north)) / t.g;
+  return vec4(t.r / t.g * scaleOffset.x + scaleOffset.y, change * scaleOffset.x, t.g);
 }

@@ -19,11 +19,3 @@ vec4 edgeDistances(TexelAddress address, ivec2 size) {
   vec2 fromStart = vec2(address.whole) + address.part, toEnd = vec2(size - address.whole) - address.part;
   return vec4(fromStart, toEnd);
 }
-
-// A filtered sample's derivatives along level-0 texel x and y, channel by channel: those of the filter's own
-// interpolant (bilinear within a level, mixed between levels and averaged over taps as the sample is), so that
-// a height's slope comes with its value from the same texels.
-struct TexelGradient {
-  vec4 alongX;
-  vec4 alongY;
-};

@@ -26,8 +26,7 @@ std::string neighbourSamplesGlsl(const std::string& name, const std::string& h, 
   return "vec4 " + name +
          "(SurfacePoint p) {\n"
          "  vec4 height = " +
-         h + "(p);\n" +
-         "  if (height.a <= 0.0) return vec4(0.0);\n" + kSlopeFootprint +
+         h + "(p);\n" + "  if (height.a <= 0.0) return vec4(0.0);\n" + kSlopeFootprint +
          "  vec2 east = p.lonlatDx, north = p.lonlatDy;\n"
          "  float eastRise = slopeRise(" +
          h + "(slopeNeighbour(p, east)), height.r, " + h +

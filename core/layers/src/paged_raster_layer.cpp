@@ -40,7 +40,7 @@ std::string PagedRasterLayer::glsl() const {
                  p + "_levels;\n",
              "samplePaged(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) + ", " + p +
                  "_indexBase, " + p + "_levels, " + p + "_size, " + p + "_texel(at, p), stepX, stepY, repeatX, " +
-                 (onHealpixFaces() ? p + "_size.y" : "0") + ", gradient)",
+                 (onHealpixFaces() ? p + "_size.y" : "0") + ")",
              true) +
          (onHealpixFaces() ? faceSamplingGlsl() : "");
 }
@@ -60,11 +60,10 @@ std::string PagedRasterLayer::faceSamplingGlsl() const {
          p +
          "_size.y);\n"
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
-         "  TexelGradient gradient;\n"
          "  return " +
          p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) +
          ", " + p + "_indexBase, " + p + "_levels, " + p +
-         "_size, texelAddressOf(texel), footprint * nside, int(point.x), gradient));\n"
+         "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
          "}\n";
 }
 

@@ -158,21 +158,19 @@ std::string ProjectedRasterLayer::samplingGlsl(const std::string& declarations, 
          (sloped && oneChannel() ? slopedGlsl(filtered) : std::string());
 }
 
-// The sampling functions' common start: texture coordinates, whether they fall on the raster, the footprint's
-// steps, and the gradient `filtered` may write.
+// The sampling functions' common start: texture coordinates, whether they fall on the raster, and the footprint's
+// steps.
 std::string ProjectedRasterLayer::filteredAt() const {
   const std::string& p = prefix_;
   return "  vec3 at = " + p + "_at(p);\n  bool repeatX = " + p +
          "_repeatX;\n"
          "  if (!insideTexture(at, repeatX)) return vec4(0.0);\n"
          "  vec2 uv = at.xy, stepX = " +
-         p + "_step(at, p, p.lonlatDx), stepY = " + p +
-         "_step(at, p, p.lonlatDy);\n"
-         "  TexelGradient gradient;\n";
+         p + "_step(at, p, p.lonlatDx), stepY = " + p + "_step(at, p, p.lonlatDy);\n";
 }
 
-// slopedSamplingFunction(): the filtered texel with its gradient, turned along the ground by the projection's
-// steps over one footprint east and north (a footprint east is footprint / cos(latitude) of longitude).
+// slopedSamplingFunction(): the filtered texel's slopes (a value page's .b and .a) turned along the ground by the
+// projection's steps over one footprint east and north (a footprint east is footprint / cos(latitude) of longitude).
 std::string ProjectedRasterLayer::slopedGlsl(const std::string& filtered) const {
   const std::string& p = prefix_;
   return "vec4 " + p + "_sloped(SurfacePoint p) {\n" + filteredAt() + "  vec4 t = " + filtered +
@@ -181,7 +179,7 @@ std::string ProjectedRasterLayer::slopedGlsl(const std::string& filtered) const 
          "  vec2 east = " +
          p + "_step(at, p, vec2(d / max(cos(p.lonlat.y), 1e-4), 0.0)) * vec2(" + p + "_size) / d;\n" +
          "  vec2 north = " + p + "_step(at, p, vec2(0.0, d)) * vec2(" + p + "_size) / d;\n" +
-         "  return slopedValue(t, gradient, east, north, " + p + "_scaleOffset);\n}\n";
+         "  return slopedValue(t, east, north, " + p + "_scaleOffset);\n}\n";
 }
 
 // Texture coordinates and footprint steps at absolute longitude and latitude, through the projection's GLSL.

@@ -5,9 +5,13 @@
 
 namespace strata::paging {
 
-GLenum internalFormatOf(PageFormat format) { return format == PageFormat::Colour ? GL_RGBA16F : GL_RG32F; }
+GLenum internalFormatOf(PageFormat format) { return format == PageFormat::Colour ? GL_RGBA16F : GL_RGBA32F; }
 GLenum pixelFormatOf(PageFormat format) { return format == PageFormat::Colour ? GL_RGBA : GL_RG; }
 GLenum pixelTypeOf(PageFormat format) { return format == PageFormat::Colour ? GL_HALF_FLOAT : GL_FLOAT; }
+
+std::uint64_t slotBytes(PageFormat format) {
+  return std::uint64_t(kPageSide) * kPageSide * (format == PageFormat::Colour ? 8 : 16);
+}
 
 namespace {
 

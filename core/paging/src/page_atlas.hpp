@@ -11,6 +11,10 @@
 
 namespace strata::paging {
 
+// The bytes of one slot of `format`'s atlas: colour RGBA16F; values RGBA32F, value x coverage and coverage as read
+// and the value's slopes beside them (ValueSlopesPages), twice the kPageBytes a page takes on the CPU.
+std::uint64_t slotBytes(PageFormat format);
+
 // One format's cache texture ([Kooima 2008, §4.3.2]): a 2D array texture whose layers are page slots (in
 // place of the source's n x m atlas, the layer index standing for row and column), and which page each slot
 // holds. Slots are reused least recently used first; slots used this frame and pinned slots (the coarsest

@@ -17,6 +17,7 @@
 #include "page_uploads.hpp"
 #include "paging/page_assembly.hpp"
 #include "scene_linear_pages.hpp"
+#include "value_slopes_pages.hpp"
 
 namespace strata {
 
@@ -61,7 +62,8 @@ struct PageCache::Impl {
   std::map<PageFormat, std::unique_ptr<paging::PageAtlas>> atlases;
   std::unique_ptr<paging::PageUploads> uploads;
   paging::SceneLinearPages sceneLinear;
-  std::unique_ptr<paging::PageLoader> loader;  // after the layers: its threads stop before they go
+  std::unique_ptr<paging::ValueSlopesPages> valueSlopes;  // where a layer has value pages
+  std::unique_ptr<paging::PageLoader> loader;             // after the layers: its threads stop before they go
   PageCacheStatistics statistics;
   std::vector<PageFailure> failures;
   std::mutex demandMutex;  // setDemand() comes from the workers' prepare()
@@ -127,23 +129,27 @@ const PageCacheStatistics& PageCache::statistics() const { return impl_->statist
 std::vector<PageFailure> PageCache::takeFailures() { return std::exchange(impl_->failures, {}); }
 
 // Pages that fit each format's atlas once the upload ring, the pages held between read and upload and
-// the index are paid for; the rest of the budget is shared among the formats by their numbers of layers.
+// the index are paid for; the rest of the budget is shared among the formats by their numbers of layers, each
+// format's share in slots of its size.
 std::map<PageFormat, int> PageCache::Impl::capacities() const {
   const std::uint64_t fixed = (std::uint64_t(settings.uploadsPerFrame) + pagesHeldOnCpu()) * kPageBytes + index.bytes();
-  const std::uint64_t pages = settings.budgetBytes > fixed ? (settings.budgetBytes - fixed) / kPageBytes : 0;
+  const std::uint64_t bytes = settings.budgetBytes > fixed ? settings.budgetBytes - fixed : 0;
   std::map<PageFormat, int> layersOf;
   for (const AttachedLayer& layer : layers) ++layersOf[layer.source->format()];
   GLint most = 0;
   glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &most);
   std::map<PageFormat, int> capacity;
   for (const auto& [format, count] : layersOf)
-    capacity[format] = int(std::min<std::uint64_t>(pages * std::uint64_t(count) / layers.size(), std::uint64_t(most)));
+    capacity[format] = int(std::min<std::uint64_t>(
+        bytes * std::uint64_t(count) / layers.size() / paging::slotBytes(format), std::uint64_t(most)));
   return capacity;
 }
 
 namespace {
 
-std::string mebibytes(int pages) { return std::to_string((std::uint64_t(pages) * kPageBytes) >> 20) + " MiB"; }
+std::string mebibytes(PageFormat format, int pages) {
+  return std::to_string((std::uint64_t(pages) * paging::slotBytes(format)) >> 20) + " MiB";
+}
 
 }  // namespace
 
@@ -154,13 +160,13 @@ std::unique_ptr<paging::PageAtlas> PageCache::Impl::fittingAtlas(PageFormat form
   std::unique_ptr<paging::PageAtlas> atlas = paging::PageAtlas::largestFitting(format, capacity, coarsest);
   if (!atlas)
     throw Error(settings.where,
-                "the GPU has no memory for even the " + std::to_string(coarsest) + " pages (" + mebibytes(coarsest) +
-                    ") of the coarsest levels of the " + kind + " layers",
+                "the GPU has no memory for even the " + std::to_string(coarsest) + " pages (" +
+                    mebibytes(format, coarsest) + ") of the coarsest levels of the " + kind + " layers",
                 "close what else uses the GPU, or give the layers coarser overviews (strata tile)");
   if (atlas->capacity() < capacity)
     logWarning("the GPU has no memory for the page cache's " + std::to_string(capacity) + " " + kind + " pages (" +
-               mebibytes(capacity) + "); it holds " + std::to_string(atlas->capacity()) + " (" +
-               mebibytes(atlas->capacity()) + "), so pages are read again more often as the view moves");
+               mebibytes(format, capacity) + "); it holds " + std::to_string(atlas->capacity()) + " (" +
+               mebibytes(format, atlas->capacity()) + "), so pages are read again more often as the view moves");
   return atlas;
 }
 
@@ -171,16 +177,18 @@ void PageCache::Impl::allocate() {
       if (layer.source->format() == format)
         coarsest += int(layer.source->pyramid().pageCount(layer.source->pyramid().levels() - 1));
     if (capacity < coarsest)
-      throw Error(settings.where,
-                  "the page cache budget of " + std::to_string(settings.budgetBytes >> 20) + " MiB holds " +
-                      std::to_string(capacity) + " pages for " + (format == PageFormat::Colour ? "colour" : "value") +
-                      " layers, fewer than the " + std::to_string(coarsest) + " pages of their coarsest levels",
-                  "raise `cache: {budget: MiB}` (each page takes " + std::to_string(kPageBytes >> 10) + " KiB)");
+      throw Error(
+          settings.where,
+          "the page cache budget of " + std::to_string(settings.budgetBytes >> 20) + " MiB holds " +
+              std::to_string(capacity) + " pages for " + (format == PageFormat::Colour ? "colour" : "value") +
+              " layers, fewer than the " + std::to_string(coarsest) + " pages of their coarsest levels",
+          "raise `cache: {budget: MiB}` (each page takes " + std::to_string(paging::slotBytes(format) >> 10) + " KiB)");
     atlases[format] = fittingAtlas(format, capacity, coarsest);
   }
   index.allocate();
   uploads = std::make_unique<paging::PageUploads>(settings.uploadsPerFrame);
   for (AttachedLayer& layer : layers) layer.toSceneLinear = sceneLinear.add(*layer.source);
+  if (atlases.contains(PageFormat::Values)) valueSlopes = std::make_unique<paging::ValueSlopesPages>();
   loader = std::make_unique<paging::PageLoader>(settings.loaderThreads,
                                                 std::size_t(settings.uploadsPerFrame + settings.loaderThreads),
                                                 [this](const LayerPage& page, std::vector<std::byte>& texels) {
@@ -266,7 +274,8 @@ void PageCache::Impl::uploadFinished(std::uint64_t frame, std::size_t count, boo
 }
 
 // Puts a read page into a slot of its atlas, evicting the least recently used page if need be, converts
-// it to scene-linear there where its source encodes colour otherwise, and points the index at it. When
+// it to scene-linear there where its source encodes colour otherwise, or gives a value page its slopes, and
+// points the index at it. When
 // every slot serves this frame the page is dropped; it is asked for again.
 void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool pinned) {
   AttachedLayer& layer = layers[std::size_t(loaded.page.layer)];
@@ -281,6 +290,7 @@ void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool 
   }
   uploads->upload(atlas.texture(), atlas.format(), *slot, loaded.texels);
   if (layer.toSceneLinear) sceneLinear.convert(*layer.toSceneLinear, atlas.texture(), *slot);
+  if (atlas.format() == PageFormat::Values) valueSlopes->compute(atlas.texture(), *slot);
   atlas.hold(*slot, loaded.page, frame, pinned);
   layer.resident[loaded.page.key] = *slot;
   index.place(loaded.page.layer, loaded.page.key, *slot);
@@ -294,7 +304,7 @@ void PageCache::Impl::updateStatistics(int wanted) {
     statistics.capacity += atlas->capacity();
     statistics.resident += atlas->resident();
     statistics.pinned += atlas->pinned();
-    statistics.gpuBytes += std::uint64_t(atlas->capacity()) * kPageBytes;
+    statistics.gpuBytes += std::uint64_t(atlas->capacity()) * paging::slotBytes(format);
   }
   statistics.wanted = wanted;
   statistics.loading = int(loader->outstanding());

@@ -59,9 +59,9 @@ class ProjectedRasterLayer : public Layer, public TexelledLayer, public Projecte
   // defined there) and SurfacePoint p, giving the filtered texel: value x coverage and coverage (.rgb and .a
   // for colour kinds, .r and .g for the others), which <prefix>_value(vec4) turns into what the sampling
   // function returns. <prefix>_texel(at, p) gives the point's level-0 texel as a TexelAddress
-  // (strata/texel_address.glsl), exact near the reference however wide the raster. `filtered` may write the
-  // filtered texel's derivatives per level-0 texel into TexelGradient gradient; where it does, `sloped` adds
-  // for one-channel kinds vec4 <prefix>_sloped(SurfacePoint p), the value with its slopes (SlopedLayer).
+  // (strata/texel_address.glsl), exact near the reference however wide the raster. Where `filtered` gives the
+  // value's slopes per level-0 texel in .b and .a (a value page's), `sloped` adds for one-channel kinds
+  // vec4 <prefix>_sloped(SurfacePoint p), the value with its slopes along the ground (SlopedLayer).
   std::string samplingGlsl(const std::string& declarations, const std::string& filtered, bool sloped = false) const;
   // Sets the uniforms samplingGlsl() declares.
   void bindSampling(ShaderProgram& program) const;
