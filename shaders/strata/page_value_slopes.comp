@@ -1,10 +1,11 @@
 #version 450 core
 // The value's slopes of one page of a one-channel layer, in its atlas slot, right after its upload: each texel
 // of value x coverage (.r) and coverage (.g) gets the central differences of the value (r / g) along slot x and
-// y, times its coverage as the value is, in .b and .a, so that a filtered sample carries its gradient in the texels it reads (strata/paged_texture.glsl;
-// SlopedLayer): its four texels' differences mixed bilinearly vary continuously across the cell, where the
-// bilinear patch's own gradient jumps at every texel edge. One-sided where one neighbour has no data or lies
-// beyond the slot (its edge, within half a texel of the page's seam), 0 where neither has.
+// y, times its coverage as the value is, in .b and .a, so that a filtered sample carries its gradient in the
+// texels it reads (strata/paged_texture.glsl; SlopedLayer): its four texels' differences mixed bilinearly vary
+// continuously across the cell, where the bilinear patch's own gradient jumps at every texel edge. One-sided
+// where one neighbour has no data or lies beyond the slot (its edge, within half a texel of the page's seam), 0
+// where neither has.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 // The upload wrote .r and .g (and 0 and 1 in .b and .a); this pass reads the neighbours' .r and .g, which it

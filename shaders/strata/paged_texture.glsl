@@ -51,8 +51,8 @@ void pageRange(ivec2 levelSize, int face, out ivec2 low, out ivec2 high) {
 // fragment stage), its 8-bit weights finer than colour shows; else by hand with texel fetches, as heights and
 // values need: their differences shade relief, and llvmpipe gave one vertex different filtered values in
 // different invocations (see surface_point.glsl). A value page's texels hold the value's slopes per slot texel
-// times coverage in .b and .a (page_value_slopes.comp), which filter with it: the four texels' central differences mixed
-// bilinearly, continuous across cells.
+// times coverage in .b and .a (page_value_slopes.comp), which filter with it: the four texels' central
+// differences mixed bilinearly, continuous across cells.
 vec4 slotBilinear(sampler2DArray atlas, vec2 position, int slot, bool bySampler) {
 #ifndef STRATA_GEOMETRY_STAGE
   if (bySampler) return textureLod(atlas, vec3((position + 0.5) / float(kPagePayload + 2), float(slot)), 0.0);
@@ -65,8 +65,9 @@ vec4 slotBilinear(sampler2DArray atlas, vec2 position, int slot, bool bySampler)
 }
 
 // The value at level-0 texel `address` on pyramid level `level`, filtered bilinearly within one slot
-// (slotBilinear); a value page's slopes in .b and .a per level-0 texel (`bySampler` false: value pages). Where the page is not loaded, the coarser page its index entry references is sampled instead;
-// where nothing is, vec4(0). `face`: as pageRange.
+// (slotBilinear); a value page's slopes in .b and .a per level-0 texel (`bySampler` false: value pages). Where
+// the page is not loaded, the coarser page its index entry references is sampled instead; where nothing is,
+// vec4(0). `face`: as pageRange.
 vec4 samplePagedLevel(sampler2DArray atlas, bool bySampler, uint indexBase, ivec2 size, int level, TexelAddress address,
                       int face) {
   ivec2 levelSize = pagedLevelSize(size, level), low, high;

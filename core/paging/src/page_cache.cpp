@@ -275,8 +275,7 @@ void PageCache::Impl::uploadFinished(std::uint64_t frame, std::size_t count, boo
 
 // Puts a read page into a slot of its atlas, evicting the least recently used page if need be, converts
 // it to scene-linear there where its source encodes colour otherwise, or gives a value page its slopes, and
-// points the index at it. When
-// every slot serves this frame the page is dropped; it is asked for again.
+// points the index at it. When every slot serves this frame the page is dropped; it is asked for again.
 void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool pinned) {
   AttachedLayer& layer = layers[std::size_t(loaded.page.layer)];
   paging::PageAtlas& atlas = *atlases.at(layer.source->format());

@@ -2,11 +2,12 @@
 
 #include <strata/gl/shader_library.hpp>
 
+#include "slot_pass.hpp"
+
 namespace strata::paging {
 namespace {
 
 constexpr const char* kFunction = "strata_toSceneLinear";
-constexpr int kGroupSide = 16;  // the shader's local size
 
 }  // namespace
 
@@ -23,15 +24,7 @@ std::optional<int> SceneLinearPages::add(const PageSource& source) {
 }
 
 void SceneLinearPages::convert(int conversion, GLuint atlas, int slot) const {
-  const ShaderProgram& program = programs_[std::size_t(conversion)];
-  program.use();
-  program.set("slot", slot);
-  glBindImageTexture(0, atlas, 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA16F);
-  const GLuint groups = (kPageSide + kGroupSide - 1) / kGroupSide;
-  glDispatchCompute(groups, groups, 1);
-  // The converted texels are sampled next, and the slot may be uploaded to again.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA16F);
+  runOverSlot(programs_[std::size_t(conversion)], atlas, GL_RGBA16F, slot);
 }
 
 }  // namespace strata::paging
