@@ -67,15 +67,14 @@ vec4 slotBilinear(sampler2DArray atlas, vec2 position, int slot, bool bySampler)
 // The value at level-0 texel `address` on pyramid level `level`, filtered bilinearly within one slot
 // (slotBilinear); a value page's slopes in .b and .a per level-0 texel (`bySampler` false: value pages). Where
 // the page is not loaded, the coarser page its index entry references is sampled instead; where nothing is,
-// vec4(0). `face`: as pageRange.
-vec4 samplePagedLevel(sampler2DArray atlas, bool bySampler, uint indexBase, ivec2 size, int level, TexelAddress address,
-                      int face) {
+// vec4(0). `levelStart`: where the level's entries start in the index. `face`: as pageRange.
+vec4 samplePagedLevel(sampler2DArray atlas, bool bySampler, uint levelStart, ivec2 size, int level,
+                      TexelAddress address, int face) {
   ivec2 levelSize = pagedLevelSize(size, level), low, high;
   pageRange(levelSize, face, low, high);
   vec2 part;
   ivec2 page = pageAt(levelTexel(address, level, part), low, high);
-  uint entry = pageIndexEntry(pageIndexEntry(indexBase + uint(level)) +
-                              uint(page.y * ((levelSize.x + kPagePayload - 1) / kPagePayload) + page.x));
+  uint entry = pageIndexEntry(levelStart + uint(page.y * ((levelSize.x + kPagePayload - 1) / kPagePayload) + page.x));
   if (entry == 0u) return vec4(0.0);
   int held = int((entry >> 16) & 31u);
   ivec2 whole = levelTexel(address, held, part);
@@ -89,16 +88,31 @@ vec4 samplePagedLevel(sampler2DArray atlas, bool bySampler, uint indexBase, ivec
   return texel;
 }
 
-// Trilinear sampling across levels ([Kooima 2008, §4.3.2]: "a shader implementation of trilinear
-// mipmapping") at level-0 texel `address`, the level chosen from the footprint: level-0 texels to the next
-// sample. `face`: as pageRange.
-vec4 samplePagedTexels(sampler2DArray atlas, bool bySampler, uint indexBase, int levels, ivec2 size,
-                       TexelAddress address, float footprint, int face) {
+// The levels a footprint `footprint` level-0 texels wide samples ([Kooima 2008, §4.3.2]: "a shader implementation
+// of trilinear mipmapping"): the finer, the coarser's weight (0: the finer alone), and where each starts in the
+// index, read once for every tap of an anisotropic footprint.
+struct PagedLevels {
+  int level;
+  float coarser;
+  uint fineStart;
+  uint coarseStart;
+};
+
+PagedLevels pagedLevels(uint indexBase, int levels, float footprint) {
   float lod = clamp(log2(footprint), 0.0, float(levels - 1));
   int level = int(floor(lod));
-  vec4 fine = samplePagedLevel(atlas, bySampler, indexBase, size, level, address, face);
-  if (level + 1 >= levels || fract(lod) == 0.0) return fine;
-  return mix(fine, samplePagedLevel(atlas, bySampler, indexBase, size, level + 1, address, face), fract(lod));
+  float coarser = level + 1 < levels ? fract(lod) : 0.0;
+  return PagedLevels(level, coarser, pageIndexEntry(indexBase + uint(level)),
+                     coarser > 0.0 ? pageIndexEntry(indexBase + uint(level + 1)) : 0u);
+}
+
+// Trilinear sampling across `levels` at level-0 texel `address`. `face`: as pageRange.
+vec4 samplePagedTexels(sampler2DArray atlas, bool bySampler, PagedLevels levels, ivec2 size, TexelAddress address,
+                       int face) {
+  vec4 fine = samplePagedLevel(atlas, bySampler, levels.fineStart, size, levels.level, address, face);
+  if (levels.coarser == 0.0) return fine;
+  return mix(fine, samplePagedLevel(atlas, bySampler, levels.coarseStart, size, levels.level + 1, address, face),
+             levels.coarser);
 }
 
 // `address` taken into the one period [0, width) of a raster around the body.
@@ -128,6 +142,7 @@ TexelAddress clampedToFace(TexelAddress address, int face, int side) {
 vec4 samplePagedAnisotropic(sampler2DArray atlas, bool bySampler, uint indexBase, int levels, ivec2 size,
                             TexelAddress address, vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
   AnisotropicTaps taps = anisotropicTaps(stepX, stepY);
+  PagedLevels sampled = pagedLevels(indexBase, levels, taps.width);  // every tap is as wide
   int face = faceSide > 0 ? (address.whole.x + int(floor(address.part.x))) / faceSide : -1;
   vec4 sum = vec4(0.0);
   int tap = 0;
@@ -136,7 +151,7 @@ vec4 samplePagedAnisotropic(sampler2DArray atlas, bool bySampler, uint indexBase
     at.part += tapOffset(taps, tap);
     if (repeatX) at = wrappedAround(at, size.x);
     if (face >= 0) at = clampedToFace(at, face, faceSide);
-    sum += samplePagedTexels(atlas, bySampler, indexBase, levels, size, at, taps.width, face);
+    sum += samplePagedTexels(atlas, bySampler, sampled, size, at, face);
   } while (++tap < taps.count);
   return sum / float(taps.count);
 }
@@ -149,9 +164,9 @@ vec4 samplePaged(sampler2DArray atlas, bool bySampler, uint indexBase, int level
                  vec2 stepX, vec2 stepY, bool repeatX, int faceSide) {
   vec2 texels = vec2(size);
 #ifdef STRATA_GEOMETRY_STAGE
-  return samplePagedTexels(atlas, bySampler, indexBase, levels, size,
-                           repeatX ? wrappedAround(address, size.x) : address,
-                           max(length(stepX * texels), length(stepY * texels)), -1);
+  return samplePagedTexels(atlas, bySampler,
+                           pagedLevels(indexBase, levels, max(length(stepX * texels), length(stepY * texels))), size,
+                           repeatX ? wrappedAround(address, size.x) : address, -1);
 #else
   return samplePagedAnisotropic(atlas, bySampler, indexBase, levels, size, address, stepX * texels, stepY * texels,
                                 repeatX, faceSide);

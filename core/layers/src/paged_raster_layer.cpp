@@ -62,8 +62,8 @@ std::string PagedRasterLayer::faceSamplingGlsl() const {
          "  vec2 texel = vec2((point.x + point.y) * nside, (1.0 - point.z) * nside);\n"
          "  return " +
          p + "_value(samplePagedTexels(" + pageAtlasSampler(placement_.format) + ", " + bySamplerOf(placement_.format) +
-         ", " + p + "_indexBase, " + p + "_levels, " + p +
-         "_size, texelAddressOf(texel), footprint * nside, int(point.x)));\n"
+         ", pagedLevels(" + p + "_indexBase, " + p + "_levels, footprint * nside), " + p +
+         "_size, texelAddressOf(texel), int(point.x)));\n"
          "}\n";
 }
 
