@@ -7,9 +7,9 @@
 #include <functional>
 #include <vector>
 
+#include "block_counting.hpp"
 #include "quiet_gdal_errors.hpp"
 #include "stored_block_ranges.hpp"
-#include "texel_bends.hpp"
 
 namespace strata::gdal {
 namespace {
@@ -108,9 +108,11 @@ std::shared_ptr<BlockRanges> blockRangesOf(GDALDataset& dataset) {
   const int width = dataset.GetRasterXSize(), height = dataset.GetRasterYSize();
   auto blocks = std::make_shared<BlockRanges>(width, height, BlockRanges::blockTexelsFor(width, height));
   const QuietGdalErrors quiet;  // as exactRawRange()
-  visitDrawnTexels(*dataset.GetRasterBand(1),
-                   [&](int column, int row, double value) { blocks->count(column, row, value); });
-  countTexelBends(*dataset.GetRasterBand(1), *blocks);
+  GDALRasterBand& band = *dataset.GetRasterBand(1);
+  countBlocks(band, *blocks, [&](int first, int count) {
+    visitWindow(band, 0, first, width, count,
+                [&](int column, int row, double value) { blocks->count(column, row, value); });
+  });
   return blocks;
 }
 

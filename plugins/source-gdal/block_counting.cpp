@@ -1,4 +1,4 @@
-#include "texel_bends.hpp"
+#include "block_counting.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -30,19 +30,31 @@ bool readRows(GDALRasterBand& band, int first, int count, std::vector<std::vecto
   return true;
 }
 
+// Row `row`'s texels that can be drawn (those not NaN in `line`).
+void countRow(BlockRanges& blocks, int row, const std::vector<double>& line) {
+  for (std::size_t x = 0; x < line.size(); ++x)
+    if (!std::isnan(line[x])) blocks.count(int(x), row, line[x]);
+}
+
 }  // namespace
 
-void countTexelBends(GDALRasterBand& band, BlockRanges& blocks) {
+void countBlocks(GDALRasterBand& band, BlockRanges& blocks, const UnreadableRows& unreadable) {
   const int height = band.GetYSize();
-  for (int row = 1; row + 1 < height; row += kRowsAtATime) {
-    const int last = std::min(row + kRowsAtATime, height - 1);  // the band's rows [row, last), their neighbours too
+  bool bending = true;  // every band so far read whole
+  for (int row = 0; row < height; row += kRowsAtATime) {
+    const int last = std::min(row + kRowsAtATime, height);
+    const int above = std::max(row - 1, 0), below = std::min(last + 1, height);  // read with its neighbours
     std::vector<std::vector<double>> rows;
-    if (!readRows(band, row - 1, last - row + 2, rows)) {
-      blocks.forgetBends();
-      return;
+    if (!readRows(band, above, below - above, rows)) {
+      unreadable(row, last - row);
+      if (bending) blocks.forgetBends();
+      bending = false;
+      continue;
     }
-    for (int y = row; y < last; ++y)
-      blocks.countBends(y, rows[std::size_t(y - row)], rows[std::size_t(y - row + 1)], rows[std::size_t(y - row + 2)]);
+    for (int y = row; y < last; ++y) countRow(blocks, y, rows[std::size_t(y - above)]);
+    for (int y = std::max(row, 1); bending && y < std::min(last, height - 1); ++y)
+      blocks.countBends(y, rows[std::size_t(y - 1 - above)], rows[std::size_t(y - above)],
+                        rows[std::size_t(y + 1 - above)]);
   }
 }
 
