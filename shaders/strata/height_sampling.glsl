@@ -1,21 +1,24 @@
 // Heights for the geometry generators' compute passes (geometry.icosahedral, geometry.pgm): the height layer
 // sampled at a point given from the reference, and the displaced surface's shading normal. The including
 // program defines STRATA_GEOMETRY_STAGE and STRATA_HEIGHT_FUNCTION (and STRATA_HEIGHT_FACE_FUNCTION where the
-// layer's texels are HEALPix faces), pastes the layer's GLSL before this
+// layer's texels are HEALPix faces, STRATA_HEIGHT_SLOPED_FUNCTION where it gives its slopes), pastes the layer's GLSL before this
 // file (strata/plugin/height_input.hpp gives both) and declares the uniforms
 //   vec2 referenceLonlat  rad: the point below the eye (View::reference)
 //   float radius          m: the body's, to turn height differences into slopes
 
-// The height at `fromReference` (rad from the point below the eye), sampled over a footprint of one
-// vertex spacing along the ground each way: east, that is spacing / cos(latitude) of longitude. The footprint
-// is the geometry's explicit stand-in for screen derivatives ([Kooima 2008, §4.1.2]), so a longitude/latitude
-// map's texels near a pole show as the slivers they are to composite.projection_quality's isotropy weight,
-// and each layer filters over the ground a vertex spans.
-float heightAt(vec2 fromReference, vec3 normal, float spacing) {
+// The surface point at `fromReference` (rad from the point below the eye) with a footprint of one vertex spacing
+// along the ground each way: east, that is spacing / cos(latitude) of longitude. The footprint is the geometry's
+// explicit stand-in for screen derivatives ([Kooima 2008, §4.1.2]), so a longitude/latitude map's texels near a
+// pole show as the slivers they are to composite.projection_quality's isotropy weight, and each layer filters
+// over the ground a vertex spans.
+SurfacePoint vertexPoint(vec2 fromReference, vec3 normal, float spacing) {
   float east = spacing / max(cos(referenceLonlat.y + fromReference.y), 1e-4);
-  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(east, 0.0), vec2(0.0, spacing),
-                                fromReference);
-  vec4 sampled = STRATA_HEIGHT_FUNCTION(p);
+  return SurfacePoint(referenceLonlat + fromReference, normal, vec2(east, 0.0), vec2(0.0, spacing), fromReference);
+}
+
+// The height at `fromReference`, filtered over vertexPoint's footprint.
+float heightAt(vec2 fromReference, vec3 normal, float spacing) {
+  vec4 sampled = STRATA_HEIGHT_FUNCTION(vertexPoint(fromReference, normal, spacing));
   return sampled.a > 0.0 ? sampled.r : 0.0;  // no height data: the sphere
 }
 
@@ -41,10 +44,7 @@ vec3 normalOfSlopes(float h, vec2 lonlat, vec3 normal, vec2 slopes) {
 // The height and its slopes (per rad along the ground) at `fromReference`, filtered as heightAt filters: one sample
 // of a layer that gives its slopes with its value (SlopedLayer), its slopes over the vertex spacing's level.
 vec4 slopedHeightAt(vec2 fromReference, vec3 normal, float spacing) {
-  float east = spacing / max(cos(referenceLonlat.y + fromReference.y), 1e-4);
-  SurfacePoint p = SurfacePoint(referenceLonlat + fromReference, normal, vec2(east, 0.0), vec2(0.0, spacing),
-                                fromReference);
-  vec4 sampled = STRATA_HEIGHT_SLOPED_FUNCTION(p);
+  vec4 sampled = STRATA_HEIGHT_SLOPED_FUNCTION(vertexPoint(fromReference, normal, spacing));
   return sampled.a > 0.0 ? sampled : vec4(0.0);  // no height data: the sphere
 }
 #endif
