@@ -16,14 +16,16 @@ struct AnisotropicTaps {
 
 // The taps over the footprint whose steps to the next sample are `stepX` and `stepY` (texels), whose ellipse gives
 // the axes: the major the longer step, the minor the ellipse's area over it (two long steps nearly alike make a
-// long, narrow footprint).
+// long, narrow footprint), but at least a texel: no tap filters finer than the finest level's texels, so taps
+// closer together than one sample the same texels. A magnified footprint (the view close to a raster, however
+// tilted) takes one tap, a bilinear sample, as hardware filtering does.
 AnisotropicTaps anisotropicTaps(vec2 stepX, vec2 stepY) {
   vec2 major = dot(stepX, stepX) > dot(stepY, stepY) ? stepX : stepY;
   float majorLength = length(major);
-  float minorLength = abs(stepX.x * stepY.y - stepX.y * stepY.x) / max(majorLength, 1e-30);
+  float minorLength = max(abs(stepX.x * stepY.y - stepX.y * stepY.x) / max(majorLength, 1e-30), 1.0);
   // Rounded: a footprint up to half again as long as wide takes one tap (trilinear at its major axis, as
   // hardware filtering does), so that a mildly stretched map or a slightly tilted view costs no more.
-  int count = int(clamp(round(majorLength / max(minorLength, 1e-30)), 1.0, float(kAnisotropicTaps)));
+  int count = int(clamp(round(majorLength / minorLength), 1.0, float(kAnisotropicTaps)));
   return AnisotropicTaps(major, count, max(minorLength, majorLength / float(count)));
 }
 

@@ -106,21 +106,32 @@ PagedLevels pagedLevels(uint indexBase, int levels, float footprint) {
                      coarser > 0.0 ? pageIndexEntry(indexBase + uint(level + 1)) : 0u);
 }
 
-// Trilinear sampling across `levels` at level-0 texel `address`. `face`: as pageRange.
+// Trilinear sampling across `levels` at level-0 texel `address`: the finer level, then the coarser where it
+// weighs. A do-while rather than a branch: llvmpipe runs both sides of a branch, masked, whatever the lanes
+// take, but leaves a loop as soon as no lane goes on, so a magnified footprint samples one level. `face`: as
+// pageRange.
 vec4 samplePagedTexels(sampler2DArray atlas, bool bySampler, PagedLevels levels, ivec2 size, TexelAddress address,
                        int face) {
-  vec4 fine = samplePagedLevel(atlas, bySampler, levels.fineStart, size, levels.level, address, face);
-  if (levels.coarser == 0.0) return fine;
-  return mix(fine, samplePagedLevel(atlas, bySampler, levels.coarseStart, size, levels.level + 1, address, face),
-             levels.coarser);
+  int last = levels.level + (levels.coarser > 0.0 ? 1 : 0);
+  vec4 sum = vec4(0.0);
+  int level = levels.level;
+  do {
+    bool finer = level == levels.level;
+    uint start = finer ? levels.fineStart : levels.coarseStart;
+    sum += (finer ? 1.0 - levels.coarser : levels.coarser) *
+           samplePagedLevel(atlas, bySampler, start, size, level, address, face);
+  } while (++level <= last);
+  return sum;
 }
 
 // `address` taken into the one period [0, width) of a raster around the body.
 TexelAddress wrappedAround(TexelAddress address, int width) {
   float carried = floor(address.part.x);
   int x = address.whole.x + int(carried);
-  if (x < 0) x += width * ((width - 1 - x) / width);  // % is defined for operands >= 0 only
-  address.whole.x = x % width;
+  // The periods to take away by a float quotient, which llvmpipe divides for every lane at once where it divides
+  // integers one lane at a time; then one period more or less where the quotient rounded across a whole one.
+  x -= width * int(floor(float(x) / float(width)));
+  address.whole.x = x < 0 ? x + width : (x >= width ? x - width : x);
   address.part.x -= carried;
   return address;
 }
