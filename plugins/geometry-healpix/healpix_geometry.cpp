@@ -109,7 +109,7 @@ class HealpixGeometry : public Node, public SurfaceGeometry {
   std::optional<NodeBuffers> buffers_;
   std::optional<GpuTimer> rasterisationTimer_;
   double visibilityMs_ = 0.0;
-  SurfaceBuffer gbuffer_;
+  SurfaceBuffer gbuffer_{heights_.shadingNormal()};
 };
 
 // The height layer's bounds over each node, where it knows them: a HEALPix pyramid's pages' true ranges, or

@@ -142,7 +142,7 @@ class IcosahedralGeometry : public Node, public SurfaceGeometry {
   std::optional<GpuTimer> subdivisionTimer_;
   std::optional<GpuTimer> rasterisationTimer_;
   double visibilityMs_ = 0.0;
-  SurfaceBuffer gbuffer_;
+  SurfaceBuffer gbuffer_{heights_.shadingNormal()};
 };
 
 // The patches' shells take the heights the layer holds, each patch its own where the layer knows them.

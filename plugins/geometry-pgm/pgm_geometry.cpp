@@ -156,7 +156,7 @@ class PgmGeometry : public Node, public SurfaceGeometry {
   double visibilityMs_ = 0.0;
   // The deferred texturing buffer plus color(1): each pixel's height, for visibleRadius_ (infinite where
   // nothing was drawn: visible_radius.hpp).
-  SurfaceBuffer gbuffer_{{{GL_R32F, {std::numeric_limits<float>::infinity(), 0, 0, 0}}}};
+  SurfaceBuffer gbuffer_{heights_.shadingNormal(), {{GL_R32F, {std::numeric_limits<float>::infinity(), 0, 0, 0}}}};
 };
 
 void PgmGeometry::render(const FrameState& frame) {

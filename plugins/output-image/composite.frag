@@ -25,8 +25,12 @@ uniform vec3 emptyColour;     // surface where no layer has data (linear)
 uniform vec3 background;      // where there is no body (linear)
 uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred buffer's lonlat is measured
 uniform vec4 referenceTrig;   // its longitude's and latitude's sines and cosines (sphereNormalFromReference)
+uniform ivec2 frameSize;      // pixels, of the frame and the deferred buffers
 
 out vec4 colour;
+
+// Whether `pixel` lies in the frame: what a fetch beyond it returns is no surface sample.
+bool inFrame(ivec2 pixel) { return all(greaterThanEqual(pixel, ivec2(0))) && all(lessThan(pixel, frameSize)); }
 
 // The change of longitude and latitude to the next pixel along `step`, computed from the deferred
 // coordinates ([Kooima 2008, §3.4.3]) rather than by the dFdx of §4.1.2: the 2 pi jump where patches unwrap
@@ -37,8 +41,8 @@ vec2 footprint(DeferredBuffer surfaces, ivec2 pixel, int s, ivec2 step, vec2 her
   vec2 ahead = next.xy - here, behind = here - previous.xy;
   ahead.x -= TWO_PI * round(ahead.x / TWO_PI);
   behind.x -= TWO_PI * round(behind.x / TWO_PI);
-  if (!onSurface(next)) return behind;
-  if (!onSurface(previous)) return ahead;
+  if (!onSurface(next) || !inFrame(pixel + step)) return behind;
+  if (!onSurface(previous) || !inFrame(pixel - step)) return ahead;
   return dot(ahead, ahead) < dot(behind, behind) ? ahead : behind;
 }
 
@@ -72,7 +76,7 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   STRATA_SURFACE_LAYERS_ACCUMULATE
   vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
   float depth = texelFetch(depthBuffer, pixel, s).r;
-  return clamp(translucentOver(pixel, s, albedo * lightOn(shadingNormalOf(here)), depth), 0.0, 1.0);
+  return clamp(translucentOver(pixel, s, albedo * lightOn(shadingNormalOf(here, p.normal)), depth), 0.0, 1.0);
 }
 
 // Samples of one surface lie within a pixel's footprint of each other: each holds its triangle's values at

@@ -151,6 +151,7 @@ class ImageOutput : public Node, public FrameOutput {
     program_.set("background", kBackground);
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
     program_.set("referenceTrig", sinesAndCosines(frame.view.reference));
+    program_.set("frameSize", glm::ivec2(frame.view.width, frame.view.height));
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());

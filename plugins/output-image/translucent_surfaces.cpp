@@ -50,10 +50,13 @@ std::string TranslucentSurfaces::colourOf(std::size_t i) const {
          "  vec4 here = texelFetch(translucentSurface" +
          n +
          ", pixel, s);\n"
+         "  SurfacePoint p = surfacePointAt(translucentSurface" +
+         n +
+         ", pixel, s, here);\n"
          "  vec4 v = " +
-         layers_[i]->samplingFunction() + "(surfacePointAt(translucentSurface" + n +
-         ", pixel, s, here));\n"
-         "  return vec4(v.rgb * lightOn(shadingNormalOf(here)), v.a);\n"
+         layers_[i]->samplingFunction() +
+         "(p);\n"
+         "  return vec4(v.rgb * lightOn(shadingNormalOf(here, p.normal)), v.a);\n"
          "}\n";
 }
 

@@ -1,7 +1,10 @@
 // The deferred texturing buffer's one colour attachment (strata/gl/surface_buffer.hpp), written and read
-// through these functions alone: longitude and latitude from View::reference (rad) in .xy, the shading
-// normal's octahedral encoding plus 2 in .zw ([Cigolle et al. 2014], its "oct" form), so that .z lies in
-// [1, 3] on the body and the buffer's clear value, 0, says that no surface is there.
+// through these functions alone: longitude and latitude from View::reference (rad) in .xy, kNoSurface's
+// longitude where no surface is; where the buffer stores the shading normal (RGBA32F), its octahedral encoding
+// plus 2 in .zw ([Cigolle et al. 2014], its "oct" form), so that .z lies in [1, 3]; where the normal is the
+// sphere's (RG32F), .zw reads (0, 1).
+
+const float kNoSurface = -1.0e30;  // SurfaceBuffer::kNoSurface
 
 vec2 signNotZero(vec2 v) { return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
 
@@ -22,9 +25,13 @@ vec4 surfaceSample(vec2 lonlatFromReference, vec3 shadingNormal) {
   return vec4(lonlatFromReference, octahedralOf(normalize(shadingNormal)) + 2.0);
 }
 
-bool onSurface(vec4 surfaceSample) { return surfaceSample.z != 0.0; }
+bool onSurface(vec4 surfaceSample) { return surfaceSample.x > 0.5 * kNoSurface; }
 
-vec3 shadingNormalOf(vec4 surfaceSample) { return unitVectorOfOctahedral(surfaceSample.zw - 2.0); }
+// The shading normal of a sample on the surface whose sphere's normal there is `sphereNormal`: the one stored,
+// or the sphere's where the buffer stores none.
+vec3 shadingNormalOf(vec4 surfaceSample, vec3 sphereNormal) {
+  return surfaceSample.z != 0.0 ? unitVectorOfOctahedral(surfaceSample.zw - 2.0) : sphereNormal;
+}
 
 // The sphere's planet-fixed unit normal at longitude/latitude offset `d` from the reference, whose longitude's
 // and latitude's sines and cosines `referenceTrig` holds (sin lon, cos lon, sin lat, cos lat), by the

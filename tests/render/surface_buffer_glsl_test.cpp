@@ -1,6 +1,6 @@
 // shaders/strata/surface_buffer.glsl run on the headless context: the shading normal's octahedral encoding
-// read back, what says a sample is on the body, and the sphere's normal from offsets to the reference,
-// against double.
+// read back, or the sphere's where the buffer stores none, what says a sample is on the body, and the sphere's
+// normal from offsets to the reference, against double.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +14,7 @@
 #include <strata/gl.hpp>
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
+#include <strata/gl/surface_buffer.hpp>
 
 #include "compute_each.hpp"
 #include "rendering.hpp"
@@ -33,12 +34,17 @@ layout(std430, binding = 0) readonly buffer Arguments { Argument arguments[]; };
 layout(std430, binding = 1) writeonly buffer Results { Result results[]; };
 uniform uint count;
 uniform vec4 referenceTrig;
+uniform float noSurface;  // SurfaceBuffer::kNoSurface
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= count) return;
   vec4 written = surfaceSample(arguments[i].offset.xy, arguments[i].normal.xyz);
-  results[i].normal = vec4(shadingNormalOf(written), onSurface(written) && !onSurface(vec4(0.0)) ? 1.0 : 0.0);
-  results[i].sphereNormal = vec4(sphereNormalFromReference(arguments[i].offset.xy, referenceTrig), 0.0);
+  vec3 sphere = sphereNormalFromReference(arguments[i].offset.xy, referenceTrig);
+  bool cleared = onSurface(vec4(noSurface, 0.0, 0.0, 0.0)) || onSurface(vec4(noSurface, 0.0, 0.0, 1.0));
+  results[i].normal = vec4(shadingNormalOf(written, vec3(0.0)), onSurface(written) && !cleared ? 1.0 : 0.0);
+  vec4 withoutNormal = vec4(written.xy, 0.0, 1.0);  // as an RG32F buffer reads
+  bool sphereRead = onSurface(withoutNormal) && shadingNormalOf(withoutNormal, sphere) == sphere;
+  results[i].sphereNormal = vec4(sphere, sphereRead && kNoSurface == noSurface ? 1.0 : 0.0);
 }
 )";
 
@@ -55,6 +61,7 @@ std::vector<Result> evaluate(const std::vector<Argument>& arguments, glm::dvec2 
   const ShaderProgram program(
       {{GL_COMPUTE_SHADER, "surface_buffer_test.comp", library.expandText(kShader, "surface_buffer_test.comp")}});
   program.set("referenceTrig", sinesAndCosines(reference));
+  program.set("noSurface", SurfaceBuffer::kNoSurface);
   return computeEach<Result>(program, arguments);
 }
 
@@ -90,7 +97,7 @@ constexpr double kNormalAngle = 1e-6;
 // at worst (lon 137.4, lat -4.6).
 constexpr double kSphereNormal = 3e-7;
 
-TEST(SurfaceBufferGlsl, ShadingNormalsReadBackAndEverySampleIsOnTheBody) {
+TEST(SurfaceBufferGlsl, ShadingNormalsReadBackOrAreTheSpheresAndEverySampleIsOnTheBody) {
   const std::vector<Argument> input = arguments();
   const std::vector<Result> output = evaluate(input, glm::dvec2(0.0));
   for (std::size_t i = 0; i < input.size(); ++i) {
@@ -98,6 +105,7 @@ TEST(SurfaceBufferGlsl, ShadingNormalsReadBackAndEverySampleIsOnTheBody) {
     const double angle = std::atan2(glm::length(glm::cross(n, back)), glm::dot(n, back));
     EXPECT_LE(angle, kNormalAngle) << n.x << "," << n.y << "," << n.z;
     EXPECT_EQ(output[i].normal.w, 1.0f) << "on the body, and the clear value off it";
+    EXPECT_EQ(output[i].sphereNormal.w, 1.0f) << "a buffer without normals gives the sphere's, on the body";
   }
 }
 

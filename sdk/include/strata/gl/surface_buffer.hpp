@@ -8,19 +8,25 @@
 STRATA_EXPORTS_BEGIN
 namespace strata {
 
+// What a geometry's deferred buffer holds of the shading normal: nothing where it is the sphere's (the bare body,
+// whose readers compute it from the longitude and latitude), or the displaced surface's own.
+enum class ShadingNormal { OfTheSphere, Stored };
+
 // The deferred texturing buffer every geometry generator rasterises into ([Kooima 2008, §3.4.2]) and every
 // per-pixel compositor and output reads: the contract between them, written once. Attachments:
-//   color(0) RGBA32F: longitude, latitude measured from View::reference (rad, longitude not wrapped), so
-//                     that float resolves them finely near the eye; the shading normal (planet-fixed, of the
-//                     displaced surface), octahedrally encoded; all zero where nothing was drawn
+//   color(0) longitude, latitude measured from View::reference (rad, longitude not wrapped), so that float
+//            resolves them finely near the eye; kNoSurface's longitude where nothing was drawn. With
+//            ShadingNormal::Stored RGBA32F, the shading normal (planet-fixed, of the displaced surface)
+//            octahedrally encoded in .zw; with ShadingNormal::OfTheSphere RG32F, which reads as .zw = (0, 1)
 //   depth    DEPTH32F: reversed depth (1 at the near plane), 0 where nothing was drawn
 // then any attachments of the generator's own (`extra`, from color(1)), which readers of the buffer ignore.
 // Shaders write and read color(0) through "strata/surface_buffer.glsl" alone ("strata/surface_buffer.frag"
-// writes it); the sphere's normal is not stored, since readers compute it from the longitude and latitude.
-// One attachment of 16 bytes a sample: llvmpipe's geometry pass with 4x multisampling took a quarter less
-// time than with a second attachment for the shading normal. With more than one sample per pixel
-// (multisample antialiasing, SurfaceGeometry::samples) every attachment is multisampled: a fragment's values,
-// interpolated at the pixel's centre, go to each sample it covers, and depth is tested per sample.
+// writes it): shadingNormalOf gives the stored normal or the sphere's, so readers need not know which. One
+// attachment of 16 bytes a sample at most: llvmpipe's geometry pass with 4x multisampling took a quarter less
+// time than with a second attachment for the shading normal, and the bare body's 8 bytes a sample a quarter less
+// again (the peer benchmark's views, docs/benchmarks.md). With more than one sample per pixel (multisample
+// antialiasing, SurfaceGeometry::samples) every attachment is multisampled: a fragment's values, interpolated at
+// the pixel's centre, go to each sample it covers, and depth is tested per sample.
 class SurfaceBuffer {
  public:
   // An attachment of a generator's own after the shared ones, and the value that clears it.
@@ -29,7 +35,11 @@ class SurfaceBuffer {
     std::array<float, 4> clear;
   };
 
-  explicit SurfaceBuffer(std::vector<Attachment> extra = {});
+  // The longitude color(0) holds where no surface was drawn: far below any a surface has, and finite, so that
+  // differences to it stay numbers (strata/surface_buffer.glsl's kNoSurface).
+  static constexpr float kNoSurface = -1.0e30f;
+
+  explicit SurfaceBuffer(ShadingNormal normal, std::vector<Attachment> extra = {});
 
   // Before drawing a frame of width x height, `samples` per pixel: (re)makes the attachments when the size
   // or the samples changed, binds the buffer with its viewport and clears it: no surface anywhere, depth at
@@ -38,6 +48,7 @@ class SurfaceBuffer {
   const Framebuffer& framebuffer() const { return framebuffer_; }
 
  private:
+  ShadingNormal normal_;
   std::vector<Attachment> extra_;
   Framebuffer framebuffer_;
 };

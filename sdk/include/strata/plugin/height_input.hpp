@@ -7,6 +7,7 @@
 
 #include <strata/body.hpp>
 #include <strata/error.hpp>
+#include <strata/gl/surface_buffer.hpp>
 #include <strata/plugin/layer.hpp>
 #include <strata/plugin/parameter.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
@@ -48,6 +49,9 @@ class HeightInput {
   explicit HeightInput(const NodeSetup& setup);
 
   Layer* layer() const { return layer_; }
+  // What the generator's deferred buffer holds of the shading normal: the displaced surface's own where there are
+  // heights, none on the bare sphere (strata/gl/surface_buffer.hpp).
+  ShadingNormal shadingNormal() const { return layer_ ? ShadingNormal::Stored : ShadingNormal::OfTheSphere; }
 
   // In the generator's open(), once the height layer has opened: settles the heights culling and reference
   // spheres trust. Without a height layer, the bare sphere: {0, 0}. With one, `lowest` and `highest` where
