@@ -31,18 +31,10 @@ const SourceLocation kWhere{"colour test"};
 std::vector<std::array<float, 2>> evaluate(const std::string& toLinear, const std::string& toDisplay,
                                            const std::vector<float>& values) {
   test::headlessContext();
-  const std::string source = "#version 450 core\n" + toLinear + toDisplay + R"(
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Values { float values[]; };
-layout(std430, binding = 1) writeonly buffer Results { vec2 results[]; };
-uniform uint count;
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= count) return;
-  vec4 linear = toLinear(vec4(vec3(values[i]), 1.0));
+  const std::string source = test::eachElementShader(toLinear + toDisplay, "float", "vec2", R"(
+  vec4 linear = toLinear(vec4(vec3(arguments[i]), 1.0));
   results[i] = vec2(linear.g, toDisplay(linear).g);
-}
-)";
+)");
   const ShaderLibrary library;
   const ShaderProgram program(
       {{GL_COMPUTE_SHADER, "colour_test.comp", library.expandText(source, "colour_test.comp")}});

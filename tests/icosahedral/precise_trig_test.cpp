@@ -40,15 +40,7 @@ constexpr std::array<double, kFunctions> kTolerance = {2.0, 2.0, 4.0, 5.0, 4.0};
 
 // Each argument (a, b) gives sin(a), cos(a), tan(a), asin(a) and atan(a, b): precise_trig.glsl's, then
 // the builtins'.
-const char* const kShader = R"(#version 450 core
-#include "strata/precise_trig.glsl"
-layout(local_size_x = 64) in;
-layout(std430, binding = 0) readonly buffer Arguments { vec2 arguments[]; };
-layout(std430, binding = 1) writeonly buffer Results { float results[]; };
-uniform uint count;
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= count) return;
+const std::string kShader = test::eachElementShader("#include \"strata/precise_trig.glsl\"", "vec2", "float", R"(
   float a = arguments[i].x, b = arguments[i].y;
   float ours[5] = float[](preciseSin(a), preciseCos(a), preciseTan(a), preciseAsin(a), preciseAtan(a, b));
   float builtin[5] = float[](sin(a), cos(a), tan(a), asin(a), atan(a, b));
@@ -56,8 +48,7 @@ void main() {
     results[10u * i + f] = ours[f];
     results[10u * i + 5u + f] = builtin[f];
   }
-}
-)";
+)");
 
 struct Results {
   std::array<float, kFunctions> ours, builtin;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -20,23 +21,15 @@ namespace {
 
 // Each argument: a footprint's steps (texels, xy and zw), a texel address (whole in .x, part in .y) and the
 // raster's width (.z). Each result: the taps' count and width, and the address wrapped (whole, part).
-const char* const kShader = R"(#version 450 core
-#include "strata/paged_texture.glsl"
-layout(local_size_x = 64) in;
+const std::string kShader = eachElementShader(R"(#include "strata/paged_texture.glsl"
 struct Argument { vec4 steps; ivec4 address; vec4 part; };
-struct Result { vec4 taps; ivec4 wrapped; vec4 part; };
-layout(std430, binding = 0) readonly buffer Arguments { Argument arguments[]; };
-layout(std430, binding = 1) writeonly buffer Results { Result results[]; };
-uniform uint count;
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= count) return;
+struct Result { vec4 taps; ivec4 wrapped; vec4 part; };)",
+                                              "Argument", "Result", R"(
   Argument a = arguments[i];
   AnisotropicTaps taps = anisotropicTaps(a.steps.xy, a.steps.zw);
   TexelAddress wrapped = wrappedAround(TexelAddress(a.address.xy, a.part.xy), a.address.z);
   results[i] = Result(vec4(float(taps.count), taps.width, 0.0, 0.0), ivec4(wrapped.whole, 0, 0), vec4(wrapped.part, 0, 0));
-}
-)";
+)");
 
 struct Argument {
   glm::vec4 steps;

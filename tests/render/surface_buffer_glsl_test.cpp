@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -25,19 +26,12 @@ namespace {
 // Each argument: a unit vector and an offset from the reference (xy). Each result: the vector written as
 // a surface sample and read back, whether that sample is on the body, whether the clear value is, and the
 // sphere's normal at the offset.
-const char* const kShader = R"(#version 450 core
-#include "strata/surface_buffer.glsl"
-layout(local_size_x = 64) in;
+const std::string kShader = eachElementShader(R"(#include "strata/surface_buffer.glsl"
 struct Argument { vec4 normal; vec4 offset; };
 struct Result { vec4 normal; vec4 sphereNormal; };
-layout(std430, binding = 0) readonly buffer Arguments { Argument arguments[]; };
-layout(std430, binding = 1) writeonly buffer Results { Result results[]; };
-uniform uint count;
 uniform vec4 referenceTrig;
-uniform float noSurface;  // SurfaceBuffer::kNoSurface
-void main() {
-  uint i = gl_GlobalInvocationID.x;
-  if (i >= count) return;
+uniform float noSurface;  // SurfaceBuffer::kNoSurface)",
+                                              "Argument", "Result", R"(
   vec4 written = surfaceSample(arguments[i].offset.xy, arguments[i].normal.xyz);
   vec3 sphere = sphereNormalFromReference(arguments[i].offset.xy, referenceTrig);
   bool cleared = onSurface(vec4(noSurface, 0.0, 0.0, 0.0)) || onSurface(vec4(noSurface, 0.0, 0.0, 1.0));
@@ -45,8 +39,7 @@ void main() {
   vec4 withoutNormal = vec4(written.xy, 0.0, 1.0);  // as an RG32F buffer reads
   bool sphereRead = onSurface(withoutNormal) && shadingNormalOf(withoutNormal, sphere) == sphere;
   results[i].sphereNormal = vec4(sphere, sphereRead && kNoSurface == noSurface ? 1.0 : 0.0);
-}
-)";
+)");
 
 struct Argument {
   glm::vec4 normal, offset;

@@ -6,6 +6,23 @@
 
 namespace strata::test {
 
+std::string eachElementShader(const std::string& declarations, const std::string& argumentType,
+                              const std::string& resultType, const std::string& body) {
+  return "#version 450 core\n" + declarations +
+         "\nlayout(local_size_x = 64) in;\n"
+         "layout(std430, binding = 0) readonly buffer Arguments { " +
+         argumentType +
+         " arguments[]; };\n"
+         "layout(std430, binding = 1) writeonly buffer Results { " +
+         resultType +
+         " results[]; };\n"
+         "uniform uint count;\n"
+         "void main() {\n"
+         "  uint i = gl_GlobalInvocationID.x;\n"
+         "  if (i >= count) return;\n" +
+         body + "}\n";
+}
+
 std::vector<std::byte> dispatchEach(const ShaderProgram& program, std::span<const std::byte> arguments,
                                     std::size_t count, std::size_t resultBytes) {
   std::array<GLuint, 2> buffers{};
