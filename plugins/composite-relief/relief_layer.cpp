@@ -40,27 +40,13 @@ glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegr
 }
 
 // What the layer shows where the height's slopes are `slopes`: the Lambertian shade (from one light, or
-// Mark's four), or the slope or the aspect, each from 0 to 1.
+// Mark's four), or the slope or the aspect, each from 0 to 1. Selected, not branched: llvmpipe would run every
+// branch, and the shade and one arctangent are all any choice costs.
 std::string ReliefLayer::value() const {
   const std::string& p = prefix_;
-  return "float " + p +
-         "_value(vec2 slopes) {\n"
-         "  if (" +
-         p + "_output == 1) return slopeAngle(slopes, " + p +
-         "_exaggeration) / (0.5 * PI);\n"
-         "  if (" +
-         p +
-         "_output == 2) return reliefAspect(slopes) / TWO_PI;\n"
-         "  if (" +
-         p +
-         "_multidirectional == 1)\n"
-         "    return reliefMultidirectional(slopes, " +
-         p + "_exaggeration, " + p + "_altitude) / " + p +
-         "_flat;\n"
-         "  return reliefLambert(slopes, " +
-         p + "_exaggeration, " + p + "_light) / " + p +
-         "_flat;\n"
-         "}\n";
+  return "float " + p + "_value(vec2 slopes) {\n  float shade = reliefShade(slopes, " + p + "_exaggeration, " + p +
+         "_light, " + p + "_multidirectional == 1, " + p + "_altitude) / " + p + "_flat;\n  return " + p +
+         "_output == 0 ? shade : reliefAngle(slopes, " + p + "_exaggeration, " + p + "_output == 2);\n}\n";
 }
 
 // The tint's colour where the height is `h` and its slopes `slopes`: the ramp's, by elevation (m) or by
