@@ -10,6 +10,8 @@
 #include <glm/vec2.hpp>
 #include <strata/log.hpp>
 
+#include "drawn_window.hpp"
+
 namespace strata::gdal {
 namespace {
 
@@ -43,18 +45,14 @@ bool agreesWithOverview(GDALRasterBand& band, const BlockRanges& ranges) {
   if (band.GetOverviewCount() == 0) return false;
   GDALRasterBand& overview = *band.GetOverview(band.GetOverviewCount() - 1);
   const int width = overview.GetXSize(), height = overview.GetYSize();
-  std::vector<double> values(std::size_t(width) * std::size_t(height));
-  std::vector<GByte> mask(values.size());
-  if (overview.RasterIO(GF_Read, 0, 0, width, height, values.data(), width, height, GDT_Float64, 0, 0) != CE_None ||
-      overview.GetMaskBand()->RasterIO(GF_Read, 0, 0, width, height, mask.data(), width, height, GDT_Byte, 0, 0) !=
-          CE_None)
-    return false;
+  const std::optional<std::vector<double>> values = readDrawnWindow(overview, 0, 0, width, height);
+  if (!values) return false;
   const glm::dvec2 texels(double(band.GetXSize()) / width, double(band.GetYSize()) / height);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
-      const std::size_t i = std::size_t(y) * width + x;
-      if (mask[i] == 0 || !std::isfinite(values[i])) continue;
-      if (!heldByBlocks(ranges, values[i], glm::dvec2(x, y) * texels, glm::dvec2(x + 1, y + 1) * texels)) return false;
+      const double value = (*values)[std::size_t(y) * width + x];
+      if (std::isnan(value)) continue;
+      if (!heldByBlocks(ranges, value, glm::dvec2(x, y) * texels, glm::dvec2(x + 1, y + 1) * texels)) return false;
     }
   return true;
 }

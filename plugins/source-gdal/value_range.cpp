@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "block_counting.hpp"
+#include "drawn_window.hpp"
 #include "quiet_gdal_errors.hpp"
 #include "stored_block_ranges.hpp"
 
@@ -19,7 +21,7 @@ constexpr double kCountableTexels = 16.0 * 1024 * 1024;
 
 bool finite(const ValueRange& range) { return std::isfinite(range.least) && std::isfinite(range.greatest); }
 
-// Rows read at a time: a band of a 4096-wide raster is 4 MiB of floats.
+// Rows read at a time: a band of a 4096-wide raster is 8 MiB of doubles.
 constexpr int kRowsAtATime = 256;
 
 // A texel that can be drawn, at (column, row) of level 0.
@@ -29,11 +31,8 @@ using DrawnTexel = std::function<void(int column, int row, double value)>;
 // through. A window that cannot be read is read again block by block (the file's tiles or strips), so that
 // only the blocks that cannot be read are left out.
 void visitWindow(GDALRasterBand& band, int column, int row, int columns, int rows, const DrawnTexel& visit) {
-  std::vector<float> values(std::size_t(columns) * std::size_t(rows));
-  std::vector<GByte> valid(values.size());
-  if (band.RasterIO(GF_Read, column, row, columns, rows, values.data(), columns, rows, GDT_Float32, 0, 0) != CE_None ||
-      band.GetMaskBand()->RasterIO(GF_Read, column, row, columns, rows, valid.data(), columns, rows, GDT_Byte, 0, 0) !=
-          CE_None) {
+  const std::optional<std::vector<double>> values = readDrawnWindow(band, column, row, columns, rows);
+  if (!values) {
     int blockColumns = 0, blockRows = 0;
     band.GetBlockSize(&blockColumns, &blockRows);
     if (columns <= blockColumns && rows <= blockRows) return;
@@ -43,9 +42,9 @@ void visitWindow(GDALRasterBand& band, int column, int row, int columns, int row
                     std::min((y / blockRows + 1) * blockRows, row + rows) - y, visit);
     return;
   }
-  for (std::size_t i = 0; i < values.size(); ++i)
-    if (valid[i] && std::isfinite(values[i]))
-      visit(column + int(i % std::size_t(columns)), row + int(i / std::size_t(columns)), values[i]);
+  for (std::size_t i = 0; i < values->size(); ++i)
+    if (!std::isnan((*values)[i]))
+      visit(column + int(i % std::size_t(columns)), row + int(i / std::size_t(columns)), (*values)[i]);
 }
 
 // Every texel of band 1 that can be drawn, band of rows by band of rows.
