@@ -43,12 +43,13 @@ float reliefAngle(vec2 slopes, float exaggeration, bool aspect) {
 }
 
 // A colour ramp's colour at `x`: linear in scene-linear light between its `count` stops (x in .x, rising;
-// colour in .yzw), held beyond its first and last.
+// colour in .yzw), held beyond its first and last; white with none (no tint), for which the loop takes no round.
 const int RELIEF_RAMP_STOPS = 8;
 vec3 reliefRamp(vec4 stops[RELIEF_RAMP_STOPS], int count, float x) {
+  if (count == 0) return vec3(1.0);
   if (x <= stops[0].x) return stops[0].yzw;
   for (int i = 1; i < count; ++i)
     if (x < stops[i].x)
       return mix(stops[i - 1].yzw, stops[i].yzw, (x - stops[i - 1].x) / (stops[i].x - stops[i - 1].x));
-  return stops[count - 1].yzw;
+  return stops[max(count - 1, 0)].yzw;
 }

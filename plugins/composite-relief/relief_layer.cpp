@@ -53,18 +53,9 @@ std::string ReliefLayer::value() const {
 // slope (deg), or white.
 std::string ReliefLayer::tint() const {
   const std::string& p = prefix_;
-  return "vec3 " + p +
-         "_tint(vec2 slopes, float h) {\n"
-         "  if (" +
-         p +
-         "_tintBy == 0) return vec3(1.0);\n"
-         "  float x = " +
-         p +
-         "_tintBy == 1 ? h : degrees(slopeAngle(slopes, 1.0));\n"
-         "  return reliefRamp(" +
-         p + "_ramp, " + p +
-         "_rampStops, x);\n"
-         "}\n";
+  return "vec3 " + p + "_tint(vec2 slopes, float h) {\n  float x = " + p +
+         "_tintBy == 1 ? h : degrees(slopeAngle(slopes, 1.0));\n  return reliefRamp(" + p + "_ramp, " + p +
+         "_tintBy == 0 ? 0 : " + p + "_rampStops, x);\n}\n";
 }
 
 // The layer's value, grey where the height has data, or multiplying the surface's colour (which shows
