@@ -4,13 +4,10 @@
 #include <vector>
 
 #include <strata/gl/framebuffer.hpp>
+#include <strata/gl/shading_normal.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
-
-// What a geometry's deferred buffer holds of the shading normal: nothing where it is the sphere's (the bare body,
-// whose readers compute it from the longitude and latitude), or the displaced surface's own.
-enum class ShadingNormal { OfTheSphere, Stored };
 
 // The deferred texturing buffer every geometry generator rasterises into ([Kooima 2008, §3.4.2]) and every
 // per-pixel compositor and output reads: the contract between them, written once. Attachments:

@@ -7,7 +7,7 @@
 
 #include <strata/body.hpp>
 #include <strata/error.hpp>
-#include <strata/gl/surface_buffer.hpp>
+#include <strata/gl/shading_normal.hpp>
 #include <strata/plugin/layer.hpp>
 #include <strata/plugin/parameter.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
