@@ -172,10 +172,9 @@ NodeTypeDeclaration declaration() {
   type.category = NodeCategory::Geometry;
   type.summary =
       "Twelve HEALPix quadtrees: nodes chosen on the CPU by their size and error on screen, placed on the GPU";
-  type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = healpixParameters().declarations();
-  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
+  HeightInput::declareOn(type);
   type.create = [](const NodeSetup& setup) { return std::make_unique<HealpixGeometry>(setup); };
   return type;
 }

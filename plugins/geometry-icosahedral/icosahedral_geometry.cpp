@@ -184,10 +184,9 @@ NodeTypeDeclaration declaration() {
   type.type = "geometry.icosahedral";
   type.category = NodeCategory::Geometry;
   type.summary = "The icosahedron tessellated for the view: patches chosen on the CPU, subdivided on the GPU";
-  type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = icosahedralParameters().declarations();
-  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
+  HeightInput::declareOn(type);
   type.create = [](const NodeSetup& setup) { return std::make_unique<IcosahedralGeometry>(setup); };
   return type;
 }

@@ -235,10 +235,9 @@ NodeTypeDeclaration declaration() {
   type.summary =
       "Projective grid mapping: a grid of rays from the eye cast onto reference spheres, displaced and "
       "rasterised each frame";
-  type.inputs = {HeightInput::port()};
   type.output = PortType::Geometry;
   type.parameters = pgmParameters().declarations();
-  for (ParameterDeclaration& parameter : HeightInput::parameters()) type.parameters.push_back(std::move(parameter));
+  HeightInput::declareOn(type);
   type.create = [](const NodeSetup& setup) { return std::make_unique<PgmGeometry>(setup); };
   return type;
 }

@@ -94,7 +94,7 @@ TEST_P(CheckerBoard, StaysCrispAndStillFromTwoMetres) {
 // tilted 30 degrees, where cells at the top of the frame shrink to 4 pixels.
 INSTANTIATE_TEST_SUITE_P(GeneratorsAndTilts, CheckerBoard,
                          ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm",
-                                                              "geometry.healpix"),
+                                                              "geometry.healpix", "geometry.clipmap"),
                                             ::testing::Values(0.0, 30.0)),
                          [](const ::testing::TestParamInfo<std::tuple<std::string, double>>& param) {
                            const std::string& type = std::get<0>(param.param);

@@ -132,7 +132,8 @@ INSTANTIATE_TEST_SUITE_P(
                                          Scene{"FromOneKilometre", 1000.0, 300.0, 2.0e4, 47.0, {0.0, 50.0, 80.0, 88.0}},
                                          Scene{"OverThePole", 1000.0, 300.0, 2.0e4, 90.0, {0.0, 50.0, 80.0, 88.0}},
                                          Scene{"FromTwoMetres", 2.0, 1.0, 200.0, 47.0, {0.0, 50.0, 88.0, 180.0}}),
-                       ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix")),
+                       ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                                         "geometry.clipmap")),
     [](const ::testing::TestParamInfo<std::tuple<Scene, std::string>>& test) {
       const std::string& type = std::get<1>(test.param);
       return std::string(std::get<0>(test.param).name) + "_" + type.substr(type.find('.') + 1);

@@ -75,7 +75,8 @@ TEST_P(GeneratorAgreement, DrawsTheSamePlanetAsTheIcosahedralGenerator) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Generators, GeneratorAgreement, ::testing::Values("geometry.pgm", "geometry.healpix"),
+INSTANTIATE_TEST_SUITE_P(Generators, GeneratorAgreement,
+                         ::testing::Values("geometry.pgm", "geometry.healpix", "geometry.clipmap"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

@@ -139,7 +139,8 @@ TEST_P(HealpixPyramidHeights, GiveThePlanetTheLongitudeLatitudeRasterGives) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Generators, HealpixPyramidHeights,
-                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                                           "geometry.clipmap"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

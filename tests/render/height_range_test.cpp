@@ -90,7 +90,8 @@ TEST_P(HeightRange, LowestAboveHighestIsRefused) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Generators, HeightRange,
-                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                                           "geometry.clipmap"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

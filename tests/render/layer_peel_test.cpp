@@ -270,7 +270,8 @@ TEST_P(LayerPeel, BoxAndPlaneCutsShowTheFloorWithinThem) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Generators, LayerPeel,
-                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                                           "geometry.clipmap"),
                          [](const ::testing::TestParamInfo<std::string>& type) {
                            return type.param.substr(type.param.find('.') + 1);
                          });

@@ -130,7 +130,7 @@ std::string placeGeneratorAndTilt(const ::testing::TestParamInfo<std::tuple<Plac
 INSTANTIATE_TEST_SUITE_P(PlacesGeneratorsAndTilts, RasterPrecision,
                          ::testing::Combine(::testing::ValuesIn(kPlaces),
                                             ::testing::Values("geometry.icosahedral", "geometry.pgm",
-                                                              "geometry.healpix"),
+                                                              "geometry.healpix", "geometry.clipmap"),
                                             ::testing::Values(0.0, 60.0)),
                          placeGeneratorAndTilt);
 
@@ -180,7 +180,7 @@ INSTANTIATE_TEST_SUITE_P(Places, HealpixRasterPrecision,
                          placeGeneratorAndTilt);
 INSTANTIATE_TEST_SUITE_P(Generators, HealpixRasterPrecision,
                          ::testing::Combine(::testing::Values(kPlaces[1]),
-                                            ::testing::Values("geometry.pgm", "geometry.healpix"),
+                                            ::testing::Values("geometry.pgm", "geometry.healpix", "geometry.clipmap"),
                                             ::testing::Values(60.0)),
                          placeGeneratorAndTilt);
 
@@ -201,7 +201,8 @@ TEST_P(PlateauRasterPrecision, OneCentimetreTexelsAreCrispTwoMetresAboveAPlateau
 }
 
 INSTANTIATE_TEST_SUITE_P(Generators, PlateauRasterPrecision,
-                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
+                         ::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+                                           "geometry.clipmap"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                            return param.param.substr(param.param.find('.') + 1);
                          });

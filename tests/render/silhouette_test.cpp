@@ -54,7 +54,7 @@ TEST_P(Silhouette, DiscRadiusIsThatOfTheRaisedSphere) {
 INSTANTIATE_TEST_SUITE_P(Heights, Silhouette,
                          ::testing::Combine(::testing::Values(0.0, 3.0e5, 1.0e6),
                                             ::testing::Values("geometry.icosahedral", "geometry.pgm",
-                                                              "geometry.healpix")),
+                                                              "geometry.healpix", "geometry.clipmap")),
                          [](const ::testing::TestParamInfo<std::tuple<double, std::string>>& test) {
                            const std::string& type = std::get<1>(test.param);
                            return type.substr(type.find('.') + 1) + "_" +

@@ -122,14 +122,15 @@ TEST_P(TerrainShading, LightsThePlaneByItsExactNormal) {
   EXPECT_LE(largest, 1.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Generators, TerrainShading,
-    ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm", "geometry.healpix"),
-                       ::testing::Values(Place{"Gale", 137.4, -4.6}, Place{"North", -100.0, 75.0})),
-    [](const ::testing::TestParamInfo<std::tuple<std::string, Place>>& placed) {
-      const std::string& type = std::get<0>(placed.param);
-      return type.substr(type.find('.') + 1) + "_" + std::get<1>(placed.param).name;
-    });
+INSTANTIATE_TEST_SUITE_P(Generators, TerrainShading,
+                         ::testing::Combine(::testing::Values("geometry.icosahedral", "geometry.pgm",
+                                                              "geometry.healpix", "geometry.clipmap"),
+                                            ::testing::Values(Place{"Gale", 137.4, -4.6},
+                                                              Place{"North", -100.0, 75.0})),
+                         [](const ::testing::TestParamInfo<std::tuple<std::string, Place>>& placed) {
+                           const std::string& type = std::get<0>(placed.param);
+                           return type.substr(type.find('.') + 1) + "_" + std::get<1>(placed.param).name;
+                         });
 
 }  // namespace
 }  // namespace strata::test

@@ -39,6 +39,11 @@ PortDeclaration HeightInput::port() {
 
 std::vector<ParameterDeclaration> HeightInput::parameters() { return bounds().declarations(); }
 
+void HeightInput::declareOn(NodeTypeDeclaration& type) {
+  type.inputs.push_back(port());
+  for (ParameterDeclaration& parameter : parameters()) type.parameters.push_back(std::move(parameter));
+}
+
 const ParameterBindings<HeightBounds>& HeightInput::bounds() {
   using S = HeightBounds;
   static const auto bindings =

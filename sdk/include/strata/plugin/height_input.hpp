@@ -9,6 +9,7 @@
 #include <strata/error.hpp>
 #include <strata/gl/shading_normal.hpp>
 #include <strata/plugin/layer.hpp>
+#include <strata/plugin/node_type.hpp>
 #include <strata/plugin/parameter.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/port.hpp>
@@ -42,6 +43,8 @@ class HeightInput {
   // The input port and the two parameters, for the generator's NodeTypeDeclaration.
   static PortDeclaration port();
   static std::vector<ParameterDeclaration> parameters();
+  // Both declared on a generator's type: the port as its input, the parameters after those it declared.
+  static void declareOn(NodeTypeDeclaration& type);
   // The two parameters, each bound to its member of HeightBounds.
   static const ParameterBindings<HeightBounds>& bounds();
 

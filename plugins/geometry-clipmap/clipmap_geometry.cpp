@@ -1,0 +1,159 @@
+// geometry.clipmap: spherical clipmaps [Clasen & Hege 2006]. A static hemisphere of concentric rings about the point
+// below the viewer, built and uploaded once (hemisphere_rings.hpp), turned to the viewer and displaced by the height
+// layer in the vertex shader each frame, the levels between the horizon and a pixel's footprint drawn
+// (drawn_levels.hpp): no tree, no cracks by construction, triangles of about one size on screen. It draws the same
+// deferred texturing buffer as the other generators. docs/clipmap.md explains the parts and what differs from the
+// paper.
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <strata/gl/gpu_timer.hpp>
+#include <strata/gl/shader_library.hpp>
+#include <strata/gl/shader_program.hpp>
+#include <strata/gl/surface_buffer.hpp>
+#include <strata/plugin/geometry.hpp>
+#include <strata/plugin/height_input.hpp>
+#include <strata/plugin/layer.hpp>
+#include <strata/plugin/parameter_bindings.hpp>
+#include <strata/plugin/plugin.hpp>
+
+#include "drawn_levels.hpp"
+#include "hemisphere_buffers.hpp"
+#include "hemisphere_rings.hpp"
+#include "plugin_shaders.hpp"
+
+namespace strata::clipmap {
+namespace {
+
+const ParameterBindings<RingSettings>& ringParameters() {
+  using S = RingSettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .add(&S::steps, {.name = "steps",
+                           .minimum = 8.0,
+                           .maximum = 4096.0,
+                           .doc = "steps around each ring (the paper's n), even: 512 as the paper, whose triangles "
+                                  "then stand a few pixels across at 1280x960"})
+          .add(&S::ringsPerLevel, {.name = "rings",
+                                   .minimum = 1.0,
+                                   .maximum = 256.0,
+                                   .doc = "rings a level, each level half as far from the viewer as the one before "
+                                          "(the paper's m): 20 as the paper, 20,480 triangles a level at 512 steps"});
+  return bindings;
+}
+
+RingSettings ringsOf(const NodeSetup& setup) {
+  const RingSettings settings = ringParameters().read(setup.parameters);
+  if (settings.steps % 2 != 0)
+    throw Error(ringParameters().where(setup.parameters, &RingSettings::steps),
+                "steps (" + std::to_string(settings.steps) + ") is odd",
+                "give an even number: the mesh's halves east and west of the viewer meet along its columns due "
+                "north and due south");
+  return settings;
+}
+
+class ClipmapGeometry : public Node, public SurfaceGeometry {
+ public:
+  explicit ClipmapGeometry(const NodeSetup& setup)
+      : heights_(setup), radius_(setup.body->radius), rings_(buildHemisphereRings(ringsOf(setup))) {}
+
+  void open() override { heights_.open(); }
+
+  void createResources(GpuContext& gpu) override {
+    surface_ = ShaderProgram(
+        {{GL_VERTEX_SHADER, "geometry-clipmap/clipmap_surface.vert",
+          gpu.shaders->expand("geometry-clipmap/clipmap_surface.vert", heights_.substitutions())},
+         {GL_FRAGMENT_SHADER, "strata/surface_buffer.frag", gpu.shaders->expand("strata/surface_buffer.frag")}});
+    buffers_.emplace(rings_);
+    rasterisationTimer_.emplace();
+  }
+
+  void prepare(const FrameState& frame) override {
+    const auto start = std::chrono::steady_clock::now();
+    const double altitude = glm::length(frame.view.eye) - radius_;
+    drawn_ = drawnLevels(horizonColatitude(radius_, altitude, heights_.range()),
+                         pixelColatitude(radius_, altitude, heights_.range(), 1.0 / frame.view.pixelsPerRadian()),
+                         rings_.settings.levels);
+    visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+
+  GeometryStatistics statistics() const override {
+    const std::uint64_t levels = std::uint64_t(drawn_.finest - drawn_.coarsest + 1);
+    const std::uint64_t steps = std::uint64_t(rings_.settings.steps),
+                        rings = std::uint64_t(rings_.settings.ringsPerLevel);
+    return {int(levels), levels * rings * (steps + 2) + steps + 2, levels * 2 * rings * steps + steps, visibilityMs_,
+            0.0,         rasterisationTimer_->milliseconds()};
+  }
+
+  void render(const FrameState& frame) override;
+
+  SurfaceGeometry* geometry() override { return this; }
+  const Framebuffer& gbuffer() const override { return gbuffer_.framebuffer(); }
+  HeightRange heights() const override { return heights_.range(); }
+
+ private:
+  void useSurface(const View& view);
+
+  HeightInput heights_;
+  double radius_;
+  HemisphereRings rings_;
+  DrawnLevels drawn_;
+  ShaderProgram surface_;
+  std::optional<HemisphereBuffers> buffers_;
+  std::optional<GpuTimer> rasterisationTimer_;
+  double visibilityMs_ = 0.0;
+  SurfaceBuffer gbuffer_{heights_.shadingNormal()};
+};
+
+// The frame of the point below the eye, in which the mesh is given, made in double.
+void ClipmapGeometry::useSurface(const View& view) {
+  const glm::dmat3 localToPlanet = glm::transpose(planetToLocal(view.reference));
+  surface_.use();
+  surface_.set("localToEye", glm::mat3(view.planetToEye * localToPlanet));
+  surface_.set("localToPlanet", glm::mat3(localToPlanet));
+  surface_.set("projection", view.projection);
+  surface_.set("referenceLatitude", glm::vec2(std::sin(view.reference.y), std::cos(view.reference.y)));
+  surface_.set("referenceLonlat", glm::vec2(view.reference));
+  surface_.set("radius", float(radius_));
+  surface_.set("altitude", float(glm::length(view.eye) - radius_));
+  surface_.set("ringSpacing", float(1.0 - std::exp2(-1.0 / rings_.settings.ringsPerLevel)));
+}
+
+void ClipmapGeometry::render(const FrameState& frame) {
+  const View& view = frame.view;
+  gbuffer_.begin(view.width, view.height, samples());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  // No face culling, as geometry.healpix: a triangle through which a grazing ray enters steep relief may round to
+  // back-facing. The horizon bounds the levels, so few back faces reach the rasteriser.
+  useSurface(view);
+  TextureUnits units;
+  if (heights_.layer()) heights_.layer()->bind(surface_, units);
+  rasterisationTimer_->begin();
+  buffers_->draw(drawn_);
+  rasterisationTimer_->end();
+  glDisable(GL_DEPTH_TEST);
+}
+
+NodeTypeDeclaration declaration() {
+  NodeTypeDeclaration type;
+  type.shaderSources = strata::plugin::shaderSources();  // this plugin's GLSL files
+  type.type = "geometry.clipmap";
+  type.category = NodeCategory::Geometry;
+  type.summary = "Spherical clipmaps: a static hemisphere of rings turned to the viewer, displaced on the GPU";
+  type.output = PortType::Geometry;
+  type.parameters = ringParameters().declarations();
+  HeightInput::declareOn(type);
+  type.create = [](const NodeSetup& setup) { return std::make_unique<ClipmapGeometry>(setup); };
+  return type;
+}
+
+void registerTypes(PluginRegistrar& registrar) { registrar.add(declaration()); }
+
+}  // namespace
+}  // namespace strata::clipmap
+
+STRATA_PLUGIN("geometry-clipmap", "0.1.0", strata::clipmap::registerTypes)

@@ -1,0 +1,71 @@
+#include "hemisphere_rings.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace strata::clipmap {
+namespace {
+
+// Vertices of a ring: the eastern half's columns 0 to steps / 2, then the western half's steps / 2 to steps.
+int ringVertices(const RingSettings& s) { return s.steps + 2; }
+
+// The index of column `column` (0 to steps) of ring `ring` in the half `west`, the nadir last.
+std::uint32_t vertexIndex(const RingSettings& s, int ring, int column, bool west) {
+  const int half = s.steps / 2;
+  return std::uint32_t(ring * ringVertices(s) + (west ? half + 1 + (column - half) : column));
+}
+
+HemisphereVertex vertexAt(double colatitude, double azimuth, bool west) {
+  const double horizontal = std::sin(colatitude), half = std::sin(0.5 * colatitude);
+  return {float(horizontal * std::sin(azimuth)), float(horizontal * std::cos(azimuth)), float(-2.0 * half * half),
+          float(west ? -colatitude : colatitude)};
+}
+
+// Two triangles a quad between rings `outer` and outer + 1, columns `column` and column + 1, within one half.
+void addQuad(std::vector<std::uint32_t>& indices, const RingSettings& s, int outer, int column, bool west) {
+  const std::uint32_t a = vertexIndex(s, outer, column, west), b = vertexIndex(s, outer, column + 1, west);
+  const std::uint32_t c = vertexIndex(s, outer + 1, column + 1, west), d = vertexIndex(s, outer + 1, column, west);
+  indices.insert(indices.end(), {a, b, c, a, c, d});
+}
+
+}  // namespace
+
+double ringColatitude(int ring, int ringsPerLevel) {
+  return std::numbers::pi * std::exp2(-double(ring) / double(ringsPerLevel));
+}
+
+HemisphereRings buildHemisphereRings(const RingSettings& settings) {
+  const RingSettings& s = settings;
+  HemisphereRings mesh{.settings = s};
+  const int rings = s.levels * s.ringsPerLevel + 1, half = s.steps / 2;
+  for (int ring = 0; ring < rings; ++ring) {
+    const double colatitude = ringColatitude(ring, s.ringsPerLevel);
+    for (int column = 0; column <= half; ++column)
+      mesh.vertices.push_back(vertexAt(colatitude, 2.0 * std::numbers::pi * column / s.steps, false));
+    for (int column = half; column <= s.steps; ++column)
+      mesh.vertices.push_back(vertexAt(colatitude, 2.0 * std::numbers::pi * column / s.steps, true));
+  }
+  const auto nadir = std::uint32_t(mesh.vertices.size());
+  mesh.vertices.push_back({0.0f, 0.0f, 0.0f, 0.0f});
+  for (int level = 0; level < s.levels; ++level) {
+    IndexRange range{std::uint32_t(mesh.indices.size()), 0};
+    for (int ring = level * s.ringsPerLevel; ring < (level + 1) * s.ringsPerLevel; ++ring)
+      for (int column = 0; column < s.steps; ++column) addQuad(mesh.indices, s, ring, column, column >= half);
+    range.count = std::uint32_t(mesh.indices.size()) - range.first;
+    mesh.levels.push_back(range);
+  }
+  for (int level = 0; level < s.levels; ++level) {
+    IndexRange range{std::uint32_t(mesh.indices.size()), 0};
+    const int inner = (level + 1) * s.ringsPerLevel;
+    for (int column = 0; column < s.steps; ++column) {
+      const bool west = column >= half;
+      mesh.indices.insert(mesh.indices.end(),
+                          {vertexIndex(s, inner, column, west), vertexIndex(s, inner, column + 1, west), nadir});
+    }
+    range.count = std::uint32_t(mesh.indices.size()) - range.first;
+    mesh.caps.push_back(range);
+  }
+  return mesh;
+}
+
+}  // namespace strata::clipmap
