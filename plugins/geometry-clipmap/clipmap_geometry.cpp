@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -19,11 +20,13 @@
 #include <strata/plugin/layer.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
+#include <strata/plugin/spherical_cap.hpp>
 
 #include "drawn_levels.hpp"
 #include "hemisphere_buffers.hpp"
 #include "hemisphere_rings.hpp"
 #include "plugin_shaders.hpp"
+#include "sector_culling.hpp"
 
 namespace strata::clipmap {
 namespace {
@@ -71,21 +74,28 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
     rasterisationTimer_.emplace();
   }
 
+  // The levels from the horizon of the whole range of heights to a pixel at the ground below the eye, as near as
+  // the heights there allow; then their sectors in view.
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
+    const HeightsOver heightsOver = [this](const SphericalCap& cap) {
+      return heights_.boundsRegions() ? heights_.within(cap).range : heights_.range();
+    };
     const double altitude = glm::length(frame.view.eye) - radius_;
+    const SphericalCap belowEye{directionOf(frame.view.reference), std::min(altitude / radius_, std::numbers::pi)};
     drawn_ = drawnLevels(horizonColatitude(radius_, altitude, heights_.range()),
-                         pixelColatitude(radius_, altitude, heights_.range(), 1.0 / frame.view.pixelsPerRadian()),
+                         pixelColatitude(radius_, altitude, heightsOver(belowEye), 1.0 / frame.view.pixelsPerRadian()),
                          rings_.settings.levels);
+    ranges_ = visibleRanges(rings_, drawn_, frame.view, radius_, heightsOver);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
+  // Patches: the levels drawn; vertices: those their triangles name, counted three a triangle.
   GeometryStatistics statistics() const override {
-    const std::uint64_t levels = std::uint64_t(drawn_.finest - drawn_.coarsest + 1);
-    const std::uint64_t steps = std::uint64_t(rings_.settings.steps),
-                        rings = std::uint64_t(rings_.settings.ringsPerLevel);
-    return {int(levels), levels * rings * (steps + 2) + steps + 2, levels * 2 * rings * steps + steps, visibilityMs_,
-            0.0,         rasterisationTimer_->milliseconds()};
+    std::uint64_t indices = 0;
+    for (const IndexRange& range : ranges_) indices += range.count;
+    return {drawn_.finest - drawn_.coarsest + 1, indices, indices / 3, visibilityMs_, 0.0,
+            rasterisationTimer_->milliseconds()};
   }
 
   void render(const FrameState& frame) override;
@@ -101,6 +111,7 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
   double radius_;
   HemisphereRings rings_;
   DrawnLevels drawn_;
+  std::vector<IndexRange> ranges_;
   ShaderProgram surface_;
   std::optional<HemisphereBuffers> buffers_;
   std::optional<GpuTimer> rasterisationTimer_;
@@ -133,7 +144,7 @@ void ClipmapGeometry::render(const FrameState& frame) {
   TextureUnits units;
   if (heights_.layer()) heights_.layer()->bind(surface_, units);
   rasterisationTimer_->begin();
-  buffers_->draw(drawn_);
+  buffers_->draw(ranges_);
   rasterisationTimer_->end();
   glDisable(GL_DEPTH_TEST);
 }

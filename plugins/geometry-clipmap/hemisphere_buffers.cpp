@@ -4,7 +4,7 @@
 
 namespace strata::clipmap {
 
-HemisphereBuffers::HemisphereBuffers(const HemisphereRings& rings) : levels_(rings.levels), caps_(rings.caps) {
+HemisphereBuffers::HemisphereBuffers(const HemisphereRings& rings) {
   glCreateBuffers(2, buffers_);
   glNamedBufferStorage(buffers_[0], GLsizeiptr(rings.vertices.size() * sizeof(HemisphereVertex)), rings.vertices.data(),
                        0);
@@ -22,15 +22,15 @@ HemisphereBuffers::~HemisphereBuffers() {
   glDeleteBuffers(2, buffers_);
 }
 
-void HemisphereBuffers::draw(const DrawnLevels& drawn) const {
-  const IndexRange& coarsest = levels_[std::size_t(drawn.coarsest)];
-  const IndexRange& finest = levels_[std::size_t(drawn.finest)];
-  const IndexRange& cap = caps_[std::size_t(drawn.finest)];
-  const GLsizei counts[] = {GLsizei(finest.first + finest.count - coarsest.first), GLsizei(cap.count)};
-  const void* offsets[] = {reinterpret_cast<const void*>(std::uintptr_t(coarsest.first) * sizeof(std::uint32_t)),
-                           reinterpret_cast<const void*>(std::uintptr_t(cap.first) * sizeof(std::uint32_t))};
+void HemisphereBuffers::draw(const std::vector<IndexRange>& ranges) const {
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  for (const IndexRange& range : ranges) {
+    counts.push_back(GLsizei(range.count));
+    offsets.push_back(reinterpret_cast<const void*>(std::uintptr_t(range.first) * sizeof(std::uint32_t)));
+  }
   glBindVertexArray(vertexArray_);
-  glMultiDrawElements(GL_TRIANGLES, counts, GL_UNSIGNED_INT, offsets, 2);
+  glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(), GLsizei(ranges.size()));
   glBindVertexArray(0);
 }
 

@@ -1,13 +1,14 @@
 #pragma once
 #include <strata/gl.hpp>
 
-#include "drawn_levels.hpp"
+#include <vector>
+
 #include "hemisphere_rings.hpp"
 
 namespace strata::clipmap {
 
-// The hemisphere on the GPU: its vertices and indices uploaded once, and the draw of a view's levels and fill cap
-// (one range of indices for the levels, which lie coarsest first, and one for the cap).
+// The hemisphere on the GPU: its vertices and indices uploaded once, and the draw of a view's ranges of them
+// (sector_culling.hpp) in one glMultiDrawElements.
 class HemisphereBuffers {
  public:
   explicit HemisphereBuffers(const HemisphereRings& rings);
@@ -15,11 +16,10 @@ class HemisphereBuffers {
   HemisphereBuffers(const HemisphereBuffers&) = delete;
   HemisphereBuffers& operator=(const HemisphereBuffers&) = delete;
 
-  // Draws `drawn` with the program in use (clipmap_surface.vert).
-  void draw(const DrawnLevels& drawn) const;
+  // Draws `ranges` with the program in use (clipmap_surface.vert).
+  void draw(const std::vector<IndexRange>& ranges) const;
 
  private:
-  std::vector<IndexRange> levels_, caps_;
   GLuint buffers_[2] = {};
   GLuint vertexArray_ = 0;
 };

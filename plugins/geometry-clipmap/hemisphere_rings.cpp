@@ -28,6 +28,13 @@ void addQuad(std::vector<std::uint32_t>& indices, const RingSettings& s, int out
   indices.insert(indices.end(), {a, b, c, a, c, d});
 }
 
+// Sectors a level: twice the largest power of two, up to 8, that divides a half's columns.
+int sectorsOf(const RingSettings& s) {
+  int perHalf = 1;
+  while (perHalf < 8 && (s.steps / 2) % (2 * perHalf) == 0) perHalf *= 2;
+  return 2 * perHalf;
+}
+
 }  // namespace
 
 double ringColatitude(int ring, int ringsPerLevel) {
@@ -36,7 +43,8 @@ double ringColatitude(int ring, int ringsPerLevel) {
 
 HemisphereRings buildHemisphereRings(const RingSettings& settings) {
   const RingSettings& s = settings;
-  HemisphereRings mesh{.settings = s};
+  HemisphereRings mesh{.settings = s, .sectors = sectorsOf(s)};
+  const int columnsPerSector = s.steps / mesh.sectors;
   const int rings = s.levels * s.ringsPerLevel + 1, half = s.steps / 2;
   for (int ring = 0; ring < rings; ++ring) {
     const double colatitude = ringColatitude(ring, s.ringsPerLevel);
@@ -49,8 +57,10 @@ HemisphereRings buildHemisphereRings(const RingSettings& settings) {
   mesh.vertices.push_back({0.0f, 0.0f, 0.0f, 0.0f});
   for (int level = 0; level < s.levels; ++level) {
     IndexRange range{std::uint32_t(mesh.indices.size()), 0};
-    for (int ring = level * s.ringsPerLevel; ring < (level + 1) * s.ringsPerLevel; ++ring)
-      for (int column = 0; column < s.steps; ++column) addQuad(mesh.indices, s, ring, column, column >= half);
+    for (int sector = 0; sector < mesh.sectors; ++sector)
+      for (int ring = level * s.ringsPerLevel; ring < (level + 1) * s.ringsPerLevel; ++ring)
+        for (int column = sector * columnsPerSector; column < (sector + 1) * columnsPerSector; ++column)
+          addQuad(mesh.indices, s, ring, column, column >= half);
     range.count = std::uint32_t(mesh.indices.size()) - range.first;
     mesh.levels.push_back(range);
   }
@@ -67,5 +77,13 @@ HemisphereRings buildHemisphereRings(const RingSettings& settings) {
   }
   return mesh;
 }
+
+IndexRange sectorRange(const HemisphereRings& mesh, int level, int sector) {
+  const IndexRange& whole = mesh.levels[std::size_t(level)];
+  const std::uint32_t share = whole.count / std::uint32_t(mesh.sectors);
+  return {whole.first + std::uint32_t(sector) * share, share};
+}
+
+double sectorAzimuth(const HemisphereRings& mesh, int sector) { return 2.0 * std::numbers::pi * sector / mesh.sectors; }
 
 }  // namespace strata::clipmap

@@ -16,6 +16,10 @@ namespace strata::clipmap {
 // fixed columns [Clasen & Hege 2006, §4.4]: the one due north (beyond the north pole) and the one due south.
 // Each column of those two is held twice, once for the eastern half's triangles and once for the western's, and
 // each vertex says its half, so that the vertex shader unwraps its longitude into it.
+//
+// Each level's triangles lie sector by sector (`sectors` equal wedges of phi~, each within one half), so that a
+// view draws only the sectors its frustum may hold (sector_culling.hpp): the paper's first proposal for future
+// work, "view-frustum culling" [Clasen & Hege 2006, §6.1].
 struct RingSettings {
   int steps = 512;         // around each ring (n), even: the paper's 512
   int ringsPerLevel = 20;  // m: the paper's 20, triangles about 2.8 times as long radially as across
@@ -34,9 +38,10 @@ struct IndexRange {
 
 struct HemisphereRings {
   RingSettings settings;
+  int sectors = 2;  // wedges of phi~ a level: up to 16, each an equal share of one half's columns
   std::vector<HemisphereVertex> vertices;
   std::vector<std::uint32_t> indices;  // triangles
-  std::vector<IndexRange> levels;      // level i's triangles, 2 steps ringsPerLevel of them
+  std::vector<IndexRange> levels;      // level i's triangles, 2 steps ringsPerLevel of them, sector by sector
   std::vector<IndexRange> caps;        // the fill cap inside level i: `steps` triangles
 };
 
@@ -45,5 +50,10 @@ double ringColatitude(int ring, int ringsPerLevel);
 
 // The mesh of `settings`; steps even and at least 4, ringsPerLevel and levels at least 1.
 HemisphereRings buildHemisphereRings(const RingSettings& settings);
+
+// The triangles of sector `sector` of level `level`.
+IndexRange sectorRange(const HemisphereRings& mesh, int level, int sector);
+// Where sector `sector`'s wedge begins: phi~, rad clockwise from north; it ends where the next begins.
+double sectorAzimuth(const HemisphereRings& mesh, int sector);
 
 }  // namespace strata::clipmap

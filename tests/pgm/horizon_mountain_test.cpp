@@ -6,8 +6,10 @@
 // at the horizon and the mountain would be cut off there, 24 pixels below its peak.
 //
 // The peak's place on the screen is exact, in double; the topmost pixel drawn in its column must lie
-// within kPeakTolerance of it, and geometry.icosahedral draws it alike. Without the secondary sphere
-// (zeta = 1) the same test sees the mountain cut off at the horizon.
+// within kPeakTolerance of it, and geometry.icosahedral and geometry.clipmap draw it alike (the clipmap's level
+// holding the bare horizon, 156 km out, would reach the peak even without [Clasen & Hege 2006, §4.5]'s safety
+// factor; tests/clipmap/drawn_levels_test.cpp judges the factor itself by lines of sight in double). Without the
+// secondary sphere (zeta = 1) the same test sees the mountain cut off at the horizon.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,7 +105,7 @@ class PgmHorizonMountain : public ::testing::Test {
 };
 
 TEST_F(PgmHorizonMountain, AMountainBehindTheHorizonIsDrawnToItsPeak) {
-  for (const std::string geometry : {"geometry.pgm", "geometry.icosahedral"})
+  for (const std::string geometry : {"geometry.pgm", "geometry.icosahedral", "geometry.clipmap"})
     EXPECT_NEAR(topOfThePeak(geometry) + 0.5, landmarks_.peak.y, kPeakTolerance) << geometry;
 }
 
