@@ -1,9 +1,9 @@
 // geometry.clipmap: spherical clipmaps [Clasen & Hege 2006]. A static hemisphere of concentric rings about the point
 // below the viewer, built and uploaded once (hemisphere_rings.hpp), turned to the viewer and displaced by the height
-// layer in the vertex shader each frame, the levels between the horizon and a pixel's footprint drawn
-// (drawn_levels.hpp): no tree, no cracks by construction, triangles of about one size on screen. It draws the same
-// deferred texturing buffer as the other generators. docs/clipmap.md explains the parts and what differs from the
-// paper.
+// layer in the vertex shader each frame, the levels between the horizon and a fill cap a few pixels across drawn
+// (drawn_levels.hpp), the sectors out of view left out (sector_culling.hpp): no tree, no cracks by construction,
+// triangles of about one size on screen. It draws the same deferred texturing buffer as the other generators.
+// docs/clipmap.md explains the parts and what differs from the paper.
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -38,8 +38,8 @@ const ParameterBindings<RingSettings>& ringParameters() {
           .add(&S::steps, {.name = "steps",
                            .minimum = 8.0,
                            .maximum = 4096.0,
-                           .doc = "steps around each ring (the paper's n), even: 512 as the paper, whose triangles "
-                                  "then stand a few pixels across at 1280x960"})
+                           .doc = "steps around each ring (the paper's n), even: 512 as the paper; a ring's triangles "
+                                  "are 2 pi / steps of its radius across, 1.2% at 512"})
           .add(&S::ringsPerLevel, {.name = "rings",
                                    .minimum = 1.0,
                                    .maximum = 256.0,
@@ -74,8 +74,8 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
     rasterisationTimer_.emplace();
   }
 
-  // The levels from the horizon of the whole range of heights to a pixel at the ground below the eye, as near as
-  // the heights there allow; then their sectors in view.
+  // The levels from the horizon of the whole range of heights to the fill cap, a few pixels at the ground below the
+  // eye, as near as the heights there allow; then their sectors in view.
   void prepare(const FrameState& frame) override {
     const auto start = std::chrono::steady_clock::now();
     const HeightsOver heightsOver = [this](const SphericalCap& cap) {
@@ -83,8 +83,8 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
     };
     const double altitude = glm::length(frame.view.eye) - radius_;
     const SphericalCap belowEye{directionOf(frame.view.reference), std::min(altitude / radius_, std::numbers::pi)};
-    drawn_ = drawnLevels(horizonColatitude(radius_, altitude, heights_.range()),
-                         pixelColatitude(radius_, altitude, heightsOver(belowEye), 1.0 / frame.view.pixelsPerRadian()),
+    const double pixel = pixelColatitude(radius_, altitude, heightsOver(belowEye), 1.0 / frame.view.pixelsPerRadian());
+    drawn_ = drawnLevels(horizonColatitude(radius_, altitude, heights_.range()), capColatitude(pixel),
                          rings_.settings.levels);
     ranges_ = visibleRanges(rings_, drawn_, frame.view, radius_, heightsOver);
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -28,9 +28,11 @@ double pixelColatitude(double radius, double altitude, const HeightRange& height
   return std::max(aboveGround, 0.0) * std::tan(pixelAngle) / radius;
 }
 
-DrawnLevels drawnLevels(double horizon, double pixel, int levels) {
+double capColatitude(double pixel) { return kCapPixels * pixel; }
+
+DrawnLevels drawnLevels(double horizon, double cap, int levels) {
   const int coarsest = std::clamp(levelHolding(horizon), 0, levels - 1);
-  const int finest = pixel > 0.0 ? std::clamp(levelHolding(pixel), coarsest, levels - 1) : levels - 1;
+  const int finest = cap > 0.0 ? std::clamp(levelHolding(cap), coarsest, levels - 1) : levels - 1;
   return {coarsest, finest};
 }
 

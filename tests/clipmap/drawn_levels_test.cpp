@@ -1,5 +1,5 @@
 // geometry.clipmap's choice of levels: the horizon widened for mountains behind it, judged by lines of sight cast in
-// double; a pixel's footprint below the eye; and the levels holding both.
+// double; a pixel's footprint below the eye and the fill cap about it; and the levels holding the horizon and the cap.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -44,15 +44,22 @@ TEST(DrawnLevels, APixelBelowTheEyeIsMeasuredFromTheGroundNearest) {
       << "2 m above a plateau 3 km high";
 }
 
-TEST(DrawnLevels, TheLevelsHoldTheHorizonAndThePixel) {
+TEST(DrawnLevels, TheCapIsFourPixelsWideAndTheRingsOutsideItASeventhOfAPixelApart) {
+  const double pixel = 1e-6, cap = capColatitude(pixel);
+  EXPECT_DOUBLE_EQ(cap, 4.0 * pixel);
+  const double spacing = cap - cap * std::exp2(-1.0 / 20.0);  // the ring at the cap's edge to the next one in
+  EXPECT_NEAR(spacing / pixel, 1.0 / 7.3, 0.01) << "at the paper's m = 20";
+}
+
+TEST(DrawnLevels, TheLevelsHoldTheHorizonAndTheCap) {
   for (const double horizon : {1.5, 0.04, 8e-4})
-    for (const double pixel : {1e-4, 1e-7, 3e-10}) {
-      if (pixel >= horizon) continue;
-      const DrawnLevels drawn = drawnLevels(horizon, pixel, 40);
+    for (const double cap : {1e-4, 1e-7, 3e-10}) {
+      if (cap >= horizon) continue;
+      const DrawnLevels drawn = drawnLevels(horizon, cap, 40);
       EXPECT_LT(ringColatitude((drawn.coarsest + 1) * 20, 20), horizon);
       EXPECT_GE(ringColatitude(drawn.coarsest * 20, 20), horizon);
-      EXPECT_LT(ringColatitude((drawn.finest + 1) * 20, 20), pixel) << "the cap is narrower than a pixel";
-      EXPECT_GE(ringColatitude(drawn.finest * 20, 20), pixel);
+      EXPECT_LT(ringColatitude((drawn.finest + 1) * 20, 20), cap) << "the finest level's inner edge lies in the cap";
+      EXPECT_GE(ringColatitude(drawn.finest * 20, 20), cap);
     }
   EXPECT_EQ(drawnLevels(1.5, 1e-20, 40).finest, 39) << "no finer than the mesh";
 }
