@@ -4,6 +4,7 @@
 // (drawn_levels.hpp), the sectors out of view left out (sector_culling.hpp): no tree, no cracks by construction,
 // triangles of about one size on screen. It draws the same deferred texturing buffer as the other generators.
 // docs/clipmap.md explains the parts and what differs from the paper.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -82,7 +83,10 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
       return heights_.boundsRegions() ? heights_.within(cap).range : heights_.range();
     };
     const double altitude = glm::length(frame.view.eye) - radius_;
-    const SphericalCap belowEye{directionOf(frame.view.reference), std::min(altitude / radius_, std::numbers::pi)};
+    // The ground within the eye's altitude of the point below it: farther ground lies farther than that ground
+    // may (an eye below the sphere: the point below it alone).
+    const SphericalCap belowEye{directionOf(frame.view.reference),
+                                std::clamp(altitude / radius_, 0.0, std::numbers::pi)};
     const double pixel = pixelColatitude(radius_, altitude, heightsOver(belowEye), 1.0 / frame.view.pixelsPerRadian());
     drawn_ = drawnLevels(horizonColatitude(radius_, altitude, heights_.range()), capColatitude(pixel),
                          rings_.settings.levels);
