@@ -140,8 +140,6 @@ void ClipmapGeometry::useSurface(const View& view) {
 void ClipmapGeometry::render(const FrameState& frame) {
   const View& view = frame.view;
   gbuffer_.begin(view.width, view.height, samples());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
   // No face culling, as geometry.healpix: a triangle through which a grazing ray enters steep relief may round to
   // back-facing. The horizon bounds the levels, so few back faces reach the rasteriser.
   useSurface(view);
@@ -150,7 +148,7 @@ void ClipmapGeometry::render(const FrameState& frame) {
   rasterisationTimer_->begin();
   buffers_->draw(ranges_);
   rasterisationTimer_->end();
-  glDisable(GL_DEPTH_TEST);
+  gbuffer_.end();
 }
 
 NodeTypeDeclaration declaration() {

@@ -16,9 +16,9 @@ std::uint32_t vertexIndex(const RingSettings& s, int ring, int column, bool west
 }
 
 HemisphereVertex vertexAt(double colatitude, double azimuth, bool west) {
-  const double horizontal = std::sin(colatitude), half = std::sin(0.5 * colatitude);
-  return {float(horizontal * std::sin(azimuth)), float(horizontal * std::cos(azimuth)), float(-2.0 * half * half),
-          float(west ? -colatitude : colatitude)};
+  const glm::dvec3 d = hemisphereDirection(colatitude, azimuth);
+  const double half = std::sin(0.5 * colatitude);
+  return {float(d.x), float(d.y), float(-2.0 * half * half), float(west ? -colatitude : colatitude)};
 }
 
 // Two triangles a quad between rings `outer` and outer + 1, columns `column` and column + 1, within one half.
@@ -36,6 +36,11 @@ int sectorsOf(const RingSettings& s) {
 }
 
 }  // namespace
+
+glm::dvec3 hemisphereDirection(double colatitude, double azimuth) {
+  const double horizontal = std::sin(colatitude);
+  return {horizontal * std::sin(azimuth), horizontal * std::cos(azimuth), std::cos(colatitude)};
+}
 
 double ringColatitude(int ring, int ringsPerLevel) {
   return std::numbers::pi * std::exp2(-double(ring) / double(ringsPerLevel));

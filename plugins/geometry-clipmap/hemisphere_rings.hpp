@@ -2,6 +2,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 namespace strata::clipmap {
 
 // The static hemisphere of spherical clipmaps [Clasen & Hege 2006, §3.4], built once and uploaded
@@ -44,6 +46,10 @@ struct HemisphereRings {
   std::vector<IndexRange> levels;      // level i's triangles, 2 steps ringsPerLevel of them, sector by sector
   std::vector<IndexRange> caps;        // the fill cap inside level i: `steps` triangles
 };
+
+// The unit vector at theta~ `colatitude` and phi~ `azimuth` (rad, clockwise from north) in the east-north-up frame of
+// the point below the viewer.
+glm::dvec3 hemisphereDirection(double colatitude, double azimuth);
 
 // theta~ of ring `ring` (0: the antipode), rad.
 double ringColatitude(int ring, int ringsPerLevel);

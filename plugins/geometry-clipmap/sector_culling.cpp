@@ -25,11 +25,6 @@ struct Wedge {
   double inner, outer, first, last;
 };
 
-// The unit vector at (theta~, phi~) in the east-north-up frame of the point below the eye.
-glm::dvec3 localDirection(double colatitude, double azimuth) {
-  return {std::sin(colatitude) * std::sin(azimuth), std::sin(colatitude) * std::cos(azimuth), std::cos(colatitude)};
-}
-
 // The colatitude of the wedge's outer points. The outer ring, a small circle about the nadir, bows out beyond the
 // great circles between its points: they are put where those great circles pass through the ring's farthest points,
 // tan(theta') = tan(theta) / cos(half their spacing). Within a quarter turn of the nadir (mayShow draws the rest).
@@ -44,7 +39,7 @@ std::array<glm::dvec3, 9> wedgeDirections(const Wedge& wedge) {
   std::array<glm::dvec3, 9> directions;
   for (std::size_t i = 0; i < 3; ++i)
     for (std::size_t j = 0; j < 3; ++j)
-      directions[3 * i + j] = localDirection(colatitudes[i], wedge.first + double(j) * spacing);
+      directions[3 * i + j] = hemisphereDirection(colatitudes[i], wedge.first + double(j) * spacing);
   return directions;
 }
 

@@ -150,8 +150,6 @@ void HealpixGeometry::render(const FrameState& frame) {
   const View& view = frame.view;
   buffers_->upload(batch_);
   gbuffer_.begin(view.width, view.height, samples());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
   // enters the ground is nearly edge-on, and the rasteriser's rounding may call it back-facing; culled, it
   // left the pixel to the back faces behind it and so to the sky (one pixel 2 m up, 88 degrees, Coverage).
@@ -162,7 +160,7 @@ void HealpixGeometry::render(const FrameState& frame) {
   rasterisationTimer_->begin();
   buffers_->draw();
   rasterisationTimer_->end();
-  glDisable(GL_DEPTH_TEST);
+  gbuffer_.end();
 }
 
 NodeTypeDeclaration declaration() {

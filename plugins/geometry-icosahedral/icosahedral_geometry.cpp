@@ -163,8 +163,6 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   subdivisionTimer_->end();
 
   gbuffer_.begin(frame.view.width, frame.view.height, samples());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
   // The far side of the body faces away: half the triangles need no fragments. From below the highest
   // terrain (inside a cut, under a translucent upper layer) the surface may be seen from beneath: no culling.
   if (glm::length(frame.view.eye) > radius_ + heights_.range().highest) glEnable(GL_CULL_FACE);
@@ -175,7 +173,7 @@ void IcosahedralGeometry::render(const FrameState& frame) {
   buffers_->draw();
   rasterisationTimer_->end();
   glDisable(GL_CULL_FACE);
-  glDisable(GL_DEPTH_TEST);
+  gbuffer_.end();
 }
 
 NodeTypeDeclaration declaration() {

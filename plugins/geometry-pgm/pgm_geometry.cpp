@@ -215,8 +215,6 @@ glm::ivec2 PgmGeometry::gridFor(const View& view, const SamplingCamera& camera) 
 
 void PgmGeometry::rasterise(const View& view) {
   gbuffer_.begin(view.width, view.height, samples());
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
   // No face culling: where relief slopes about as steeply as a grazing view, the triangle through which a ray
   // enters the ground is nearly edge-on, and the rasteriser's rounding may call it back-facing; culled, it
   // would leave the pixel to the sky (geometry.healpix lost a pixel so, 2 m up and tilted 88 degrees).
@@ -224,7 +222,7 @@ void PgmGeometry::rasterise(const View& view) {
   rasterisationTimer_->begin();
   mesh_->draw(castGrid_);
   rasterisationTimer_->end();
-  glDisable(GL_DEPTH_TEST);
+  gbuffer_.end();
 }
 
 NodeTypeDeclaration declaration() {

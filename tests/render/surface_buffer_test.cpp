@@ -36,6 +36,7 @@ TEST(SurfaceBuffer, TheBareSphereStoresLongitudeAndLatitudeAlone) {
   const std::vector<float> cleared = firstTexel(buffer.framebuffer().color(0));
   EXPECT_EQ(cleared[0], SurfaceBuffer::kNoSurface) << "no surface anywhere";
   EXPECT_EQ(cleared[1], 0.0f);
+  buffer.end();
 }
 
 TEST(SurfaceBuffer, ADisplacedSurfaceStoresItsNormalAndAGeneratorsOwnAttachmentsFollow) {
@@ -48,6 +49,7 @@ TEST(SurfaceBuffer, ADisplacedSurfaceStoresItsNormalAndAGeneratorsOwnAttachments
   EXPECT_EQ(firstTexel(buffer.framebuffer().color(1))[0], 5.0f) << "its own clear value";
   EXPECT_EQ(firstTexel(buffer.framebuffer().depth(), GL_DEPTH_COMPONENT)[0], 0.0f)
       << "reversed depth: 0 is infinitely far";
+  buffer.end();
 }
 
 TEST(SurfaceBuffer, MultisampledBuffersKeepTheLayout) {
@@ -57,7 +59,21 @@ TEST(SurfaceBuffer, MultisampledBuffersKeepTheLayout) {
     buffer.begin(16, 8, 4);
     EXPECT_EQ(buffer.framebuffer().samples(), 4);
     EXPECT_EQ(internalFormat(buffer.framebuffer().color(0)), normal == ShadingNormal::Stored ? GL_RGBA32F : GL_RG32F);
+    buffer.end();
   }
+}
+
+TEST(SurfaceBuffer, DrawingIntoItTakesTheReversedDepthTest) {
+  headlessContext();
+  SurfaceBuffer buffer(ShadingNormal::OfTheSphere);
+  glDepthFunc(GL_LESS);
+  buffer.begin(16, 8, 1);
+  GLint function = 0;
+  glGetIntegerv(GL_DEPTH_FUNC, &function);
+  EXPECT_TRUE(glIsEnabled(GL_DEPTH_TEST));
+  EXPECT_EQ(function, GL_GREATER) << "nearer is larger";
+  buffer.end();
+  EXPECT_FALSE(glIsEnabled(GL_DEPTH_TEST));
 }
 
 }  // namespace

@@ -25,6 +25,10 @@ void SurfaceBuffer::begin(int width, int height, int samples) {
   for (std::size_t i = 0; i < extra_.size(); ++i)
     glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, GLint(kSharedAttachments + i), extra_[i].clear.data());
   glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &farDepth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
 }
+
+void SurfaceBuffer::end() const { glDisable(GL_DEPTH_TEST); }
 
 }  // namespace strata

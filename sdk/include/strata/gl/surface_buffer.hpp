@@ -40,8 +40,10 @@ class SurfaceBuffer {
 
   // Before drawing a frame of width x height, `samples` per pixel: (re)makes the attachments when the size
   // or the samples changed, binds the buffer with its viewport and clears it: no surface anywhere, depth at
-  // infinity (0, reversed).
+  // infinity (0, reversed); and turns on the depth test its reversed depth takes (GL_GREATER: nearer is larger).
   void begin(int width, int height, int samples);
+  // After drawing: the depth test off again.
+  void end() const;
   const Framebuffer& framebuffer() const { return framebuffer_; }
 
  private:
