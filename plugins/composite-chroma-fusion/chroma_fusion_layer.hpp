@@ -39,6 +39,7 @@ class ChromaFusionLayer : public Layer, public ProjectedLayer {
   // The colour layer's: the result has data where it has, the luminance only refining it.
   ProjectionAspect aspect() const override { return aspectOf(colour_); }
   void setPageDemand(PageDemand demand) const override;
+  std::uint64_t revision() const override { return summedRevision({&luminance_, &colour_}); }
 
  private:
   std::string panLuminance() const;

@@ -82,6 +82,12 @@ std::string PeelLayer::glsl() const {
          "}\n";
 }
 
+void PeelLayer::repeel(Peel peel, Cutaway cutaway) {
+  peel_ = peel;
+  cutaway_ = cutaway;
+  ++repeeled_;
+}
+
 void PeelLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   for (const Layer* layer : stack_) layer->bind(program, units);
   program.set(prefix_ + "_peel", peel_.layers);

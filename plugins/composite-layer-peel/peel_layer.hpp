@@ -1,4 +1,5 @@
 #pragma once
+#include <atomic>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -35,11 +36,9 @@ class PeelLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override { return spanningRange(stack_); }
+  std::uint64_t revision() const override { return summedRevision(stack_) + repeeled_; }
   // A new peel and cutaway for the next frame: their values are uniforms.
-  void repeel(Peel peel, Cutaway cutaway) {
-    peel_ = peel;
-    cutaway_ = cutaway;
-  }
+  void repeel(Peel peel, Cutaway cutaway);
 
   // What composite.peeled_surface builds on, in glsl():
   //   float <stackFunction()>(SurfacePoint p, out float surfaces[stackSize()])
@@ -58,6 +57,7 @@ class PeelLayer : public Layer {
   std::vector<const Layer*> stack_;
   Peel peel_;
   Cutaway cutaway_;
+  std::atomic<std::uint64_t> repeeled_{0};  // times repeel() changed the peel or the cutaway
   double radius_;
 };
 

@@ -25,6 +25,7 @@ class PeeledSurfaceLayer : public Layer {
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
+  std::uint64_t revision() const override { return peel_.revision() + summedRevision(surfaces_); }
   // New cut-face colours for the next frame: they are uniforms.
   void recolour(std::vector<double> faces) { faces_ = std::move(faces); }
 

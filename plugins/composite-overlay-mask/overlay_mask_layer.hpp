@@ -31,6 +31,9 @@ class OverlayMaskLayer : public Layer, public ProjectedLayer {
   // The base's: what the composed layer is, but for the overlay's local patch.
   ProjectionAspect aspect() const override { return aspectOf(base_); }
   void setPageDemand(PageDemand demand) const override;
+  std::uint64_t revision() const override {
+    return summedRevision({&base_, &overlay_}) + (mask_ ? mask_->revision() : 0);
+  }
   std::optional<ValueRange> valueRange() const override;
 
  private:

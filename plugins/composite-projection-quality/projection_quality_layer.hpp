@@ -30,6 +30,7 @@ class ProjectionQualityLayer : public Layer {
   void setWeighting(const Weighting& weighting) { weighting_ = weighting; }
 
   LayerKind kind() const override { return inputs_.front()->kind(); }
+  std::uint64_t revision() const override { return summedRevision(inputs_); }
   std::string samplingFunction() const override { return prefix_; }
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;

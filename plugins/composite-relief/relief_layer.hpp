@@ -48,6 +48,7 @@ class ReliefLayer : public Layer {
   std::string glsl() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
+  std::uint64_t revision() const override { return height_.revision() + (surface_ ? surface_->revision() : 0); }
   // New lighting for the next frame: its values are uniforms.
   void relight(Lighting lighting) { lighting_ = std::move(lighting); }
 

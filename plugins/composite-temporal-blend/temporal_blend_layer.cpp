@@ -10,9 +10,11 @@ TemporalBlendLayer::TemporalBlendLayer(const std::string& nodeId, std::vector<co
     : prefix_("layer_" + glslIdentifier(nodeId)), steps_(std::move(steps)) {}
 
 void TemporalBlendLayer::show(const Bracket& bracket) {
+  if (earlier_ == int(bracket.earlier) && later_ == int(bracket.later) && fraction_ == float(bracket.fraction)) return;
   earlier_ = int(bracket.earlier);
   later_ = int(bracket.later);
   fraction_ = float(bracket.fraction);
+  ++reshown_;
 }
 
 bool TemporalBlendLayer::everyStepHas(FunctionOf of) const {

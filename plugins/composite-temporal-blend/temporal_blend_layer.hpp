@@ -35,6 +35,7 @@ class TemporalBlendLayer : public Layer, public TexelledLayer, public ProjectedL
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
   std::optional<ValueRange> valueRange() const override;
+  std::uint64_t revision() const override { return summedRevision(steps_) + reshown_; }
 
  private:
   // A GLSL function a layer names: Layer::samplingFunction, or a capability's (texelStepsFunctionOf...).
@@ -50,6 +51,7 @@ class TemporalBlendLayer : public Layer, public TexelledLayer, public ProjectedL
   std::vector<const Layer*> steps_;
   std::atomic<int> earlier_{0}, later_{0};
   std::atomic<float> fraction_{0.0f};
+  std::atomic<std::uint64_t> reshown_{0};  // times show() changed the bracket
 };
 
 }  // namespace strata::composite

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -24,6 +25,7 @@
 #include <strata/plugin/spherical_cap.hpp>
 
 #include "drawn_levels.hpp"
+#include "height_clipmaps.hpp"
 #include "hemisphere_buffers.hpp"
 #include "hemisphere_rings.hpp"
 #include "plugin_shaders.hpp"
@@ -67,11 +69,21 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
   void open() override { heights_.open(); }
 
   void createResources(GpuContext& gpu) override {
+    std::map<std::string, std::string> substitutions = heights_.substitutions();
+    substitutions["STRATA_PROGRAM_DEFINES"] +=
+        "\n#define STRATA_CLIPMAP_LEVELS " + std::to_string(rings_.settings.levels);
     surface_ = ShaderProgram(
         {{GL_VERTEX_SHADER, "geometry-clipmap/clipmap_surface.vert",
-          gpu.shaders->expand("geometry-clipmap/clipmap_surface.vert", heights_.substitutions())},
+          gpu.shaders->expand("geometry-clipmap/clipmap_surface.vert", substitutions)},
          {GL_FRAGMENT_SHADER, "strata/surface_buffer.frag", gpu.shaders->expand("strata/surface_buffer.frag")}});
+    if (heights_.layer())
+      clipmaps_.emplace(clipmapTexels(rings_.settings.steps),
+                        ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_fill.comp",
+                                        gpu.shaders->expand("geometry-clipmap/clipmap_fill.comp", substitutions)}}),
+                        ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_slopes.comp",
+                                        gpu.shaders->expand("geometry-clipmap/clipmap_slopes.comp")}}));
     buffers_.emplace(rings_);
+    samplingTimer_.emplace();
     rasterisationTimer_.emplace();
   }
 
@@ -94,11 +106,12 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
     visibilityMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
-  // Patches: the levels drawn; vertices: those their triangles name, counted three a triangle.
+  // Patches: the levels drawn; vertices: those their triangles name, counted three a triangle; subdivision: the
+  // height clipmaps' sampling.
   GeometryStatistics statistics() const override {
     std::uint64_t indices = 0;
     for (const IndexRange& range : ranges_) indices += range.count;
-    return {drawn_.finest - drawn_.coarsest + 1, indices, indices / 3, visibilityMs_, 0.0,
+    return {drawn_.finest - drawn_.coarsest + 1, indices, indices / 3, visibilityMs_, samplingTimer_->milliseconds(),
             rasterisationTimer_->milliseconds()};
   }
 
@@ -118,7 +131,8 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
   std::vector<IndexRange> ranges_;
   ShaderProgram surface_;
   std::optional<HemisphereBuffers> buffers_;
-  std::optional<GpuTimer> rasterisationTimer_;
+  std::optional<HeightClipmaps> clipmaps_;  // with a height layer
+  std::optional<GpuTimer> samplingTimer_, rasterisationTimer_;
   double visibilityMs_ = 0.0;
   SurfaceBuffer gbuffer_{heights_.shadingNormal()};
 };
@@ -134,17 +148,19 @@ void ClipmapGeometry::useSurface(const View& view) {
   surface_.set("referenceLonlat", glm::vec2(view.reference));
   surface_.set("radius", float(radius_));
   surface_.set("altitude", float(glm::length(view.eye) - radius_));
-  surface_.set("ringSpacing", float(1.0 - std::exp2(-1.0 / rings_.settings.ringsPerLevel)));
 }
 
 void ClipmapGeometry::render(const FrameState& frame) {
   const View& view = frame.view;
+  samplingTimer_->begin();  // the windows of the levels drawn and of the one outside them they blend into
+  if (clipmaps_) clipmaps_->update(view, radius_, *heights_.layer(), std::max(drawn_.coarsest - 1, 0), drawn_.finest);
+  samplingTimer_->end();
   gbuffer_.begin(view.width, view.height, samples());
   // No face culling, as geometry.healpix: a triangle through which a grazing ray enters steep relief may round to
   // back-facing. The horizon bounds the levels, so few back faces reach the rasteriser.
   useSurface(view);
   TextureUnits units;
-  if (heights_.layer()) heights_.layer()->bind(surface_, units);
+  if (clipmaps_) clipmaps_->bind(surface_, units, view.reference);
   rasterisationTimer_->begin();
   buffers_->draw(ranges_);
   rasterisationTimer_->end();

@@ -7,8 +7,8 @@ STRATA_PROGRAM_DEFINES
 // rings near the viewer to cancellation (the paper's Fig. 13; its Eqs. 9 to 14 approximate around it, §5.1).
 // lonlatFromReference does that turn and both angles without cancellation, so every ring, down to a millimetre
 // from the nadir, takes its longitude and latitude from the frame's reference exactly as float resolves them.
-// The vertex's place comes from the eye in the same frame, whose vertical difference the mesh holds as
-// cos(theta~) - 1 (docs/architecture.md, "Precision").
+// Heights come from the height clipmaps (clipmap_heights.glsl). The vertex's place comes from the eye in the same
+// frame, whose vertical difference the mesh holds as cos(theta~) - 1 (docs/architecture.md, "Precision").
 #include "strata/constants.glsl"
 #include "strata/precise_trig.glsl"
 #include "strata/surface_point.glsl"
@@ -23,14 +23,13 @@ uniform vec2 referenceLatitude;  // sin and cos of the reference latitude
 uniform vec2 referenceLonlat;    // rad: the point below the eye
 uniform float radius;            // m
 uniform float altitude;          // m: the eye above the radius
-uniform float ringSpacing;       // 1 - 2^(-1/m): the rings' spacing per rad of theta~
 
 out vec2 vLonlatFromReference;
 out vec3 vShadingNormal;
 
 #ifdef STRATA_HAS_HEIGHT
-STRATA_HEIGHT_LAYER_GLSL
-#include "strata/height_sampling.glsl"
+#include "geometry-clipmap/clipmap_heights.glsl"
+#include "strata/normal_of_slopes.glsl"
 #endif
 
 void main() {
@@ -40,10 +39,9 @@ void main() {
   vec3 shading = normal;
   float h = 0.0;
 #ifdef STRATA_HAS_HEIGHT
-  // Filtered over the rings' spacing, a circle on the ground ([Clasen & Hege 2006, §4.3]: the pyramid filtered
-  // in world space); the paper's height clipmap, n / 4 texels across n steps, filters over about as much.
-  float spacing = abs(hemisphere.w) * ringSpacing;
-  h = heightAndShadingNormal(lonlat, normal, spacing, shading);
+  vec3 sampled = clipmapHeight(lonlat, abs(hemisphere.w));
+  h = sampled.x;
+  shading = normalOfSlopes(h, referenceLonlat + lonlat, normal, sampled.yz);
 #endif
   vec3 fromEye = vec3((radius + h) * hemisphere.xy, (radius + h) * hemisphere.z + (h - altitude));
   gl_Position = projection * vec4(localToEye * fromEye, 1.0);

@@ -32,13 +32,7 @@ float heightAtFacePoint(vec3 point, float spacing) {
 }
 #endif
 
-// The displaced surface's normal at height `h` from its slopes east and north (rise per rad along the ground).
-vec3 normalOfSlopes(float h, vec2 lonlat, vec3 normal, vec2 slopes) {
-  vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
-  vec3 north = cross(normal, east);
-  slopes /= radius + h;
-  return normalize(normal - slopes.x * east - slopes.y * north);
-}
+#include "strata/normal_of_slopes.glsl"
 
 #ifdef STRATA_HEIGHT_SLOPED_FUNCTION
 // The height and its slopes (per rad along the ground) at `fromReference`, filtered as heightAt filters: one sample

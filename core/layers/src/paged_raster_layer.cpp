@@ -88,4 +88,6 @@ void PagedRasterLayer::setPageDemand(PageDemand demand) const {
   if (cache_) cache_->setDemand(placement_.layer, demand);
 }
 
+std::uint64_t PagedRasterLayer::revision() const { return cache_ ? cache_->revision(placement_.layer) : 0; }
+
 }  // namespace strata

@@ -34,6 +34,7 @@ struct AttachedLayer {
   std::set<PageKey> failed;         // never asked for again
   PageDemand demand = PageDemand::Shown;
   std::optional<int> toSceneLinear;  // the conversion its colour pages take after upload, if any
+  std::uint64_t revision = 0;        // pages placed or evicted: PageCache::revision
 };
 
 }  // namespace
@@ -110,6 +111,8 @@ void PageCache::setDemand(int layer, PageDemand demand) {
   const std::lock_guard lock(impl_->demandMutex);
   impl_->layers.at(std::size_t(layer)).demand = demand;
 }
+
+std::uint64_t PageCache::revision(int layer) const { return impl_->layers.at(std::size_t(layer)).revision; }
 
 bool PageCache::loading() const { return impl_->loader && impl_->loader->outstanding() > 0; }
 
@@ -285,6 +288,7 @@ void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool 
   if (evicted) {
     layers[std::size_t(evicted->layer)].resident.erase(evicted->key);
     index.place(evicted->layer, evicted->key, std::nullopt);
+    ++layers[std::size_t(evicted->layer)].revision;
     ++statistics.evicted;
   }
   uploads->upload(atlas.texture(), atlas.format(), *slot, loaded.texels);
@@ -293,6 +297,7 @@ void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool 
   atlas.hold(*slot, loaded.page, frame, pinned);
   layer.resident[loaded.page.key] = *slot;
   index.place(loaded.page.layer, loaded.page.key, *slot);
+  ++layer.revision;
   ++statistics.uploaded;
 }
 

@@ -121,6 +121,8 @@ class SlopeMaskLayer : public strata::Layer {
     height_.setPageDemand(demand);
     surface_.setPageDemand(demand);
   }
+  // Its values change as its inputs' do (pages arriving beneath it).
+  std::uint64_t revision() const override { return height_.revision() + surface_.revision(); }
 
   void restyle(MaskStyle style) { style_ = style; }  // for the next bind(): uniforms only
 

@@ -82,6 +82,9 @@ class PageCache {
   // How much `layer`'s pages are wanted from the next update() on (PageDemand). Any thread: nodes call it
   // from prepare().
   void setDemand(int layer, PageDemand demand);
+  // How many times a page of `layer` has been placed or evicted: the layer's values change when it grows
+  // (Layer::revision).
+  std::uint64_t revision(int layer) const;
   // Whether pages the last update wanted are still on their way.
   bool loading() const;
   // Blocks until a requested page has been read (or `loading()` is false).

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <strata/export.hpp>
@@ -66,6 +67,11 @@ class Layer {
   // The values the layer can return, once its node has opened, where its source knows them for certain
   // (geometry uses them to check what it may cull); none where it does not.
   virtual std::optional<ValueRange> valueRange() const { return std::nullopt; }
+  // A count that grows whenever the values the sampling function returns may have changed: a page arriving in
+  // place of the coarser one that stood in or leaving, a time series moving on, a cut moved; any of a
+  // compositor's inputs changing. 0 for a layer whose values never change. Consumers that keep what they sampled
+  // (geometry.clipmap's height clipmaps) sample again when it grows. Any thread, once the frame's prepare() is done.
+  virtual std::uint64_t revision() const { return 0; }
   // The capability `Capability` (strata/plugin/layer_capabilities.hpp: texels, a projection's aspect, values by
   // region, HEALPix faces) where this layer offers it, else nullptr.
   template <class Capability>
@@ -82,6 +88,9 @@ std::vector<const Layer*> layersOfOneKind(const std::vector<Node*>& nodes, const
 // The range spanning every one of `layers`' value ranges, within which whatever mixes them stays (a weighted
 // average, a blend in time, one laid over another); none where one of them knows none.
 std::optional<ValueRange> spanningRange(const std::vector<const Layer*>& layers);
+
+// The revisions of `layers` summed: it grows whenever one of theirs grows. What a compositor's revision() is.
+std::uint64_t summedRevision(const std::vector<const Layer*>& layers);
 
 // Turns a node id into a GLSL identifier fragment ("my-dem" -> "my_dem"), for unique function names.
 std::string glslIdentifier(const std::string& nodeId);

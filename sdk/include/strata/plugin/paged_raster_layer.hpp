@@ -30,6 +30,8 @@ class PagedRasterLayer : public ProjectedRasterLayer, public HealpixFaceLayer, p
   std::string slopedSamplingFunction() const override;
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
+  // Its pages placed or evicted (PageCache::revision).
+  std::uint64_t revision() const override;
 
   // A HEALPix pyramid's pages' true ranges (strata/plugin/healpix_pyramid.hpp), which faceNodeValues() reads.
   void setPageRanges(std::shared_ptr<const healpix::PageRanges> ranges) { pageRanges_ = std::move(ranges); }
