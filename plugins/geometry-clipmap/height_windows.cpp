@@ -18,8 +18,8 @@ constexpr double kLongitudeSteps = 4.0;
 // `position` reads, `position` in texels.
 std::int64_t firstTexel(double position) { return std::int64_t(std::floor(position - 0.5)); }
 
-// Half the longitude a cap of `angle` rad about a point at `latitude` spans (the digest's §1.5), or none where the
-// cap holds a pole.
+// Half the longitude a cap of `angle` rad about a point at `latitude` spans ([Clasen & Hege 2006, §4.1] as corrected
+// in docs/references.md, Errata), or none where the cap holds a pole.
 std::optional<double> halfLongitudeExtent(double angle, double latitude) {
   if (angle >= kPi / 2.0 - std::abs(latitude)) return std::nullopt;
   return std::asin(std::min(1.0, std::sin(angle) / std::cos(latitude)));

@@ -11,11 +11,11 @@ namespace strata::clipmap {
 // longitude and latitude about the point below the eye, which hold every point within the level's theta~
 // (pi 2^-level) of it with a texel to spare for bilinear filtering.
 // - Latitude: the level's 2 theta~ across `texels` - 4 texels, one fixed size a level.
-// - Longitude: the cap's extent there (§4.1, the digest's corrected form: asin(sin theta~ / cos latitude) either
-//   way) in a texel that is the latitude's times a power of 2^(1/4), so that moving north or south changes it only
-//   in steps, and the window's texels stay where they are in between (§4.1 steps by powers of two, which double
-//   the texel just off the equator). Where the cap holds a pole, or the texel would span more than a turn, the
-//   window spans the whole turn.
+// - Longitude: the cap's extent there (§4.1 as docs/references.md corrects it: asin(sin theta~ / cos latitude)
+//   either way) in a texel that is the latitude's times a power of 2^(1/4), so that moving north or south changes
+//   it only in steps, and the window's texels stay where they are in between (§4.1 steps by powers of two, which
+//   double the texel just off the equator). Where the cap holds a pole, or the texel would span more than a turn,
+//   the window spans the whole turn.
 // Texel (i, j) of the body's lattice for a window's texel sizes covers longitude [i, i + 1) texels east of the
 // prime meridian and latitude [j, j + 1) texels north of the south pole. A window's texel k (0 to texels - 1
 // each way) is lattice texel origin + k, kept in its texture at (origin + k) mod texels: moving the window
