@@ -4,14 +4,18 @@ STRATA_PROGRAM_DEFINES
 // Samples a block of one level's height clipmap window (height_windows.hpp) from the height layer
 // ([Clasen & Hege 2006, §3.1, §4.1]): each texel's height at its centre, over a circle on the ground that covers
 // the texel (§4.3: the pyramid filtered in world space, its kernel a circle on the ground given in longitude and
-// latitude), stored where the toroidal window keeps that texel; clipmap_slopes.comp differences them. Texel centres
-// are measured from the frame's reference in float from a corner worked out in double, as every sample of every
-// layer is (docs/architecture.md, "Precision").
+// latitude), stored where the toroidal window keeps that texel, with its slopes where the layer gives them with its
+// value (SlopedLayer: a raster's, interpolated from central differences of its own texels); else
+// clipmap_slopes.comp differences the heights. Texel centres are measured from the frame's reference in float from
+// a corner worked out in double, as every sample of every layer is (docs/architecture.md, "Precision").
 #include "strata/constants.glsl"
 #include "strata/surface_point.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r32f, binding = 0) uniform writeonly image2DArray heights;  // m
+#ifdef STRATA_HEIGHT_SLOPED_FUNCTION
+layout(rg16f, binding = 1) uniform writeonly image2DArray slopes;  // rise per metre along the ground
+#endif
 
 uniform vec2 referenceLonlat;     // rad: the point below the eye (View::reference)
 uniform float radius;             // m
@@ -39,5 +43,12 @@ void main() {
   float longitude = referenceLonlat.x + fromReference.x;
   vec3 normal = vec3(cos(latitude) * cos(longitude), cos(latitude) * sin(longitude), sin(latitude));
   float spacing = max(texel.y, texel.x * cos(latitude));
-  imageStore(heights, ivec3((offset + k) % texels, layer), vec4(heightAt(fromReference, normal, spacing)));
+  ivec3 stored = ivec3((offset + k) % texels, layer);
+#ifdef STRATA_HEIGHT_SLOPED_FUNCTION
+  vec4 sampled = slopedHeightAt(fromReference, normal, spacing);
+  imageStore(heights, stored, vec4(sampled.r));
+  imageStore(slopes, stored, vec4(sampled.gb / radius, 0.0, 0.0));
+#else
+  imageStore(heights, stored, vec4(heightAt(fromReference, normal, spacing)));
+#endif
 }

@@ -20,6 +20,7 @@
 #include <strata/plugin/geometry.hpp>
 #include <strata/plugin/height_input.hpp>
 #include <strata/plugin/layer.hpp>
+#include <strata/plugin/layer_capabilities.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
 #include <strata/plugin/spherical_cap.hpp>
@@ -77,11 +78,14 @@ class ClipmapGeometry : public Node, public SurfaceGeometry {
           gpu.shaders->expand("geometry-clipmap/clipmap_surface.vert", substitutions)},
          {GL_FRAGMENT_SHADER, "strata/surface_buffer.frag", gpu.shaders->expand("strata/surface_buffer.frag")}});
     if (heights_.layer())
-      clipmaps_.emplace(clipmapTexels(rings_.settings.steps),
-                        ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_fill.comp",
-                                        gpu.shaders->expand("geometry-clipmap/clipmap_fill.comp", substitutions)}}),
-                        ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_slopes.comp",
-                                        gpu.shaders->expand("geometry-clipmap/clipmap_slopes.comp")}}));
+      clipmaps_.emplace(
+          clipmapTexels(rings_.settings.steps),
+          ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_fill.comp",
+                          gpu.shaders->expand("geometry-clipmap/clipmap_fill.comp", substitutions)}}),
+          slopedSamplingFunctionOf(*heights_.layer()).empty()
+              ? std::optional(ShaderProgram({{GL_COMPUTE_SHADER, "geometry-clipmap/clipmap_slopes.comp",
+                                              gpu.shaders->expand("geometry-clipmap/clipmap_slopes.comp")}}))
+              : std::nullopt);
     buffers_.emplace(rings_);
     samplingTimer_.emplace();
     rasterisationTimer_.emplace();

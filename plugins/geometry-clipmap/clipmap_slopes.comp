@@ -1,8 +1,9 @@
 #version 450 core
 // The slopes of a block of one level's height clipmap window, east and north, from central differences of the
 // heights clipmap_fill.comp sampled (one-sided at the window's edges; a window spanning the turn wraps east and
-// west): one sample of the height layer a texel rather than five, the texels a texel apart, as far as the rings'
-// vertices. Stored as rise per metre along the ground, which RG16F keeps to a thousandth for shading.
+// west), for a height layer that gives no slopes of its own (procedural relief): one sample of it a texel rather
+// than five, the texels a texel apart, as far as the rings' vertices. Stored as rise per metre along the ground,
+// which RG16F keeps to a thousandth for shading.
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(r32f, binding = 0) uniform readonly image2DArray heights;  // m
 layout(rg16f, binding = 1) uniform writeonly image2DArray slopes;

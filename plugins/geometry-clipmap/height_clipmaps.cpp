@@ -15,7 +15,7 @@ TexelBlock grown(const TexelBlock& block, int texels) {
 
 }  // namespace
 
-HeightClipmaps::HeightClipmaps(int texels, ShaderProgram fill, ShaderProgram slopes)
+HeightClipmaps::HeightClipmaps(int texels, ShaderProgram fill, std::optional<ShaderProgram> slopes)
     : texels_(texels), fill_(std::move(fill)), slopes_(std::move(slopes)) {}
 
 HeightClipmaps::~HeightClipmaps() { glDeleteTextures(2, textures_); }
@@ -63,15 +63,20 @@ void HeightClipmaps::update(const View& view, double radius, const Layer& layer,
       dispatch(fill_, at, held_[std::size_t(at)].window, block, view.reference);
       sampled_ += std::uint64_t(block.count.x) * std::uint64_t(block.count.y);
     }
+  if (slopes_) differenceSlopes(moved, view, radius);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
+void HeightClipmaps::differenceSlopes(const std::vector<std::pair<int, std::vector<TexelBlock>>>& moved,
+                                      const View& view, double radius) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  useWithFrame(slopes_, view, radius);
+  useWithFrame(*slopes_, view, radius);
   for (const auto& [level, blocks] : moved)
     for (const TexelBlock& block : blocks) {
       const int at = int(std::size_t(level) % held_.size());
-      slopes_.set("wholeTurn", int(held_[std::size_t(at)].window.wholeTurn));
-      dispatch(slopes_, at, held_[std::size_t(at)].window, grown(block, texels_), view.reference);
+      slopes_->set("wholeTurn", int(held_[std::size_t(at)].window.wholeTurn));
+      dispatch(*slopes_, at, held_[std::size_t(at)].window, grown(block, texels_), view.reference);
     }
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void HeightClipmaps::dispatch(ShaderProgram& program, int layer, const HeightWindow& window, const TexelBlock& block,

@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <strata/camera.hpp>
@@ -17,15 +18,17 @@ namespace strata::clipmap {
 
 // The height clipmaps of spherical clipmaps [Clasen & Hege 2006, §3.1, §4.1 to §4.3]: each level's window
 // (height_windows.hpp) in one layer of two array textures, the height (R32F, m) and its slopes east and north
-// (RG16F, rise per metre along the ground, which half floats keep to a thousandth for shading): the heights sampled
-// from the height layer (clipmap_fill.comp), the slopes differenced from them (clipmap_slopes.comp). A frame samples
+// (RG16F, rise per metre along the ground, which half floats keep to a thousandth for shading), sampled from the
+// height layer (clipmap_fill.comp), the slopes with them where the layer gives its own, else differenced from the
+// heights (clipmap_slopes.comp). A frame samples
 // only the texels its windows moved in, and every texel again once the layer's values have changed
 // (Layer::revision): pages arriving in place of the coarser ones that stood in, a time series moving on. Level i
 // lies in layer i mod the layers held, as many as the most levels a frame has asked for: a view from orbit holds few.
 class HeightClipmaps {
  public:
-  // `texels` a window across; `fill` samples the height layer, `slopes` differences the heights. On the GL thread.
-  HeightClipmaps(int texels, ShaderProgram fill, ShaderProgram slopes);
+  // `texels` a window across; `fill` samples the height layer, `slopes` (where the layer gives no slopes of its own)
+  // differences the heights. On the GL thread.
+  HeightClipmaps(int texels, ShaderProgram fill, std::optional<ShaderProgram> slopes);
   ~HeightClipmaps();
   HeightClipmaps(const HeightClipmaps&) = delete;
   HeightClipmaps& operator=(const HeightClipmaps&) = delete;
@@ -49,9 +52,13 @@ class HeightClipmaps {
   void dispatch(ShaderProgram& program, int layer, const HeightWindow& window, const TexelBlock& block,
                 glm::dvec2 reference) const;
   void useWithFrame(ShaderProgram& program, const View& view, double radius) const;
+  // The slopes of the blocks each level moved in (`moved`), and of the texels beside them, from the heights.
+  void differenceSlopes(const std::vector<std::pair<int, std::vector<TexelBlock>>>& moved, const View& view,
+                        double radius);
 
   int texels_;
-  ShaderProgram fill_, slopes_;
+  ShaderProgram fill_;
+  std::optional<ShaderProgram> slopes_;
   GLuint textures_[2] = {};                // heights, slopes
   std::vector<HeldWindow> held_;           // per layer of the textures
   std::optional<std::uint64_t> revision_;  // the layer's when the held windows were sampled
