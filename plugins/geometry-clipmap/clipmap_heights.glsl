@@ -31,9 +31,11 @@ vec3 clipmapSample(int level, vec2 fromReference) {
 }
 
 // The height and slopes at `fromReference` for a vertex `colatitude` (theta~) from the nadir: its level's window,
-// blended into the next coarser one's over the level's outer third (as Losasso and Hoppe's geometry clipmaps blend
-// at a level's outer edge), so that the heights' filtering changes smoothly from ring to ring and a ring two
-// levels share gets one value. Level i spans theta~ from pi 2^-i to pi 2^-(i+1); the fill cap takes the finest.
+// blended into the next coarser one's over the outer tenth of the level (two of the paper's twenty rings; Losasso
+// and Hoppe's geometry clipmaps blend over a tenth of a level's width), so that the heights' filtering changes
+// smoothly from ring to ring and a ring two levels share gets one value. Over a whole level the coarser window's
+// texels blurred a cut's step in the heights past its edge. Level i spans theta~ from pi 2^-i to pi 2^-(i+1); the
+// fill cap takes the finest.
 vec3 clipmapHeight(vec2 fromReference, float colatitude) {
   float continuous = clamp(log2(PI / max(colatitude, 1e-30)), float(clipmapLevels.x), float(clipmapLevels.y) + 1.0);
   int level = min(int(floor(continuous)), clipmapLevels.y);

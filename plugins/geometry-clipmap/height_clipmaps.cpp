@@ -7,6 +7,8 @@
 namespace strata::clipmap {
 namespace {
 
+constexpr int kSpareLayers = 4;  // beyond the most levels a frame has asked for (height_clipmaps.hpp)
+
 // `block` grown by a texel each way within a window `texels` across: the texels whose central differences read it.
 TexelBlock grown(const TexelBlock& block, int texels) {
   const glm::ivec2 first = glm::max(block.first - 1, 0), last = glm::min(block.first + block.count + 1, texels);
@@ -29,7 +31,7 @@ void HeightClipmaps::allocate(int layers) {
   held_.assign(std::size_t(layers), {});
 }
 
-void HeightClipmaps::useWithFrame(ShaderProgram& program, const View& view, double radius) const {
+void HeightClipmaps::useFor(ShaderProgram& program, const View& view, double radius) const {
   program.use();
   program.set("referenceLonlat", glm::vec2(view.reference));
   program.set("radius", float(radius));
@@ -37,13 +39,12 @@ void HeightClipmaps::useWithFrame(ShaderProgram& program, const View& view, doub
 }
 
 void HeightClipmaps::update(const View& view, double radius, const Layer& layer, int coarsest, int finest) {
-  if (finest - coarsest + 1 > int(held_.size())) allocate(finest - coarsest + 1);
+  if (finest - coarsest + 1 > int(held_.size())) allocate(finest - coarsest + 1 + kSpareLayers);
   const std::uint64_t revision = layer.revision();
   if (revision_ != revision) std::fill(held_.begin(), held_.end(), HeldWindow{});
   revision_ = revision;
   coarsest_ = coarsest;
   finest_ = finest;
-  sampled_ = 0;
   std::vector<std::pair<int, std::vector<TexelBlock>>> moved;  // per level, the blocks it moved in
   for (int level = coarsest; level <= finest; ++level) {
     HeldWindow& held = held_[std::size_t(level) % held_.size()];
@@ -54,14 +55,13 @@ void HeightClipmaps::update(const View& view, double radius, const Layer& layer,
   }
   glBindImageTexture(0, textures_[0], 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32F);
   glBindImageTexture(1, textures_[1], 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RG16F);
-  useWithFrame(fill_, view, radius);
+  useFor(fill_, view, radius);
   TextureUnits units;
   layer.bind(fill_, units);
   for (const auto& [level, blocks] : moved)
     for (const TexelBlock& block : blocks) {
       const int at = int(std::size_t(level) % held_.size());
       dispatch(fill_, at, held_[std::size_t(at)].window, block, view.reference);
-      sampled_ += std::uint64_t(block.count.x) * std::uint64_t(block.count.y);
     }
   if (slopes_) differenceSlopes(moved, view, radius);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -70,7 +70,7 @@ void HeightClipmaps::update(const View& view, double radius, const Layer& layer,
 void HeightClipmaps::differenceSlopes(const std::vector<std::pair<int, std::vector<TexelBlock>>>& moved,
                                       const View& view, double radius) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-  useWithFrame(*slopes_, view, radius);
+  useFor(*slopes_, view, radius);
   for (const auto& [level, blocks] : moved)
     for (const TexelBlock& block : blocks) {
       const int at = int(std::size_t(level) % held_.size());

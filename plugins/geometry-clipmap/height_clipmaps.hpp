@@ -20,10 +20,10 @@ namespace strata::clipmap {
 // (height_windows.hpp) in one layer of two array textures, the height (R32F, m) and its slopes east and north
 // (RG16F, rise per metre along the ground, which half floats keep to a thousandth for shading), sampled from the
 // height layer (clipmap_fill.comp), the slopes with them where the layer gives its own, else differenced from the
-// heights (clipmap_slopes.comp). A frame samples
-// only the texels its windows moved in, and every texel again once the layer's values have changed
-// (Layer::revision): pages arriving in place of the coarser ones that stood in, a time series moving on. Level i
-// lies in layer i mod the layers held, as many as the most levels a frame has asked for: a view from orbit holds few.
+// heights (clipmap_slopes.comp). A frame samples only the texels its windows moved in, and every texel again once
+// the layer's values have changed (Layer::revision): pages arriving in place of the coarser ones that stood in, a
+// time series moving on. Level i lies in layer i mod the layers held: four more than the most levels a frame has
+// asked for, so that a descent adding a level at a time does not sample every window again each time.
 class HeightClipmaps {
  public:
   // `texels` a window across; `fill` samples the height layer, `slopes` (where the layer gives no slopes of its own)
@@ -39,8 +39,6 @@ class HeightClipmaps {
   // Binds the textures and sets the windows' uniforms (clipmap_heights.glsl) in `surface` (current), measured from
   // `reference`, for the levels the last update() brought there.
   void bind(ShaderProgram& surface, TextureUnits& units, glm::dvec2 reference) const;
-  // Texels the last update() sampled.
-  std::uint64_t texelsSampled() const { return sampled_; }
 
  private:
   struct HeldWindow {
@@ -51,7 +49,8 @@ class HeightClipmaps {
   // Programs `program` (current) for `window` in layer `layer`, and dispatches it over `block`.
   void dispatch(ShaderProgram& program, int layer, const HeightWindow& window, const TexelBlock& block,
                 glm::dvec2 reference) const;
-  void useWithFrame(ShaderProgram& program, const View& view, double radius) const;
+  // Makes `program` current with the frame's uniforms.
+  void useFor(ShaderProgram& program, const View& view, double radius) const;
   // The slopes of the blocks each level moved in (`moved`), and of the texels beside them, from the heights.
   void differenceSlopes(const std::vector<std::pair<int, std::vector<TexelBlock>>>& moved, const View& view,
                         double radius);
@@ -63,7 +62,6 @@ class HeightClipmaps {
   std::vector<HeldWindow> held_;           // per layer of the textures
   std::optional<std::uint64_t> revision_;  // the layer's when the held windows were sampled
   int coarsest_ = 0, finest_ = -1;
-  std::uint64_t sampled_ = 0;
 };
 
 }  // namespace strata::clipmap

@@ -31,7 +31,7 @@ struct HeightWindow {
 // enough [Clasen & Hege 2006, §4.2], counting the texels a level's square window has along its rim, but a ring's
 // vertices lie pi theta~ / n apart around it at a level's inner edge, where n / 4 texels put a texel 2.5 of them
 // across: a quarter-metre DEM seen at 45 degrees from 10 m came out 3.3 cm off where n / 2 keeps it within 1 cm,
-// and a cut's step in the heights moved by a texel showed. At the default 512 steps, 256 texels: 0.75 MB a level.
+// and a cut's step in the heights moved by a texel showed. At the default 512 steps, 256 texels: 0.5 MB a level.
 int clipmapTexels(int steps);
 
 // The window of level `level` about `reference` (rad: longitude, latitude), `texels` across (at least 8).
