@@ -3,13 +3,13 @@
 # runs it for SECONDS (default 600) on its seed corpus (docs/fuzzing.md). New inputs go to a scratch corpus in
 # build-fuzz/fuzz-runs/NAME, never into the repository; crashes, leaks and timeouts land in its crashes/.
 # Arguments after SECONDS go to libFuzzer (-jobs=2, -only_ascii=1, ...).
-#   scripts/fuzz.sh pipeline|raster_page [SECONDS] [LIBFUZZER-OPTION...]
+#   scripts/fuzz.sh pipeline|raster_page|bdam_patch [SECONDS] [LIBFUZZER-OPTION...]
 set -euo pipefail
-name=${1:?usage: scripts/fuzz.sh pipeline|raster_page [SECONDS] [LIBFUZZER-OPTION...]}
+name=${1:?usage: scripts/fuzz.sh pipeline|raster_page|bdam_patch [SECONDS] [LIBFUZZER-OPTION...]}
 seconds=${2:-600}
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${STRATA_FUZZ_BUILD:-$root/build-fuzz}
-[[ -d $root/tests/fuzz/corpus/$name ]] || { echo "fuzz.sh: no target '$name' (pipeline, raster_page)" >&2; exit 2; }
+[[ -d $root/tests/fuzz/corpus/$name ]] || { echo "fuzz.sh: no target '$name' (pipeline, raster_page, bdam_patch)" >&2; exit 2; }
 
 CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DSTRATA_FUZZ=ON -DSTRATA_SANITIZERS=address,undefined -DSTRATA_BUILD_TESTS=OFF \
   -DSTRATA_BUILD_BENCHMARKS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
