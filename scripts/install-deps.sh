@@ -18,6 +18,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev    # tests and benchmarks
   libchealpix-dev                               # HEALPix's own C library: the tests' reference for pixel indices
   libzstd-dev                                   # geometry.bdam's patches compressed on disk
+  libmeshoptimizer-dev                          # geometry.bdam's patches ordered for the vertex cache
   xvfb xauth                                    # window tests without a display
   libxtst-dev                                   # window tests send keys and pointer events (XTest)
   xplanet-images                                # the Earth image the demo drapes
