@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace strata::bdam {
 namespace {
@@ -30,6 +32,12 @@ FaceTriangle rootTriangle(int half) {
   return half == 0 ? FaceTriangle{{1, -1}, {1, 1}, {-1, -1}} : FaceTriangle{{-1, 1}, {-1, -1}, {1, 1}};
 }
 
+// Which side of the line from `from` to `to` the point lies: positive to the left.
+double side(glm::dvec2 from, glm::dvec2 to, glm::dvec2 point) {
+  const glm::dvec2 a = to - from, b = point - from;
+  return a.x * b.y - a.y * b.x;
+}
+
 }  // namespace
 
 int faceOf(const BintreeNode& node) { return node.root / 2; }
@@ -51,6 +59,30 @@ std::array<BintreeNode, 2> children(const BintreeNode& node) {
   if (node.level >= kDeepestLevel) throw std::invalid_argument("a bintree node of the deepest level has no children");
   return {BintreeNode{node.root, node.level + 1, node.path << 1},
           BintreeNode{node.root, node.level + 1, (node.path << 1) | 1}};
+}
+
+FacePoint facePoint(const glm::dvec3& direction) {
+  int face = 0;
+  for (int f = 1; f < kCubeFaces; ++f)
+    if (glm::dot(direction, kFaces[std::size_t(f)].normal) > glm::dot(direction, kFaces[std::size_t(face)].normal))
+      face = f;
+  const FaceAxes& axes = kFaces[std::size_t(face)];
+  const double along = glm::dot(direction, axes.normal);
+  const auto unwarp = [along](double across) { return std::atan(across / along) * 4.0 / std::numbers::pi; };
+  return {face, {unwarp(glm::dot(direction, axes.s)), unwarp(glm::dot(direction, axes.t))}};
+}
+
+BintreeNode nodeContaining(const glm::dvec3& direction, int level) {
+  const auto [face, point] = facePoint(direction);
+  BintreeNode node{2 * face + (side({-1, -1}, {1, 1}, point) <= 0.0 ? 0 : 1), 0, 0};
+  for (int l = 0; l < level; ++l) {
+    const FaceTriangle triangle = faceTriangle(node);
+    const glm::dvec2 middle = 0.5 * (triangle.left + triangle.right);
+    // Child 0 holds the apex and `left`: the side of the line from the middle to the apex where `left` lies.
+    node =
+        children(node)[side(middle, triangle.apex, point) * side(middle, triangle.apex, triangle.left) >= 0.0 ? 0 : 1];
+  }
+  return node;
 }
 
 glm::dvec3 cubeDirection(int face, glm::dvec2 faceCoordinates) {

@@ -43,4 +43,16 @@ std::array<BintreeNode, 2> children(const BintreeNode& node);
 // The unit vector of face `face`'s point (s, t), planet-fixed (+z north, +x at longitude 0), in double.
 glm::dvec3 cubeDirection(int face, glm::dvec2 faceCoordinates);
 
+// The face a planet-fixed unit vector points at most nearly along, and its face coordinates there (the warp
+// undone): cubeDirection's inverse.
+struct FacePoint {
+  int face = 0;
+  glm::dvec2 coordinates{0.0};
+};
+FacePoint facePoint(const glm::dvec3& direction);
+
+// The node of `level` whose triangle holds `direction` (a planet-fixed unit vector): on the face it points at most
+// nearly along, then the child on its side of each split (a point on a split, the first child).
+BintreeNode nodeContaining(const glm::dvec3& direction, int level);
+
 }  // namespace strata::bdam

@@ -113,6 +113,37 @@ TEST(CubeBintree, TheCellsAreAlikeInArea) {
   EXPECT_LT(largest / smallest, 1.5);
 }
 
+// Face coordinates undo the warp, and the node found for a direction holds it, at places that matter: Gale crater,
+// both sides of the antimeridian, the poles, a cube corner and edge, and a spread of others.
+TEST(CubeBintree, TheNodeFoundForADirectionHoldsIt) {
+  std::vector<glm::dvec3> directions = {
+      glm::normalize(glm::dvec3(1, 1, 1)), glm::normalize(glm::dvec3(1, -1, 0)), {0, 0, 1}, {0, 0, -1}};
+  for (const glm::dvec2 lonlat : {glm::dvec2(137.4, -4.6), glm::dvec2(179.9999, 12), glm::dvec2(-179.9999, 12),
+                                  glm::dvec2(10, 20), glm::dvec2(-60, 89.99)}) {
+    const glm::dvec2 r = glm::radians(lonlat);
+    directions.push_back({std::cos(r.y) * std::cos(r.x), std::cos(r.y) * std::sin(r.x), std::sin(r.y)});
+  }
+  for (int k = 0; k < 200; ++k) {  // a Fibonacci spiral over the sphere
+    const double z = 1.0 - (k + 0.5) / 100.0, around = k * std::numbers::pi * (3.0 - std::sqrt(5.0));
+    directions.push_back({std::sqrt(1.0 - z * z) * std::cos(around), std::sqrt(1.0 - z * z) * std::sin(around), z});
+  }
+  for (const glm::dvec3& direction : directions) {
+    const FacePoint point = facePoint(direction);
+    EXPECT_LT(glm::length(cubeDirection(point.face, point.coordinates) - direction), 1e-15);
+    for (const int level : {0, 1, 7, 20, 40}) {
+      const BintreeNode node = nodeContaining(direction, level);
+      ASSERT_EQ(faceOf(node), point.face);
+      const FaceTriangle t = faceTriangle(node);
+      const auto inside = [&](glm::dvec2 a, glm::dvec2 b) {  // on the left of a to b, counter-clockwise, or on it
+        const glm::dvec2 edge = b - a, to = point.coordinates - a;
+        return edge.x * to.y - edge.y * to.x >= -1e-15 * glm::length(edge);
+      };
+      EXPECT_TRUE(inside(t.apex, t.left) && inside(t.left, t.right) && inside(t.right, t.apex))
+          << direction.x << ", " << direction.y << ", " << direction.z << " at level " << level;
+    }
+  }
+}
+
 TEST(CubeBintree, ANodeBeyondTheTreesIsRefused) {
   EXPECT_THROW(faceTriangle({12, 0, 0}), std::invalid_argument);
   EXPECT_THROW(children({0, kDeepestLevel, 0}), std::invalid_argument);

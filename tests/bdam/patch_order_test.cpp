@@ -12,7 +12,7 @@
 
 #include <meshoptimizer.h>
 
-#include "grid_patch.hpp"
+#include "leaf_patch.hpp"
 #include "patch_codec.hpp"
 #include "patch_order.hpp"
 
@@ -41,8 +41,8 @@ std::vector<Triangle> trianglesOf(const DisplacedPatch& patch) {
 
 // The grid with its vertices and its triangles shuffled, and a vertex no triangle names.
 DisplacedPatch shuffledGrid() {
-  const DisplacedPatch grid =
-      gridPatch(24, [](double b1, double b2) { return 3000.0 * std::sin(9.0 * b1 + 4.0 * b2); });
+  const DisplacedPatch grid = leafPatch(
+      {3, 9, 0}, 3396190.0, [](const glm::dvec3& d) { return 3000.0 * std::sin(90.0 * d.z); }, 24);
   std::mt19937 random(2003);
   std::vector<std::uint32_t> newPlace(grid.vertices.size());
   for (std::uint32_t i = 0; i < newPlace.size(); ++i) newPlace[i] = i;
