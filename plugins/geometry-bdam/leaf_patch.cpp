@@ -11,8 +11,10 @@
 namespace strata::bdam {
 namespace {
 
-constexpr int kTerrainSteps = 8;            // at most: each step's error is the last's times the slope times the
-constexpr double kTerrainTolerance = 1e-3;  // normal's lean, under a thousandth; m, under the stored centimetre
+// Steps at most: each step's error is the last's times the terrain's slope times the normal's lean from the radial,
+// under a thousandth on any body's relief; and the change, m, at which they stop: under the stored centimetre.
+constexpr int kTerrainSteps = 8;
+constexpr double kTerrainTolerance = 1e-3;
 
 // The displacement along N(b) to the terrain: the height at the flat point's direction, then at the direction of the
 // point that height gives, until it moves less than a millimetre.
