@@ -9,7 +9,6 @@
 // STRATA_BENCH_CLIPMAP=reduced times 3 frames a view, for llvmpipe; unset, 300 (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -41,47 +40,37 @@ void benchmarkClipmap(benchmark::State& state, const fs::path& pipeline, const S
   strata::Engine engine;
   engine.load(pipeline);
   engine.camera() = scene.camera;
-  for (int i = 0; i < kWarmUpFrames; ++i) engine.render(kWidth, kHeight);
-  glFinish();
+  strata::bench::warmUp(engine, kWidth, kHeight, kWarmUpFrames);
   double frameMs = 0, terrainMs = 0, heightsMs = 0, visibilityMs = 0, levels = 0, triangles = 0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    engine.render(kWidth, kHeight);
-    glFinish();
-    frameMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frameMs += strata::bench::timedFrameMs(engine, kWidth, kHeight);
     const strata::GeometryStatistics geometry = engine.geometryStatistics();
     visibilityMs += geometry.visibilityMs, levels += geometry.patches, triangles += double(geometry.triangles);
     heightsMs += geometry.subdivisionMs;
     for (const strata::PassTime& pass : engine.passTimes()) terrainMs += pass.node == "terrain" ? pass.gpuMs : 0.0;
   }
-  using benchmark::Counter;
-  state.counters["frame_ms"] = Counter(frameMs, Counter::kAvgIterations);
-  // The geometry's own pass (GL_TIMESTAMP queries around it): on llvmpipe about the time to submit it, which holds
-  // the vertex shading of every drawn vertex; the rest of the frame is the composition of the procedural colours.
-  state.counters["terrain_ms"] = Counter(terrainMs, Counter::kAvgIterations);
-  // Of it, the height clipmaps' sampling (a GPU timer): none once a still view's windows are in place.
-  state.counters["heights_ms"] = Counter(heightsMs, Counter::kAvgIterations);
-  state.counters["visibility_ms"] = Counter(visibilityMs, Counter::kAvgIterations);
-  state.counters["levels"] = Counter(levels, Counter::kAvgIterations);
-  state.counters["triangles"] = Counter(triangles, Counter::kAvgIterations);
-  state.counters["fps"] = Counter(double(state.iterations()) * 1000.0 / frameMs);  // the paper's unit
+  // terrain_ms: the geometry's own pass (GL_TIMESTAMP queries around it), on llvmpipe about the time to submit it,
+  // which holds the vertex shading of every drawn vertex; the rest of the frame is the procedural colours'
+  // composition. heights_ms: of it, the height clipmaps' sampling (a GPU timer), none once a still view's windows
+  // are in place.
+  strata::bench::setMeans(state, {{"frame_ms", frameMs},
+                                  {"terrain_ms", terrainMs},
+                                  {"heights_ms", heightsMs},
+                                  {"visibility_ms", visibilityMs},
+                                  {"levels", levels},
+                                  {"triangles", triangles}});
+  state.counters["fps"] = double(state.iterations()) * 1000.0 / frameMs;  // the paper's unit
 }
 
 void registerBenchmarks(const fs::path& pipeline) {
-  const char* choice = std::getenv("STRATA_BENCH_CLIPMAP");
-  const bool reduced = choice && std::string_view(choice) == "reduced";
+  const bool reduced = strata::bench::reducedRun("STRATA_BENCH_CLIPMAP");
   const std::vector<Scene> scenes = {
       {"whole", strata::bench::wholeMarsView()},
       {"near", strata::bench::nearMarsView()},
       {"aircraft", {.lon = 30, .lat = 25, .altitude = 15000, .heading = 0, .tilt = 75, .fov = 45}},
       {"ground", {.lon = 30, .lat = 25, .altitude = 2, .heading = 0, .tilt = 88, .fov = 45}}};
-  for (const Scene& scene : scenes) {
-    const std::string name = "clipmap/view:" + scene.name;
-    benchmark::RegisterBenchmark(name.c_str(), benchmarkClipmap, pipeline, scene)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime()
-        ->Iterations(reduced ? 3 : 300);
-  }
+  for (const Scene& scene : scenes)
+    strata::bench::registerFrames("clipmap/view:" + scene.name, reduced ? 3 : 300, benchmarkClipmap, pipeline, scene);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <strata/gl/context.hpp>
 #include <strata/host/engine.hpp>
 
+#include "headless_main.hpp"
 #include "procedural_mars_pipeline.hpp"
 
 namespace {
@@ -58,10 +59,7 @@ void BM_FlyIn(benchmark::State& state) {
   for (auto _ : state) {
     for (int i = 0; i < 2 * FlyInPath::kFramesEachWay; ++i) {
       engine.camera() = flight.cameraAt(i);
-      const auto start = std::chrono::steady_clock::now();
-      engine.render(kWidth, kHeight);
-      glFinish();
-      frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+      frameMs.push_back(strata::bench::timedFrameMs(engine, kWidth, kHeight));
       const strata::GeometryStatistics geometry = engine.geometryStatistics();
       patches += geometry.patches, triangles += double(geometry.triangles), visibility += geometry.visibilityMs;
       subdivision += geometry.subdivisionMs, rasterisation += geometry.rasterisationMs;
@@ -109,10 +107,7 @@ void BM_ExtraLayers(benchmark::State& state) {
   engine.renderComplete(kWidth, kHeight);  // every page of every layer loaded, programs compiled
   double frameMs = 0.0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    engine.render(kWidth, kHeight);
-    glFinish();
-    frameMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frameMs += strata::bench::timedFrameMs(engine, kWidth, kHeight);
   }
   state.counters["frame_ms"] = frameMs / double(state.iterations());
 }

@@ -8,7 +8,6 @@
 // STRATA_BENCH_HEALPIX=reduced times fewer frames, for llvmpipe; unset, the full set (docs/benchmarks.md).
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -54,28 +53,23 @@ void benchmarkHealpix(benchmark::State& state, const fs::path& pipeline, const S
   strata::Engine engine;
   engine.load(pipeline, {"nodes.terrain.threshold=" + threshold});
   engine.camera() = scene.camera;
-  for (int i = 0; i < kWarmUpFrames; ++i) engine.render(kWidth, kHeight);
-  glFinish();
+  strata::bench::warmUp(engine, kWidth, kHeight, kWarmUpFrames);
   double frameMs = 0, visibilityMs = 0, rasterMs = 0, nodes = 0, vertices = 0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    engine.render(kWidth, kHeight);
-    glFinish();
-    frameMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frameMs += strata::bench::timedFrameMs(engine, kWidth, kHeight);
     const strata::GeometryStatistics geometry = engine.geometryStatistics();
     visibilityMs += geometry.visibilityMs, rasterMs += geometry.rasterisationMs;
     nodes += geometry.patches, vertices += double(geometry.vertices);
   }
-  using benchmark::Counter;
-  state.counters["frame_ms"] = Counter(frameMs, Counter::kAvgIterations);
-  state.counters["visibility_ms"] = Counter(visibilityMs, Counter::kAvgIterations);
-  state.counters["raster_ms"] = Counter(rasterMs, Counter::kAvgIterations);
-  state.counters["nodes"] = Counter(nodes, Counter::kAvgIterations);
-  state.counters["vertices"] = Counter(vertices, Counter::kAvgIterations);
-  // What the threshold asks for, to set beside it: every vertex of every node drawn, off screen or not.
-  state.counters["vertices_per_pixel"] = Counter(vertices / (double(kWidth) * kHeight), Counter::kAvgIterations);
-  // The paper's unit; from the wall time, as frame_ms.
-  state.counters["fps"] = Counter(double(state.iterations()) * 1000.0 / frameMs);
+  // vertices_per_pixel: what the threshold asks for, to set beside it: every vertex of every node drawn, off screen
+  // or not.
+  strata::bench::setMeans(state, {{"frame_ms", frameMs},
+                                  {"visibility_ms", visibilityMs},
+                                  {"raster_ms", rasterMs},
+                                  {"nodes", nodes},
+                                  {"vertices", vertices},
+                                  {"vertices_per_pixel", vertices / (double(kWidth) * kHeight)}});
+  state.counters["fps"] = double(state.iterations()) * 1000.0 / frameMs;  // the paper's unit; from the wall time
 }
 
 // A smooth field on Mars (m), +-5.5 km over wavelengths of 50 to 120 degrees, as a global 4096 x 2048
@@ -132,29 +126,21 @@ std::vector<fs::path> writeFieldPipelines() {
 // for llvmpipe where a fine frame takes seconds, times 3 and leaves out the near view at threshold 1.0 (30
 // million vertices, some 36 s a frame on 2 cores), the whole run within about 3 minutes.
 void registerBenchmarks(const fs::path& pipeline) {
-  const char* choice = std::getenv("STRATA_BENCH_HEALPIX");
-  const bool reduced = choice && std::string_view(choice) == "reduced";
+  const bool reduced = strata::bench::reducedRun("STRATA_BENCH_HEALPIX");
   const std::vector<Scene> scenes = {{"whole", strata::bench::wholeMarsView()},
                                      {"near", strata::bench::nearMarsView()}};
   for (const Scene& scene : scenes)
     for (const std::string& threshold : kThresholds) {
       if (reduced && scene.name == "near" && threshold == "1.0") continue;
-      const std::string name = "healpix/view:" + scene.name + "/threshold:" + threshold;
-      benchmark::RegisterBenchmark(name.c_str(), benchmarkHealpix, pipeline, scene, threshold)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime()
-          ->Iterations(reduced ? 3 : 300);
+      strata::bench::registerFrames("healpix/view:" + scene.name + "/threshold:" + threshold, reduced ? 3 : 300,
+                                    benchmarkHealpix, pipeline, scene, threshold);
     }
   const std::vector<fs::path> field = writeFieldPipelines();
   for (std::size_t i = 0; i < field.size(); ++i)
     for (const std::string& threshold : {std::string("0.01"), std::string("0.2")}) {
-      const std::string name =
-          std::string("healpix/heights:") + (i == 0 ? "raster" : "pyramid") + "/view:near/threshold:" + threshold;
-      benchmark::RegisterBenchmark(name.c_str(), benchmarkHealpix, field[i],
-                                   Scene{"near", strata::bench::nearMarsView()}, threshold)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime()
-          ->Iterations(reduced ? 3 : 300);
+      strata::bench::registerFrames(
+          std::string("healpix/heights:") + (i == 0 ? "raster" : "pyramid") + "/view:near/threshold:" + threshold,
+          reduced ? 3 : 300, benchmarkHealpix, field[i], Scene{"near", strata::bench::nearMarsView()}, threshold);
     }
 }
 

@@ -6,7 +6,6 @@
 // STRATA_BENCH_PGM=reduced runs a subset with fewer frames, for llvmpipe; unset, the full set.
 #include <benchmark/benchmark.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -48,21 +47,14 @@ void benchmarkPgm(benchmark::State& state, const fs::path& pipeline, int testCas
   strata::Engine engine;
   engine.load(pipeline, {"nodes.terrain.grid=" + grid.text()});
   engine.camera() = testCaseCamera(testCase);
-  for (int i = 0; i < kWarmUpFrames; ++i) engine.render(screen.width, screen.height);
-  glFinish();
+  strata::bench::warmUp(engine, screen.width, screen.height, kWarmUpFrames);
   double pgmMs = 0, rasterMs = 0, frameMs = 0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
-    engine.render(screen.width, screen.height);
-    glFinish();
-    frameMs += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    frameMs += strata::bench::timedFrameMs(engine, screen.width, screen.height);
     const strata::GeometryStatistics geometry = engine.geometryStatistics();
     pgmMs += geometry.subdivisionMs, rasterMs += geometry.rasterisationMs;
   }
-  using benchmark::Counter;
-  state.counters["pgm_ms"] = Counter(pgmMs, Counter::kAvgIterations);
-  state.counters["raster_ms"] = Counter(rasterMs, Counter::kAvgIterations);
-  state.counters["frame_ms"] = Counter(frameMs, Counter::kAvgIterations);
+  strata::bench::setMeans(state, {{"pgm_ms", pgmMs}, {"raster_ms", rasterMs}, {"frame_ms", frameMs}});
   state.counters["grid_points"] = double(grid.width) * double(grid.height);
 }
 
@@ -91,17 +83,13 @@ std::vector<Configuration> thesisTables(int testCase, const std::vector<Size>& g
 // grid-by-screen table is left out (case 1's shows the shape) and each configuration times 4 frames, under
 // 3 minutes on 2 cores.
 void registerBenchmarks(const fs::path& pipeline) {
-  const char* choice = std::getenv("STRATA_BENCH_PGM");
-  const bool reduced = choice && std::string_view(choice) == "reduced";
+  const bool reduced = strata::bench::reducedRun("STRATA_BENCH_PGM");
   std::vector<Configuration> configurations = thesisTables(1, kThesisSizes, kThesisSizes, kStandardResolutions);
   const std::vector<Configuration> nearView =
       thesisTables(2, reduced ? std::vector<Size>{} : kThesisSizes, kThesisSizes, kStandardResolutions);
   configurations.insert(configurations.end(), nearView.begin(), nearView.end());
   for (const Configuration& c : configurations)
-    benchmark::RegisterBenchmark(c.name.c_str(), benchmarkPgm, pipeline, c.testCase, c.grid, c.screen)
-        ->Unit(benchmark::kMillisecond)
-        ->UseRealTime()
-        ->Iterations(reduced ? 4 : 300);
+    strata::bench::registerFrames(c.name, reduced ? 4 : 300, benchmarkPgm, pipeline, c.testCase, c.grid, c.screen);
 }
 
 }  // namespace
