@@ -18,7 +18,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev    # tests and benchmarks
   libchealpix-dev                               # HEALPix's own C library: the tests' reference for pixel indices
   libzstd-dev                                   # geometry.bdam's patches compressed on disk
-  libmeshoptimizer-dev                          # geometry.bdam's patches ordered for the vertex cache
+  libmeshoptimizer-dev                          # geometry.bdam: patches simplified, ordered for the vertex cache
+  zlib1g-dev                                    # geometry.bdam's face files: CRC-32 of each record
   xvfb xauth                                    # window tests without a display
   libxtst-dev                                   # window tests send keys and pointer events (XTest)
   xplanet-images                                # the Earth image the demo drapes

@@ -11,6 +11,7 @@ void addPluginsCommand(CLI::App& app, int& exitCode);
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addProjectCommand(CLI::App& app, int& exitCode);
 void addTileCommand(CLI::App& app, int& exitCode);
+void addBuildBdamCommand(CLI::App& app, int& exitCode);
 void addBenchCommand(CLI::App& app, int& exitCode);
 
 }  // namespace strata::cli

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   strata::cli::addViewCommand(app, exitCode);
   strata::cli::addPluginsCommand(app, exitCode);
   strata::cli::addTileCommand(app, exitCode);
+  strata::cli::addBuildBdamCommand(app, exitCode);
   strata::cli::addBenchCommand(app, exitCode);
   strata::cli::addProjectCommand(app, exitCode);
   strata::cli::addInfoCommand(app, exitCode);

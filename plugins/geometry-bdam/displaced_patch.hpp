@@ -9,10 +9,12 @@ namespace strata::bdam {
 // Each interior point is two barycentric coordinates and an offset along the corners' interpolated normal:
 //   N(b) = N0 + b1 (N1 - N0) + b2 (N2 - N0)
 //   P(b) = P0 + b1 (P1 - P0) + b2 (P2 - P0) + h N(b)
-// Barycentrics are kept quantised to 12 bits each (§4.4: "sufficient to encode over 16M positions in a
-// triangular patch") and displacements to centimetres (the paper's vertex program unpacks h in steps of 0.01 m,
+// Barycentrics are kept in steps of 1/4096 (§4.4's 12 bits, "sufficient to encode over 16M positions in a
+// triangular patch", and one value more, so that an edge's halves, quarters and so on down to its 4096ths are exact:
+// a child's corners and every leaf grid point lie on the lattice of each coarser patch) and displacements to
+// centimetres (the paper's vertex program unpacks h in steps of 0.01 m,
 // §4.2, Fig. 5), so that what a patch holds is exactly what its file stores.
-inline constexpr int kBarycentricSteps = 4095;  // 12 bits: b = steps / 4095, so that the corners are exact
+inline constexpr int kBarycentricSteps = 4096;  // b = steps / 4096: dyadic, so that corners and midpoints are exact
 
 struct DisplacedVertex {
   std::uint16_t b1 = 0, b2 = 0;  // of corners 1 and 2, in steps of 1 / kBarycentricSteps; corner 0's is the rest

@@ -1,11 +1,12 @@
 // geometry.bdam's displaced triangles: corners on the body's sphere, a displacement that puts a point at the distance
 // asked anywhere in the triangle and on its edges, to the millimetre and below at any level from a root to
 // centimetres; and partners across a hypotenuse (on a face and across a face's edge) that put their shared edge's
-// points in the same place.
+// points in the same place, to the bit.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <map>
+#include <random>
 #include <vector>
 
 #include "cube_bintree.hpp"
@@ -68,13 +69,36 @@ TEST(DisplacedTriangle, PartnersAcrossAHypotenusePutItsPointsInOnePlace) {
     ASSERT_EQ(pair.size(), 2u);
     const DisplacedTriangle a = displacedTriangle(pair[0], kMars), b = displacedTriangle(pair[1], kMars);
     const bool reversed = a.corners[1] == b.corners[2];  // the partner walks the hypotenuse the other way
-    for (int k = 0; k <= 8; ++k) {
-      const double t = k / 8.0, u = reversed ? 1.0 - t : t;
-      const glm::dvec3 fromA = a.flatPoint(1.0 - t, t) + 1000.0 * a.normal(1.0 - t, t);
-      const glm::dvec3 fromB = b.flatPoint(1.0 - u, u) + 1000.0 * b.normal(1.0 - u, u);
-      EXPECT_LT(glm::length(fromA - fromB), 1e-8) << "m, at " << t << " along the hypotenuse";
+    for (int k = 0; k <= 8; ++k) {  // lattice points along it, a kilometre up: the same bits from either side
+      const auto t = std::uint16_t(k * kBarycentricSteps / 8), u = reversed ? std::uint16_t(kBarycentricSteps - t) : t;
+      const DisplacedVertex onA{std::uint16_t(kBarycentricSteps - t), t, 100000};
+      const DisplacedVertex onB{std::uint16_t(kBarycentricSteps - u), u, 100000};
+      EXPECT_EQ(a.point(onA), b.point(onB)) << "at " << t << " steps along the hypotenuse";
     }
   }
+}
+
+// The builder re-stores each kept vertex in its parent's triangle: a point of the lattice comes back as itself, inside
+// and on each edge (from the edge's corners alone), from a root to triangles of metres, kilometres up and down.
+TEST(DisplacedTriangle, AStoredVertexIsFoundAgainFromItsPoint) {
+  std::mt19937 random(31);
+  std::uniform_int_distribution<int> step(1, kBarycentricSteps - 1), centimetres(-900000, 900000);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  for (const int level : {0, 7, 20, 36})
+    for (int n = 0; n < 200; ++n) {
+      const glm::dvec3 place(coordinate(random), coordinate(random), coordinate(random));
+      const BintreeNode node = nodeContaining(glm::normalize(place), level);
+      const DisplacedTriangle triangle = displacedTriangle(node, kMars);
+      const auto b2 = std::uint16_t(step(random)), b1 = std::uint16_t(step(random) % (kBarycentricSteps - b2));
+      const std::int32_t h = centimetres(random) / (level > 20 ? 1000 : 1);
+      const std::array<std::pair<DisplacedVertex, int>, 4> vertices = {
+          {{{std::max<std::uint16_t>(b1, 1), b2, h}, -1},
+           {{std::uint16_t(kBarycentricSteps - b2), b2, h}, 0},
+           {{0, b2, h}, 1},
+           {{b1, 0, h}, 2}}};
+      for (const auto& [vertex, edge] : vertices)
+        ASSERT_EQ(triangle.vertexAt(triangle.point(vertex), edge), vertex) << "level " << level << ", edge " << edge;
+    }
 }
 
 }  // namespace

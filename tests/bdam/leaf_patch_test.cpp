@@ -7,8 +7,8 @@
 
 #include "cube_bintree.hpp"
 #include "displaced_triangle.hpp"
-#include "geoid.hpp"
 #include "leaf_patch.hpp"
+#include "raster_heights.hpp"
 
 namespace strata::bdam {
 namespace {
@@ -21,8 +21,8 @@ glm::dvec3 direction(double lon, double lat) {
 }
 
 TEST(LeafPatch, EveryVertexLiesOnTheTerrain) {
-  const Geoid geoid;
-  const HeightAt heights = [&geoid](const glm::dvec3& d) { return 100.0 * geoid.at(d); };
+  const HeightAt geoid = RasterHeights("/usr/share/proj/egm96_15.gtx").sampler();
+  const HeightAt heights = [&geoid](const glm::dvec3& d) { return 100.0 * geoid(d); };
   for (const glm::dvec3 place : {direction(137.4, -4.6), direction(30.0, 89.9)})
     for (const int level : {8, 16}) {  // triangles of about 330 and 21 km a side
       const BintreeNode node = nodeContaining(place, level);

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "cube_bintree.hpp"
-#include "geoid.hpp"
 #include "leaf_patch.hpp"
 #include "patch_codec.hpp"
+#include "raster_heights.hpp"
 
 namespace strata::bdam {
 namespace {
@@ -32,9 +32,9 @@ DisplacedPatch patchAtGale(int level, int divisions, const HeightAt& heights) {
 }
 
 TEST(PatchCodec, ARealPatchRoundTripsExactlyInUnderHalfItsPlainSize) {
-  const Geoid geoid;
+  const HeightAt geoid = RasterHeights("/usr/share/proj/egm96_15.gtx").sampler();
   // 16 steps a side: 153 vertices, 256 triangles, a few hundred as the paper's patches; level 10, 170 km a side.
-  const DisplacedPatch patch = patchAtGale(10, 16, [&geoid](const glm::dvec3& d) { return geoid.at(d); });
+  const DisplacedPatch patch = patchAtGale(10, 16, geoid);
   const std::vector<std::byte> stored = encodePatch(patch);
   EXPECT_EQ(decodePatch(stored), patch);
   const double ratio = double(stored.size()) / double(plainBytes(patch));
