@@ -23,6 +23,7 @@ struct BuildBdamRequest {
   int level = -1;  // -1: the least whose leaf grid is as fine as the raster
   int divisions = 16;
   double radius = 0.0;
+  double scale = 1.0;
   unsigned threads = 0;
   bool overwrite = false;
 };
@@ -67,13 +68,15 @@ void buildBdam(const BuildBdamRequest& request) {
                request.input.c_str(), radius, options.leafLevel, options.divisions, options.threads,
                options.threads == 1 ? "thread" : "threads");
   const auto start = std::chrono::steady_clock::now();
-  const bdam::BuiltBintrees bintrees =
-      bdam::buildBintrees([&heights] { return heights->sampler(); }, options, reportLevel);
+  const bdam::BuiltBintrees bintrees = bdam::buildBintrees(
+      [&heights, scale = request.scale]() -> bdam::HeightAt {
+        return [sample = heights->sampler(), scale](const glm::dvec3& direction) { return scale * sample(direction); };
+      },
+      options, reportLevel);
   std::uintmax_t bytes = 0;
   for (int face = 0; face < bdam::kCubeFaces; ++face) {
-    files.write(targets[std::size_t(face)], [&](const std::filesystem::path& partial) {
-      bdam::writeFaceFile(partial, {face, options.leafLevel, options.divisions, radius}, bintrees);
-    });
+    files.write(targets[std::size_t(face)],
+                [&](const std::filesystem::path& partial) { bdam::writeFaceFile(partial, face, bintrees); });
     bytes += std::filesystem::file_size(targets[std::size_t(face)]);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -101,6 +104,8 @@ void addBuildBdamCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 64));
   command->add_option("--radius", request->radius, "the body's radius, m; default: the raster CRS's semi-major axis")
       ->check(CLI::PositiveNumber);
+  command->add_option("--scale", request->scale,
+                      "multiplies the raster's values (vertical exaggeration, or its units to metres); default 1");
   command->add_option("--threads", request->threads, "threads to build with; default: every core");
   command->add_flag("--overwrite", request->overwrite, "replace face files that exist");
   command->callback([request, &exitCode] { exitCode = reportingErrors([&] { buildBdam(*request); }); });

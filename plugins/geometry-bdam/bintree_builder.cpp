@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <tuple>
 
 #include "diamond_simplification.hpp"
 #include "diamonds.hpp"
@@ -63,6 +64,39 @@ BoundingSphere enclosing(std::span<const glm::dvec3> points, std::span<const Bou
   return sphere;
 }
 
+// The distance from the body's centre to the nearest point of a segment.
+double nearestOnSegment(const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 along = b - a;
+  const double t =
+      glm::dot(along, along) > 0.0 ? std::clamp(-glm::dot(a, along) / glm::dot(along, along), 0.0, 1.0) : 0.0;
+  return glm::length(a + t * along);
+}
+
+// The distance from the body's centre to the nearest point of a triangle: the foot of the perpendicular to its plane
+// where that lies inside it, else the nearest point of an edge (a wall along a frozen edge stands edge-on to the
+// centre, its plane through it).
+double nearestOnTriangle(const std::array<glm::dvec3, 3>& t) {
+  const glm::dvec3 normal = glm::cross(t[1] - t[0], t[2] - t[0]);
+  if (glm::dot(normal, normal) > 0.0) {
+    const glm::dvec3 foot = normal * (glm::dot(normal, t[0]) / glm::dot(normal, normal));
+    bool inside = true;
+    for (std::size_t e = 0; e < 3; ++e)
+      inside = inside && glm::dot(glm::cross(t[(e + 1) % 3] - t[e], foot - t[e]), normal) >= 0.0;
+    if (inside) return glm::length(foot);
+  }
+  return std::min({nearestOnSegment(t[0], t[1]), nearestOnSegment(t[1], t[2]), nearestOnSegment(t[2], t[0])});
+}
+
+// How near the centre and how far from it the triangles reach, m above `radius`: their farthest points are vertices.
+std::pair<double, double> heightsOf(const std::vector<std::array<glm::dvec3, 3>>& triangles, double radius) {
+  double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+  for (const auto& t : triangles) {
+    lowest = std::min(lowest, nearestOnTriangle(t));
+    for (const glm::dvec3& corner : t) highest = std::max(highest, glm::length(corner));
+  }
+  return {lowest - radius, highest - radius};
+}
+
 // A leaf's error against the terrain between its vertices: at each triangle's centroid.
 double leafError(const DisplacedTriangle& triangle, const DisplacedPatch& patch, double radius,
                  const HeightAt& heights) {
@@ -80,7 +114,7 @@ using DecodedLevel = std::vector<DisplacedPatch>;
 
 class Builder {
  public:
-  Builder(const HeightsForThread& heights, const BuildOptions& options) : options_(options), built_(options.leafLevel) {
+  Builder(const HeightsForThread& heights, const BuildOptions& options) : options_(options), built_(options) {
     for (unsigned w = 0; w < options.threads; ++w) heights_.push_back(heights());
   }
 
@@ -143,8 +177,12 @@ class Builder {
     for (std::size_t h = 0; h < 2; ++h) {
       BuiltNode& node = built_.at(diamond.halves[h]);
       node.stored = encodePatch(halves[h]);
+      node.vertices = std::uint32_t(halves[h].vertices.size());
+      node.indices = std::uint32_t(halves[h].indices.size());
       node.error = error;
       node.sphere = sphere;
+      std::tie(node.lowest, node.highest) =
+          heightsOf(trianglesOf(displacedTriangle(diamond.halves[h], options_.radius), halves[h]), options_.radius);
     }
   }
 
@@ -172,8 +210,8 @@ class Builder {
 
 }  // namespace
 
-BuiltBintrees::BuiltBintrees(int leafLevel) {
-  for (int l = 0; l <= leafLevel; ++l) levels_.emplace_back(std::size_t(kBintreeRoots) << l);
+BuiltBintrees::BuiltBintrees(const BuildOptions& options) : options_(options) {
+  for (int l = 0; l <= options.leafLevel; ++l) levels_.emplace_back(std::size_t(kBintreeRoots) << l);
 }
 
 const BuiltNode& BuiltBintrees::at(const BintreeNode& node) const {

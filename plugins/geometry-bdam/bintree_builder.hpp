@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -21,6 +22,9 @@ struct BuiltNode {
   std::vector<std::byte> stored;  // encodePatch's bytes
   double error = 0.0;             // m along the line from the centre; nested and shared with the partner, as the sphere
   BoundingSphere sphere;
+  // m above the body's radius: how near the body's centre and how far from it the patch's triangles reach.
+  double lowest = 0.0, highest = 0.0;
+  std::uint32_t vertices = 0, indices = 0;  // the patch's
 };
 
 struct BuildOptions {
@@ -40,12 +44,14 @@ struct LevelReport {
 // Every node's patch, error and sphere, from the leaves up.
 class BuiltBintrees {
  public:
-  explicit BuiltBintrees(int leafLevel);
-  int leafLevel() const { return int(levels_.size()) - 1; }
+  explicit BuiltBintrees(const BuildOptions& options);
+  const BuildOptions& options() const { return options_; }
+  int leafLevel() const { return options_.leafLevel; }
   const BuiltNode& at(const BintreeNode& node) const;
   BuiltNode& at(const BintreeNode& node);
 
  private:
+  BuildOptions options_;
   std::vector<std::vector<BuiltNode>> levels_;  // per level, by root << level | path
 };
 

@@ -8,11 +8,6 @@
 #include <tuple>
 
 namespace strata::bdam {
-namespace {
-
-// A node's hypotenuse by its ends' directions, lesser first: partners have the same bits for it (cube_bintree.hpp).
-using HypotenuseKey = std::array<std::uint64_t, 6>;
-
 HypotenuseKey hypotenuseOf(const BintreeNode& node) {
   const FaceTriangle triangle = faceTriangle(node);
   std::array<glm::dvec3, 2> ends = {cubeDirection(faceOf(node), triangle.left),
@@ -25,8 +20,6 @@ HypotenuseKey hypotenuseOf(const BintreeNode& node) {
   if (std::tie(b[0], b[1], b[2]) < std::tie(a[0], a[1], a[2])) std::swap(a, b);
   return {a[0], a[1], a[2], b[0], b[1], b[2]};
 }
-
-}  // namespace
 
 std::array<BintreeNode, 4> Diamond::children() const {
   const auto first = bdam::children(halves[0]), second = bdam::children(halves[1]);

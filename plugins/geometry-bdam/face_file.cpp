@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
+#include <vector>
 
 #include "patch_codec.hpp"
 
@@ -27,9 +29,9 @@ constexpr std::array<char, 16> kMagic = {'S', 'T', 'R', 'A', 'T', 'A', '-', 'B',
 struct StoredHeader {
   std::array<char, 16> magic;
   std::uint32_t version, face, leafLevel, divisions;
-  double radius;
+  double radius, lowest, highest;
   std::uint64_t nodesPerBintree, patchesFrom;
-  std::uint32_t crc, unused;
+  std::uint32_t mostVertices, mostIndices, crc, unused;
 };
 struct StoredRecord {
   std::uint64_t offset;
@@ -37,7 +39,7 @@ struct StoredRecord {
   double error, centre[3], radius;
 };
 #pragma pack(pop)
-static_assert(sizeof(StoredHeader) == 64 && sizeof(StoredRecord) == 56);
+static_assert(sizeof(StoredHeader) == 88 && sizeof(StoredRecord) == 56);
 
 template <typename T>
 std::uint32_t crcOf(T value, std::uint32_t T::*field) {  // with the CRC's own field zero
@@ -57,28 +59,47 @@ T readAt(std::span<const std::byte> bytes, std::uint64_t offset) {
   return value;
 }
 
+// Face `face`'s nodes in the table's order: bintree 0's, then 1's, each level after the one above, by path.
+std::vector<BintreeNode> nodesOfFace(int face, int leafLevel) {
+  std::vector<BintreeNode> order;
+  for (int half = 0; half < 2; ++half)
+    for (int level = 0; level <= leafLevel; ++level)
+      for (std::uint64_t p = 0; p < (std::uint64_t(1) << level); ++p) order.push_back({2 * face + half, level, p});
+  return order;
+}
+
 }  // namespace
 
-void writeFaceFile(const std::filesystem::path& path, const FaceFileHeader& header, const BuiltBintrees& bintrees) {
-  const std::uint64_t nodes = nodesPerBintree(header.leafLevel);
+void writeFaceFile(const std::filesystem::path& path, int face, const BuiltBintrees& bintrees) {
+  const int leafLevel = bintrees.leafLevel();
+  const auto divisions = std::uint32_t(bintrees.options().divisions);
+  const double radius = bintrees.options().radius;
+  const std::vector<BintreeNode> order = nodesOfFace(face, leafLevel);
+  double lowest = std::numeric_limits<double>::max(), highest = -lowest;
+  std::uint32_t mostVertices = 0, mostIndices = 0;
+  for (const BintreeNode& node : order) {
+    const BuiltNode& built = bintrees.at(node);
+    lowest = std::min(lowest, built.lowest), highest = std::max(highest, built.highest);
+    mostVertices = std::max(mostVertices, built.vertices), mostIndices = std::max(mostIndices, built.indices);
+  }
+  const std::uint64_t nodes = nodesPerBintree(leafLevel);
   StoredHeader stored{kMagic,
                       kFaceFileVersion,
-                      std::uint32_t(header.face),
-                      std::uint32_t(header.leafLevel),
-                      std::uint32_t(header.divisions),
-                      header.radius,
+                      std::uint32_t(face),
+                      std::uint32_t(leafLevel),
+                      divisions,
+                      radius,
+                      lowest,
+                      highest,
                       nodes,
                       sizeof(StoredHeader) + 2 * nodes * sizeof(StoredRecord),
+                      mostVertices,
+                      mostIndices,
                       0,
                       0};
   stored.crc = crcOf(stored, &StoredHeader::crc);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(&stored), sizeof stored);
-  std::vector<BintreeNode> order;
-  for (int half = 0; half < 2; ++half)
-    for (int level = 0; level <= header.leafLevel; ++level)
-      for (std::uint64_t p = 0; p < (std::uint64_t(1) << level); ++p)
-        order.push_back({2 * header.face + half, level, p});
   std::uint64_t offset = stored.patchesFrom;
   for (const BintreeNode& node : order) {
     const BuiltNode& built = bintrees.at(node);
@@ -125,11 +146,13 @@ FaceFile::FaceFile(const std::filesystem::path& path) : path_(path) {
                  std::to_string(kFaceFileVersion) + ": build it again with this `strata build-bdam`");
   if (stored.crc != crcOf(stored, &StoredHeader::crc) || stored.face >= kCubeFaces || stored.leafLevel > 30 ||
       stored.divisions == 0 || !(stored.radius > 0.0) || !std::isfinite(stored.radius) ||
+      !(stored.lowest <= stored.highest) || !std::isfinite(stored.lowest) || !std::isfinite(stored.highest) ||
       stored.nodesPerBintree != nodesPerBintree(int(stored.leafLevel)) ||
       stored.patchesFrom != sizeof(StoredHeader) + 2 * stored.nodesPerBintree * sizeof(StoredRecord) ||
-      stored.patchesFrom > size_)
+      stored.patchesFrom > size_ || stored.mostIndices % 3 != 0)
     throw refuse("its header is damaged (or the file is cut short): build it again with `strata build-bdam`");
-  header_ = {int(stored.face), int(stored.leafLevel), int(stored.divisions), stored.radius};
+  header_ = {int(stored.face), int(stored.leafLevel), int(stored.divisions), stored.radius,
+             stored.lowest,    stored.highest,        stored.mostVertices,   stored.mostIndices};
   nodesPerBintree_ = stored.nodesPerBintree;
   patchesFrom_ = stored.patchesFrom;
 }

@@ -13,8 +13,9 @@ namespace strata::bdam {
 
 // One cube face's two bintrees as a file [Cignoni et al. 2003, §4.4: "each terrain partition is a file dynamically
 // mapped into a read-only logical address space"; §3: pointerless trees], little-endian:
-//   a header of 64 bytes: "STRATA-BDAM-FACE", the format's version, the face, the leaf level, the leaves' divisions,
-//     the body's radius (f64), the nodes a bintree has, the offset of the first patch, and the CRC-32 of all that;
+//   a header of 88 bytes: "STRATA-BDAM-FACE", the format's version, the face, the leaf level, the leaves' divisions,
+//     the body's radius, the lowest and highest its patches reach (f64, m), the nodes a bintree has, the offset of
+//     the first patch, the most vertices and indices a patch has, and the CRC-32 of all that;
 //   a table of 56-byte records, bintree 0's nodes then bintree 1's, each level after the one above it and a level's
 //     nodes by path (node 2^level - 1 + path): its patch's offset and size, its error, its sphere's centre and radius
 //     (f64, m), and the CRC-32 of the record;
@@ -27,10 +28,12 @@ struct FaceFileHeader {
   int leafLevel = 0;
   int divisions = 0;
   double radius = 0.0;
+  double lowest = 0.0, highest = 0.0;               // m above the radius: what every patch of the face keeps within
+  std::uint32_t mostVertices = 0, mostIndices = 0;  // of a patch of the face
 };
 
-// Writes face `header.face` of `bintrees` to `path`.
-void writeFaceFile(const std::filesystem::path& path, const FaceFileHeader& header, const BuiltBintrees& bintrees);
+// Writes face `face` of `bintrees` to `path`.
+void writeFaceFile(const std::filesystem::path& path, int face, const BuiltBintrees& bintrees);
 
 class FaceFileError : public std::runtime_error {
  public:

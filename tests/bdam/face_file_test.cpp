@@ -38,7 +38,7 @@ class FaceFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
     path_ = std::filesystem::path(::testing::TempDir()) / "face-4.bdam";
-    writeFaceFile(path_, {kFace, kLeafLevel, 16, kMars}, built());
+    writeFaceFile(path_, kFace, built());
     std::ifstream in(path_, std::ios::binary);
     bytes_.assign(std::istreambuf_iterator<char>(in), {});
   }
@@ -61,6 +61,16 @@ TEST_F(FaceFileTest, ReadsBackEveryNodeExactly) {
   EXPECT_EQ(file.header().face, kFace);
   EXPECT_EQ(file.header().leafLevel, kLeafLevel);
   EXPECT_EQ(file.header().radius, kMars);
+  EXPECT_LT(file.header().lowest, -90.0);  // EGM96 reaches -107 m and +85 m; the triangles' planes dip lower
+  EXPECT_GT(file.header().highest, 10.0);
+  std::uint32_t mostVertices = 0, mostIndices = 0;
+  for (const BintreeNode& node : faceNodes()) {
+    const DisplacedPatch patch = file.patch(node);
+    mostVertices = std::max(mostVertices, std::uint32_t(patch.vertices.size()));
+    mostIndices = std::max(mostIndices, std::uint32_t(patch.indices.size()));
+  }
+  EXPECT_EQ(file.header().mostVertices, mostVertices);
+  EXPECT_EQ(file.header().mostIndices, mostIndices);
   for (const BintreeNode& node : faceNodes()) {
     const NodeRecord record = file.node(node);
     const BuiltNode& original = built().at(node);
@@ -75,18 +85,18 @@ TEST_F(FaceFileTest, ReadsBackEveryNodeExactly) {
 }
 
 TEST_F(FaceFileTest, EveryByteOfTheHeaderIsChecked) {
-  for (std::size_t at = 0; at < 64; ++at) {
+  for (std::size_t at = 0; at < 88; ++at) {
     damage(at);
     EXPECT_THROW(FaceFile{path_}, FaceFileError) << "byte " << at;
   }
-  damage(60, true);
+  damage(70, true);
   EXPECT_THROW(FaceFile{path_}, FaceFileError);
 }
 
 // What the generator needs to draw a coarser patch instead: the damage named, the rest of the file still readable.
 TEST_F(FaceFileTest, ADamagedRecordOrPatchNamesTheFileAndTheNode) {
   const BintreeNode node{2 * kFace + 1, 3, 5}, parent{2 * kFace + 1, 2, 2};
-  const std::size_t record = 64 + 56 * ((std::size_t(2) << kLeafLevel) - 1 + 7 + 5);
+  const std::size_t record = 88 + 56 * ((std::size_t(2) << kLeafLevel) - 1 + 7 + 5);
   const auto message = [&](auto read) {
     try {
       read(FaceFile(path_));
