@@ -88,29 +88,31 @@ double nearestOnTriangle(const std::array<glm::dvec3, 3>& t) {
 }
 
 // How near the centre and how far from it the triangles reach, m above `radius`: their farthest points are vertices.
-std::pair<double, double> heightsOf(const std::vector<std::array<glm::dvec3, 3>>& triangles, double radius) {
+std::pair<double, double> heightsOf(const PlanetMesh& mesh, double radius) {
   double lowest = std::numeric_limits<double>::max(), highest = -lowest;
-  for (const auto& t : triangles) {
-    lowest = std::min(lowest, nearestOnTriangle(t));
-    for (const glm::dvec3& corner : t) highest = std::max(highest, glm::length(corner));
-  }
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3)
+    lowest = std::min(lowest, nearestOnTriangle({mesh.positions[mesh.indices[t]], mesh.positions[mesh.indices[t + 1]],
+                                                 mesh.positions[mesh.indices[t + 2]]}));
+  for (const glm::dvec3& p : mesh.positions) highest = std::max(highest, glm::length(p));
   return {lowest - radius, highest - radius};
 }
 
 // A leaf's error against the terrain between its vertices: at each triangle's centroid.
 double leafError(const DisplacedTriangle& triangle, const DisplacedPatch& patch, double radius,
                  const HeightAt& heights) {
-  std::vector<std::array<glm::dvec3, 3>> triangles = trianglesOf(triangle, patch);
+  const PlanetMesh mesh = meshOf(triangle, patch);
   std::vector<glm::dvec3> terrain;
-  for (const auto& t : triangles) {
-    const glm::dvec3 direction = glm::normalize(t[0] + t[1] + t[2]);
+  for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+    const glm::dvec3 direction = glm::normalize(mesh.positions[mesh.indices[t]] + mesh.positions[mesh.indices[t + 1]] +
+                                                mesh.positions[mesh.indices[t + 2]]);
     terrain.push_back(direction * (radius + heights(direction)));
   }
-  return radialDeviation(RadialSurface(triangle, std::move(triangles)), terrain);
+  return radialDeviation(RadialSurface(triangle, mesh), terrain);
 }
 
-// One level's patches as the level above reads them, by indexOf.
-using DecodedLevel = std::vector<DisplacedPatch>;
+// The children of a diamond, decoded from what the level below stored (none for leaves): only stored bytes are held
+// between levels, a quarter of the decoded size.
+using Children = std::array<DisplacedPatch, 4>;
 
 class Builder {
  public:
@@ -119,32 +121,32 @@ class Builder {
   }
 
   BuiltBintrees run(const std::function<void(const LevelReport&)>& progress) {
-    DecodedLevel finer = level(options_.leafLevel, {}, progress);
-    for (int l = options_.leafLevel - 1; l >= 0; --l) finer = level(l, finer, progress);
+    for (int l = options_.leafLevel; l >= 0; --l) progress(level(l));
     return std::move(built_);
   }
 
  private:
-  DecodedLevel level(int l, const DecodedLevel& finer, const std::function<void(const LevelReport&)>& progress) {
+  LevelReport level(int l) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Diamond> diamonds = diamondsOf(l);
-    DecodedLevel patches(std::size_t(kBintreeRoots) << l);
     inParallel(diamonds.size(), options_.threads, [&](std::size_t d, unsigned worker) {
       const Diamond& diamond = diamonds[d];
-      const std::array<DisplacedPatch, 2> halves =
-          finer.empty() ? leaves(diamond, heights_[worker]) : simplified(diamond, finer);
-      for (int h = 0; h < 2; ++h) patches[indexOf(diamond.halves[std::size_t(h)])] = halves[std::size_t(h)];
-      measure(diamond, halves, finer, heights_[worker]);
+      if (l == options_.leafLevel) {
+        measure(diamond, leaves(diamond, heights_[worker]), {}, heights_[worker]);
+        return;
+      }
+      Children children;
+      for (std::size_t c = 0; c < 4; ++c) children[c] = decodePatch(built_.at(diamond.children()[c]).stored);
+      measure(diamond, simplifiedDiamond(diamond, children, options_.radius), children, heights_[worker]);
     });
     LevelReport report{l, diamonds.size(), 0, 0, 0.0};
     for (const Diamond& diamond : diamonds)
       for (const BintreeNode& half : diamond.halves) {
         report.storedBytes += built_.at(half).stored.size();
-        report.triangles += patches[indexOf(half)].indices.size() / 3;
+        report.triangles += built_.at(half).indices / 3;
       }
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    progress(report);
-    return patches;
+    return report;
   }
 
   std::array<DisplacedPatch, 2> leaves(const Diamond& diamond, const HeightAt& heights) const {
@@ -152,17 +154,11 @@ class Builder {
             leafPatch(diamond.halves[1], options_.radius, heights, options_.divisions)};
   }
 
-  std::array<DisplacedPatch, 2> simplified(const Diamond& diamond, const DecodedLevel& finer) const {
-    std::array<DisplacedPatch, 4> children;
-    const std::array<BintreeNode, 4> nodes = diamond.children();
-    for (std::size_t c = 0; c < 4; ++c) children[c] = finer[indexOf(nodes[c])];
-    return simplifiedDiamond(diamond, children, options_.radius);
-  }
-
   // The halves' error and sphere, shared; each one's error is the larger of its deviation from what it replaces
-  // (the terrain for a leaf, its children's vertices above) plus what those had.
-  void measure(const Diamond& diamond, const std::array<DisplacedPatch, 2>& halves, const DecodedLevel& finer,
+  // (the terrain for a leaf, its children's surface above) plus what those had.
+  void measure(const Diamond& diamond, const std::array<DisplacedPatch, 2>& halves, const Children& children,
                const HeightAt& heights) {
+    const bool leaf = diamond.halves[0].level == options_.leafLevel;
     double error = 0.0;
     std::vector<glm::dvec3> points;
     std::vector<BoundingSphere> spheres;
@@ -170,8 +166,8 @@ class Builder {
       const DisplacedTriangle triangle = displacedTriangle(diamond.halves[h], options_.radius);
       const std::vector<glm::dvec3> own = positionsOf(triangle, halves[h]);
       points.insert(points.end(), own.begin(), own.end());
-      error = std::max(error, finer.empty() ? leafError(triangle, halves[h], options_.radius, heights)
-                                            : deviationFromChildren(diamond, h, triangle, halves[h], finer, spheres));
+      error = std::max(error, leaf ? leafError(triangle, halves[h], options_.radius, heights)
+                                   : deviationFromChildren(diamond, h, triangle, halves[h], children, spheres));
     }
     const BoundingSphere sphere = enclosing(points, spheres);
     for (std::size_t h = 0; h < 2; ++h) {
@@ -182,24 +178,22 @@ class Builder {
       node.error = error;
       node.sphere = sphere;
       std::tie(node.lowest, node.highest) =
-          heightsOf(trianglesOf(displacedTriangle(diamond.halves[h], options_.radius), halves[h]), options_.radius);
+          heightsOf(meshOf(displacedTriangle(diamond.halves[h], options_.radius), halves[h]), options_.radius);
     }
   }
 
   double deviationFromChildren(const Diamond& diamond, std::size_t h, const DisplacedTriangle& triangle,
-                               const DisplacedPatch& half, const DecodedLevel& finer,
+                               const DisplacedPatch& half, const Children& children,
                                std::vector<BoundingSphere>& spheres) const {
-    std::vector<std::array<glm::dvec3, 3>> replaced;
+    PlanetMesh replaced;
     double childrenError = 0.0;
     for (std::size_t c = 2 * h; c < 2 * h + 2; ++c) {
       const BintreeNode child = diamond.children()[c];
-      const auto own = trianglesOf(displacedTriangle(child, options_.radius), finer[indexOf(child)]);
-      replaced.insert(replaced.end(), own.begin(), own.end());
+      replaced.append(meshOf(displacedTriangle(child, options_.radius), children[c]));
       childrenError = std::max(childrenError, built_.at(child).error);
       spheres.push_back(built_.at(child).sphere);
     }
-    return radialDeviation(RadialSurface(triangle, trianglesOf(triangle, half)),
-                           RadialSurface(triangle, std::move(replaced))) +
+    return radialDeviation(RadialSurface(triangle, meshOf(triangle, half)), RadialSurface(triangle, replaced)) +
            childrenError;
   }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <vector>
@@ -11,13 +12,23 @@
 
 namespace strata::bdam {
 
+// Triangles of planetocentric points, indexed.
+struct PlanetMesh {
+  std::vector<glm::dvec3> positions;  // m
+  std::vector<std::uint32_t> indices;
+  void append(const PlanetMesh& other);
+};
+
+// A patch's triangles as planetocentric points.
+PlanetMesh meshOf(const DisplacedTriangle& triangle, const DisplacedPatch& patch);
+
 // Triangles seen from the body's centre, found along the line through a direction. A triangle seen from the centre is
 // a triangle on any plane in front of it, here the plane of a node's corners, where each line is found among them
 // (in a grid of their bounds). Triangles seen nearly edge-on are left out: walls along a frozen edge, three of its
 // vertices, which simplification can leave, cover no line.
 class RadialSurface {
  public:
-  RadialSurface(const DisplacedTriangle& node, std::vector<std::array<glm::dvec3, 3>> triangles);
+  RadialSurface(const DisplacedTriangle& node, const PlanetMesh& mesh);
   // The distance from the centre, m, at which the line through `direction` (unit) meets the surface; at a line
   // just beyond its edge (rounding), the nearest triangle's plane there; empty for a line well clear of it.
   std::optional<double> radiusAlong(const glm::dvec3& direction) const;
@@ -27,33 +38,37 @@ class RadialSurface {
   bool seenOnTheSamePlaneAs(const RadialSurface& other) const;
 
  private:
-  void uniqueVerticesAndEdges();
+  // A triangle on the plane, and its own plane in space: the line through d meets it at offset / (normal . d).
+  struct Facet {
+    std::array<glm::dvec2, 3> corners;
+    glm::dvec3 normal;
+    double offset;
+  };
+  // The cells of a grid over the surface's bounds on the plane, each listing what touches it.
+  struct Grid {
+    int side = 1;
+    std::vector<std::vector<std::uint32_t>> cells;
+  };
+
   glm::dvec2 projected(const glm::dvec3& point) const;
   glm::dvec3 direction(const glm::dvec2& onPlane) const;
-  glm::ivec2 cellOf(const glm::dvec2& onPlane) const;
-  // Calls visit(triangle) for the triangles listed in the cells over a box on the plane (some more than once).
-  template <typename Visit>
-  void forEachNear(const glm::dvec2& low, const glm::dvec2& high, Visit visit) const;
+  glm::ivec2 cellOf(const glm::dvec2& onPlane, int side) const;
+  void list(Grid& grid, std::uint32_t item, const glm::dvec2& low, const glm::dvec2& high) const;
 
   glm::dvec3 origin_, normal_, u_, v_;
-  std::vector<std::array<glm::dvec3, 3>> triangles_;
-  std::vector<std::array<glm::dvec2, 3>> flat_;
-  std::vector<glm::dvec3> vertices_;              // each once
-  std::vector<std::array<glm::dvec2, 2>> edges_;  // each once, on the plane
+  std::vector<glm::dvec2> flatVertices_;
+  std::vector<glm::dvec3> vertices_;
+  std::vector<Facet> facets_;
+  std::vector<std::array<std::uint32_t, 2>> edges_;  // each once, by vertex
   glm::dvec2 low_{0.0}, high_{0.0};
-  int cellsASide_ = 1;
-  std::vector<std::vector<std::size_t>> cells_;
+  Grid facetGrid_, edgeGrid_;
 };
 
-// A patch's triangles as planetocentric points.
-std::vector<std::array<glm::dvec3, 3>> trianglesOf(const DisplacedTriangle& triangle, const DisplacedPatch& patch);
-
-// The object-space error of a coarse surface against a finer one, both seen on the same node's plane of the same
-// terrain [Cignoni et al. 2003, §5: "the maximum difference from the original mesh in the planetocentric reference
-// system (along the normal to the planet surface)"]: the largest distance along a line from the body's centre between
-// the two, over the lines through either's vertices and their edges' crossings, where the largest of two triangulated
-// surfaces' differences lies. The paper renders both from the centre and compares their depth buffers, which samples at
-// its pixels.
+// The object-space error of a coarse surface against a finer one, both seen on the same node's plane [Cignoni et al.
+// 2003, §5: "the maximum difference from the original mesh in the planetocentric reference system (along the normal to
+// the planet surface)"]: the largest distance along a line from the body's centre between the two, over the lines
+// through either's vertices and their edges' crossings, where the largest of two triangulated surfaces' differences
+// lies. The paper renders both from the centre and compares their depth buffers, which samples at its pixels.
 double radialDeviation(const RadialSurface& coarse, const RadialSurface& fine);
 
 // The largest distance along the line from the centre through each of `points` to `surface`.

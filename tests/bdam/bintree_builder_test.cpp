@@ -110,16 +110,15 @@ TEST(BintreeBuilder, ANodesErrorBoundsItsDistanceFromTheLeavesBelowIt) {
     for (std::size_t n = 0; n < nodes.size(); n += 1 + nodes.size() / 24) {
       const BintreeNode& node = nodes[n];
       const int below = kLeafLevel - level;
-      std::vector<std::array<glm::dvec3, 3>> leaves;
+      PlanetMesh leaves;
       for (std::uint64_t i = 0; i < (std::uint64_t(1) << below); ++i) {
         const BintreeNode leaf{node.root, kLeafLevel, (node.path << below) | i};
-        const auto triangles = trianglesOf(displacedTriangle(leaf, kMars), decodePatch(built().at(leaf).stored));
-        leaves.insert(leaves.end(), triangles.begin(), triangles.end());
+        leaves.append(meshOf(displacedTriangle(leaf, kMars), decodePatch(built().at(leaf).stored)));
       }
       const DisplacedTriangle triangle = displacedTriangle(node, kMars);
       const DisplacedPatch patch = decodePatch(built().at(node).stored);
-      const double deviation = radialDeviation(RadialSurface(triangle, trianglesOf(triangle, patch)),
-                                               RadialSurface(triangle, std::move(leaves)));
+      const double deviation =
+          radialDeviation(RadialSurface(triangle, meshOf(triangle, patch)), RadialSurface(triangle, leaves));
       EXPECT_LE(deviation, built().at(node).error) << "level " << level;
       EXPECT_GE(deviation, built().at(node).error / 3) << "level " << level << ": the bound is not tight";
       EXPECT_GE(patch.indices.size() / 3, 128u);

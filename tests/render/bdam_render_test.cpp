@@ -12,11 +12,15 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <map>
 #include <string>
 
+#include <strata/log.hpp>
+
 #include "bdam_data.hpp"
 #include "bintree_builder.hpp"
+#include "cube_bintree.hpp"
 #include "face_file.hpp"
 #include "image_agreement.hpp"
 #include "raster_heights.hpp"
@@ -137,6 +141,45 @@ TEST(BdamAgreement, DrawsTheSamePlanetAsTheIcosahedralGenerator) {
     EXPECT_LT(agreement.meanDifference, 4.0);
     EXPECT_LT(agreement.largeShare, 0.04);
   }
+}
+
+// A patch damaged on disk under the view: reported once, naming the file and the node, and the coarser patch above it
+// drawn in its place, with no hole (docs/bdam.md, "The generator").
+TEST(BdamDamage, ADamagedPatchIsReportedAndTheCoarserOneDrawnInItsPlace) {
+  const TemporaryDirectory folder;
+  for (const auto& file : std::filesystem::directory_iterator(builtGeoid(2000.0)))
+    std::filesystem::copy_file(file.path(), folder.path() / file.path().filename());
+  const Camera camera{.lon = 30.0, .lat = 25.0, .altitude = 2.0e5, .tilt = 0.0, .fov = 50.0};
+  const glm::dvec2 place = glm::radians(glm::dvec2(camera.lon, camera.lat));
+  const bdam::BintreeNode leaf = bdam::nodeContaining(unitNormal(place.x, place.y), 8);
+  const std::filesystem::path face = folder.path() / ("face-" + std::to_string(leaf.root / 2) + ".bdam");
+  {  // the record's patch offset (face_file.hpp's layout), and a byte in the middle of its patch changed
+    std::fstream bytes(face, std::ios::in | std::ios::out | std::ios::binary);
+    const std::uint64_t slot = std::uint64_t(leaf.root % 2) * ((std::uint64_t(2) << 8) - 1) + (1u << 8) - 1 + leaf.path;
+    std::uint64_t offset = 0;
+    bytes.seekg(std::streamoff(88 + 56 * slot));
+    bytes.read(reinterpret_cast<char*>(&offset), sizeof offset);
+    bytes.seekp(std::streamoff(offset + 40));
+    bytes.put('\x5a');
+  }
+  std::vector<LogMessage> warnings;
+  const LogSink previous = setLogSink([&warnings](const LogMessage& message) { warnings.push_back(message); });
+  TemporaryDirectory directory;
+  auto engine = makeEngine();
+  engine->load(directory.write(  // half a pixel: the leaves under the eye are wanted
+      "bdam.yaml",
+      pipelineWith("{type: geometry.bdam, pixel_error: 0.5, path: " + folder.path().string() + "}", "none")));
+  const Image image = renderFrames(*engine, camera, kWidth, kHeight, 2);
+  setLogSink(previous);
+  const std::string node = "bintree " + std::to_string(leaf.root) + ", level 8, node " + std::to_string(leaf.path);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].text.find(face.string() + ": " + node + ": its patch is damaged"), std::string::npos)
+      << warnings[0].text;
+  EXPECT_NE(warnings[0].text.find("the coarser patch above it is drawn instead"), std::string::npos);
+  int holes = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) holes += !covered(image, x, y);
+  EXPECT_EQ(holes, 0) << "the view from 200 km looks at the ground alone";
 }
 
 }  // namespace
