@@ -34,6 +34,10 @@ struct BdamSettings {
   bool prefetch = true;          // the paper's speculative prefetch, 0.5 s ahead
 };
 
+// Patch slots at the least, whatever cache_mb says: the roots and a coarse view's patches (the paper drew up to 280 a
+// frame at 640x480). With fewer than a view needs, the refinement stops where the slots run out.
+constexpr std::size_t kFewestSlots = 256;
+
 // Frames the prefetch looks ahead, at the 30 frames a second a flight is rendered or played at: the paper's 0.5 s.
 constexpr double kFramesAhead = 15.0;
 
@@ -87,7 +91,8 @@ class BdamGeometry : public Node, public SurfaceGeometry {
 
  private:
   std::size_t slots() const;
-  Cut refined(const View& view);
+  std::optional<NodeRecord> record(const BintreeNode& node) const;
+  Cut refine(const View& view, const std::function<bool(const BintreeNode&)>& resident) const;
   void predictAndPrefetch(const View& view);
 
   BdamSettings settings_;
@@ -140,16 +145,18 @@ void BdamGeometry::createResources(GpuContext& gpu) {
   rasterisationTimer_.emplace();
 }
 
-Cut BdamGeometry::refined(const View& view) {
-  const NodeLookup lookup{[this](const BintreeNode& node) -> std::optional<NodeRecord> {
-                            try {
-                              return data_->faceOf(node).node(node);
-                            } catch (const FaceFileError&) {
-                              return std::nullopt;
-                            }
-                          },
-                          [this](const BintreeNode& node) { return loader_->resident(node); }};
-  return refine(view, data_->leafLevel(), settings_.pixelError, radius_ + heights_.lowest, lookup);
+// A node's error and sphere; none where its record is damaged (the refinement neither splits nor draws it).
+std::optional<NodeRecord> BdamGeometry::record(const BintreeNode& node) const {
+  try {
+    return data_->faceOf(node).node(node);
+  } catch (const FaceFileError&) {
+    return std::nullopt;
+  }
+}
+
+Cut BdamGeometry::refine(const View& view, const std::function<bool(const BintreeNode&)>& resident) const {
+  return bdam::refine(view, data_->leafLevel(), settings_.pixelError, radius_ + heights_.lowest,
+                      {[this](const BintreeNode& node) { return record(node); }, resident});
 }
 
 // The refinement on the view moved on as it moved since the last frame [Cignoni et al. 2003, §4.4: "linear
@@ -159,16 +166,7 @@ void BdamGeometry::predictAndPrefetch(const View& view) {
   if (settings_.prefetch && lastEye_) {
     View ahead = view;
     ahead.eye = view.eye + kFramesAhead * (view.eye - *lastEye_);
-    const NodeLookup everything{[this](const BintreeNode& node) -> std::optional<NodeRecord> {
-                                  try {
-                                    return data_->faceOf(node).node(node);
-                                  } catch (const FaceFileError&) {
-                                    return std::nullopt;
-                                  }
-                                },
-                                [](const BintreeNode&) { return true; }};
-    loader_->prefetch(
-        refine(ahead, data_->leafLevel(), settings_.pixelError, radius_ + heights_.lowest, everything).drawn);
+    loader_->prefetch(refine(ahead, [](const BintreeNode&) { return true; }).drawn);
   }
   lastEye_ = view.eye;
 }
@@ -176,13 +174,14 @@ void BdamGeometry::predictAndPrefetch(const View& view) {
 void BdamGeometry::prepare(const FrameState& frame) {
   const auto start = std::chrono::steady_clock::now();
   const bool settle = frame.still || frame.index == 0;
-  Cut cut = refined(frame.view);
+  const auto resident = [this](const BintreeNode& node) { return loader_->resident(node); };
+  Cut cut = refine(frame.view, resident);
   for (const BintreeNode& node : cut.drawn) loader_->drawn(node, frame.index);
   while (!cut.missing.empty()) {
     const std::uint64_t before = loader_->loaded();
     loader_->load(cut.missing, std::size_t(settings_.loadsPerFrame), frame.index);
     if (!settle || loader_->loaded() == before) break;
-    cut = refined(frame.view);
+    cut = refine(frame.view, resident);
     for (const BintreeNode& node : cut.drawn) loader_->drawn(node, frame.index);
   }
   predictAndPrefetch(frame.view);

@@ -134,6 +134,9 @@ FaceFile::FaceFile(const std::filesystem::path& path) : path_(path) {
     mapping_ = nullptr;
     throw FaceFileError(path.string() + ": is not a face file of `strata build-bdam` (too short, or unreadable)");
   }
+  // Read what is asked for and no more: the kernel's read-around would fetch neighbours that no view asked for, and
+  // the patches a flight will want are asked for ahead by prefetch().
+  ::madvise(mapping_, size_, MADV_RANDOM);
   const auto stored = readAt<StoredHeader>(bytes(), 0);
   const auto refuse = [&](const std::string& what) {
     ::munmap(mapping_, size_);
