@@ -35,12 +35,13 @@ NodeTypeDeclaration typeNamed(const std::string& name, const std::string& summar
 TEST(PluginLoading, BuiltInModulesRegisterTheirTypes) {
   PluginRegistry registry;
   registry.loadDirectories({STRATA_TEST_PLUGIN_DIR});
-  for (const char* type : {"source.gdal", "source.procedural", "geometry.icosahedral", "geometry.pgm",
-                           "geometry.healpix", "geometry.clipmap", "output.image", "composite.projection_quality",
-                           "composite.overlay_mask", "composite.temporal_blend", "composite.relief",
-                           "composite.chroma_fusion", "composite.layer_peel", "composite.peeled_surface"})
+  for (const char* type :
+       {"source.gdal", "source.procedural", "geometry.icosahedral", "geometry.pgm", "geometry.healpix",
+        "geometry.clipmap", "geometry.bdam", "output.image", "composite.projection_quality", "composite.overlay_mask",
+        "composite.temporal_blend", "composite.relief", "composite.chroma_fusion", "composite.layer_peel",
+        "composite.peeled_surface"})
     EXPECT_NE(registry.find(type), nullptr) << type;
-  ASSERT_EQ(registry.modules().size(), 13u);
+  ASSERT_EQ(registry.modules().size(), 14u);
   EXPECT_EQ(registry.modules()[0].name, "composite-chroma-fusion");  // files load in name order
 }
 
