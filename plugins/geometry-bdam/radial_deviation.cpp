@@ -89,7 +89,7 @@ bool RadialSurface::seenOnTheSamePlaneAs(const RadialSurface& other) const {
 
 glm::ivec2 RadialSurface::cellOf(const glm::dvec2& onPlane, int side) const {
   const glm::dvec2 f = (onPlane - low_) / glm::max(high_ - low_, glm::dvec2(1e-300)) * double(side);
-  return glm::clamp(glm::ivec2(glm::floor(f)), glm::ivec2(0), glm::ivec2(side - 1));
+  return glm::ivec2(glm::clamp(glm::floor(f), glm::dvec2(0.0), glm::dvec2(side - 1)));  // in range before it is an int
 }
 
 glm::dvec2 RadialSurface::projected(const glm::dvec3& point) const {
