@@ -129,11 +129,11 @@ void BdamGeometry::open() {
   loader_ = std::make_unique<PatchLoader>(*data_, slots());
 }
 
-// Slots of the largest patch's size within cache_mb, at least the roots and a view's worth.
+// Slots of the largest patch's size within cache_mb, at least kFewestSlots.
 std::size_t BdamGeometry::slots() const {
   const double slotBytes =
       double(data_->mostVertices()) * sizeof(DisplacedVertex) + double(data_->mostIndices()) * sizeof(std::uint32_t);
-  return std::max<std::size_t>(std::size_t(settings_.cacheMegabytes * 1e6 / slotBytes), 1024);
+  return std::max<std::size_t>(std::size_t(settings_.cacheMegabytes * 1e6 / slotBytes), kFewestSlots);
 }
 
 void BdamGeometry::createResources(GpuContext& gpu) {

@@ -84,7 +84,7 @@ namespace {
 // parameter, from its lesser corner, found and quantised from its corners alone. Returns b1, b2 in steps.
 std::array<long, 2> onEdge(const DisplacedTriangle& triangle, const glm::dvec3& point, int opposite) {
   const int i = opposite == 0 ? 1 : 0, j = opposite == 2 ? 1 : 2;
-  const bool flipped = lexicographicallyLess(triangle.corners[std::size_t(j)], triangle.corners[std::size_t(i)]);
+  const bool flipped = triangle.edgeRunsBackwards(opposite);
   const int from = flipped ? j : i, to = flipped ? i : j;
   const CanonicalEdge edge{triangle.corners[std::size_t(from)], triangle.corners[std::size_t(to)]};
   const glm::dvec3 fromNormal = triangle.normals[std::size_t(from)], toNormal = triangle.normals[std::size_t(to)];
@@ -130,6 +130,11 @@ std::array<long, 2> inside(const DisplacedTriangle& triangle, const glm::dvec3& 
 }
 
 }  // namespace
+
+bool DisplacedTriangle::edgeRunsBackwards(int opposite) const {
+  const int i = opposite == 0 ? 1 : 0, j = opposite == 2 ? 1 : 2;  // the edge's corners, as interpolated() names them
+  return lexicographicallyLess(corners[std::size_t(j)], corners[std::size_t(i)]);
+}
 
 DisplacedVertex DisplacedTriangle::vertexAt(const glm::dvec3& point, int edgeOpposite) const {
   const std::array<long, 2> steps = edgeOpposite >= 0 ? onEdge(*this, point, edgeOpposite) : inside(*this, point);

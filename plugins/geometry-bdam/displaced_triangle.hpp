@@ -32,6 +32,9 @@ struct DisplacedTriangle {
   // point's distance from the centre. `edgeOpposite` (0, 1 or 2; -1 for none) names the edge the point is known to
   // lie on: it is put there from that edge's corners alone, so that the patches sharing the edge store it alike.
   DisplacedVertex vertexAt(const glm::dvec3& point, int edgeOpposite) const;
+  // Whether the edge opposite corner `opposite` is formed from its higher-numbered corner (its lexicographically
+  // lesser end), as point() forms it: what the GPU needs to form it alike (patch_batch.hpp).
+  bool edgeRunsBackwards(int opposite) const;
 };
 
 DisplacedTriangle displacedTriangle(const BintreeNode& node, double radius);

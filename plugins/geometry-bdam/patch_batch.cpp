@@ -8,14 +8,6 @@
 namespace strata::bdam {
 namespace {
 
-bool lexicographicallyLess(const glm::dvec3& a, const glm::dvec3& b) {
-  return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-}
-
-// The edges' corners in the order displaced_triangle.cpp's interpolation names them: opposite corner 0, (1, 2);
-// opposite 1, (0, 2); opposite 2, (0, 1).
-constexpr int kEdgeCorners[3][2] = {{1, 2}, {0, 2}, {0, 1}};
-
 GpuPatch gpuPatchOf(const BintreeNode& node, const View& view, double radius) {
   const DisplacedTriangle t = displacedTriangle(node, radius);
   GpuPatch patch{};
@@ -29,8 +21,7 @@ GpuPatch gpuPatchOf(const BintreeNode& node, const View& view, double radius) {
   const double longitude = std::atan2(middle.y, middle.x) - view.reference.x;
   patch.centre.x = float(std::remainder(longitude, 2.0 * std::numbers::pi));
   for (unsigned e = 0; e < 3; ++e)
-    if (lexicographicallyLess(t.corners[std::size_t(kEdgeCorners[e][1])], t.corners[std::size_t(kEdgeCorners[e][0])]))
-      patch.edgeOrder.x |= 1u << e;
+    if (t.edgeRunsBackwards(int(e))) patch.edgeOrder.x |= 1u << e;
   return patch;
 }
 
