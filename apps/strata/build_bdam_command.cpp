@@ -62,7 +62,8 @@ void buildBdam(const BuildBdamRequest& request) {
                 "give it with --radius (m)");
   bdam::BuildOptions options{
       radius, request.level >= 0 ? request.level : leafLevelFor(heights->texelSize(radius), radius, request.divisions),
-      request.divisions, request.threads ? request.threads : std::max(1u, std::thread::hardware_concurrency())};
+      request.divisions, request.threads ? request.threads : std::max(1u, std::thread::hardware_concurrency()),
+      files.scratchFor(targets[0]).path()};
   std::fprintf(stderr,
                "strata build-bdam: %s on a body of radius %.0f m, leaves of level %d (%d steps a side), %u %s\n",
                request.input.c_str(), radius, options.leafLevel, options.divisions, options.threads,

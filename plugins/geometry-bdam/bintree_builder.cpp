@@ -21,6 +21,10 @@
 namespace strata::bdam {
 namespace {
 
+// Diamonds built between two appends to their level's file: enough that the workers seldom wait for the last of them
+// (seconds of work), few enough that their patches take a few megabytes.
+constexpr std::size_t kDiamondsAtATime = 4096;
+
 std::size_t indexOf(const BintreeNode& node) { return (std::size_t(node.root) << node.level) | node.path; }
 
 // Calls work(item, worker) for every item below `count` on `threads` threads; the first exception is rethrown
@@ -110,9 +114,10 @@ double leafError(const DisplacedTriangle& triangle, const DisplacedPatch& patch,
   return radialDeviation(RadialSurface(triangle, mesh), terrain);
 }
 
-// The children of a diamond, decoded from what the level below stored (none for leaves): only stored bytes are held
-// between levels, a quarter of the decoded size.
+// The children of a diamond, decoded from what the level below stored (none for leaves).
 using Children = std::array<DisplacedPatch, 4>;
+// A diamond's halves as encodePatch stores them.
+using StoredHalves = std::array<std::vector<std::byte>, 2>;
 
 class Builder {
  public:
@@ -129,24 +134,33 @@ class Builder {
   LevelReport level(int l) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<Diamond> diamonds = diamondsOf(l);
-    inParallel(diamonds.size(), options_.threads, [&](std::size_t d, unsigned worker) {
-      const Diamond& diamond = diamonds[d];
-      if (l == options_.leafLevel) {
-        measure(diamond, leaves(diamond, heights_[worker]), {}, heights_[worker]);
-        return;
-      }
-      Children children;
-      for (std::size_t c = 0; c < 4; ++c) children[c] = decodePatch(built_.at(diamond.children()[c]).stored);
-      measure(diamond, simplifiedDiamond(diamond, children, options_.radius), children, heights_[worker]);
-    });
     LevelReport report{l, diamonds.size(), 0, 0, 0.0};
-    for (const Diamond& diamond : diamonds)
-      for (const BintreeNode& half : diamond.halves) {
-        report.storedBytes += built_.at(half).stored.size();
-        report.triangles += built_.at(half).indices / 3;
-      }
+    LevelPatches& patches = built_.patchesOf(l);
+    for (std::size_t from = 0; from < diamonds.size(); from += kDiamondsAtATime) {
+      const std::span<const Diamond> some =
+          std::span(diamonds).subspan(from, std::min(kDiamondsAtATime, diamonds.size() - from));
+      std::vector<StoredHalves> stored(some.size());
+      inParallel(some.size(), options_.threads,
+                 [&](std::size_t d, unsigned worker) { stored[d] = halvesOf(some[d], heights_[worker]); });
+      for (std::size_t d = 0; d < some.size(); ++d)
+        for (std::size_t h = 0; h < 2; ++h) {
+          BuiltNode& node = built_.at(some[d].halves[h]);
+          node.offset = patches.append(stored[d][h]);
+          node.bytes = std::uint32_t(stored[d][h].size());
+          report.storedBytes += node.bytes;
+          report.triangles += node.indices / 3;
+        }
+    }
+    patches.finish();
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
+  }
+
+  StoredHalves halvesOf(const Diamond& diamond, const HeightAt& heights) {
+    if (diamond.halves[0].level == options_.leafLevel) return measure(diamond, leaves(diamond, heights), {}, heights);
+    Children children;
+    for (std::size_t c = 0; c < 4; ++c) children[c] = decodePatch(built_.stored(diamond.children()[c]));
+    return measure(diamond, simplifiedDiamond(diamond, children, options_.radius), children, heights);
   }
 
   std::array<DisplacedPatch, 2> leaves(const Diamond& diamond, const HeightAt& heights) const {
@@ -156,8 +170,8 @@ class Builder {
 
   // The halves' error and sphere, shared; each one's error is the larger of its deviation from what it replaces
   // (the terrain for a leaf, its children's surface above) plus what those had.
-  void measure(const Diamond& diamond, const std::array<DisplacedPatch, 2>& halves, const Children& children,
-               const HeightAt& heights) {
+  StoredHalves measure(const Diamond& diamond, const std::array<DisplacedPatch, 2>& halves, const Children& children,
+                       const HeightAt& heights) {
     const bool leaf = diamond.halves[0].level == options_.leafLevel;
     double error = 0.0;
     std::vector<glm::dvec3> points;
@@ -170,9 +184,10 @@ class Builder {
                                    : deviationFromChildren(diamond, h, triangle, halves[h], children, spheres));
     }
     const BoundingSphere sphere = enclosing(points, spheres);
+    StoredHalves stored;
     for (std::size_t h = 0; h < 2; ++h) {
       BuiltNode& node = built_.at(diamond.halves[h]);
-      node.stored = encodePatch(halves[h]);
+      stored[h] = encodePatch(halves[h]);
       node.vertices = std::uint32_t(halves[h].vertices.size());
       node.indices = std::uint32_t(halves[h].indices.size());
       node.error = error;
@@ -180,6 +195,7 @@ class Builder {
       std::tie(node.lowest, node.highest) =
           heightsOf(meshOf(displacedTriangle(diamond.halves[h], options_.radius), halves[h]), options_.radius);
     }
+    return stored;
   }
 
   double deviationFromChildren(const Diamond& diamond, std::size_t h, const DisplacedTriangle& triangle,
@@ -205,7 +221,10 @@ class Builder {
 }  // namespace
 
 BuiltBintrees::BuiltBintrees(const BuildOptions& options) : options_(options) {
-  for (int l = 0; l <= options.leafLevel; ++l) levels_.emplace_back(std::size_t(kBintreeRoots) << l);
+  for (int l = 0; l <= options.leafLevel; ++l) {
+    levels_.emplace_back(std::size_t(kBintreeRoots) << l);
+    patches_.push_back(std::make_unique<LevelPatches>(options.scratch / ("level-" + std::to_string(l) + ".patches")));
+  }
 }
 
 const BuiltNode& BuiltBintrees::at(const BintreeNode& node) const {
@@ -214,11 +233,18 @@ const BuiltNode& BuiltBintrees::at(const BintreeNode& node) const {
 
 BuiltNode& BuiltBintrees::at(const BintreeNode& node) { return levels_.at(std::size_t(node.level)).at(indexOf(node)); }
 
+std::span<const std::byte> BuiltBintrees::stored(const BintreeNode& node) const {
+  const BuiltNode& built = at(node);
+  return patches_.at(std::size_t(node.level))->at(built.offset, built.bytes);
+}
+
 BuiltBintrees buildBintrees(const HeightsForThread& heights, const BuildOptions& options,
                             const std::function<void(const LevelReport&)>& progress) {
   if (!(options.radius > 0.0)) throw std::invalid_argument("a body's radius must be positive");
   if (options.leafLevel < 0 || options.leafLevel > 30)
     throw std::invalid_argument("a leaf level of " + std::to_string(options.leafLevel) + ": 0 to 30");
+  if (!std::filesystem::is_directory(options.scratch))
+    throw std::invalid_argument("a build needs a scratch folder for its levels' patches: " + options.scratch.string());
   BuildOptions resolved = options;
   if (resolved.threads == 0) resolved.threads = std::max(1u, std::thread::hardware_concurrency());
   return Builder(heights, resolved).run(progress);

@@ -104,17 +104,17 @@ void writeFaceFile(const std::filesystem::path& path, int face, const BuiltBintr
   for (const BintreeNode& node : order) {
     const BuiltNode& built = bintrees.at(node);
     StoredRecord record{offset,
-                        std::uint32_t(built.stored.size()),
+                        built.bytes,
                         0,
                         built.error,
                         {built.sphere.centre.x, built.sphere.centre.y, built.sphere.centre.z},
                         built.sphere.radius};
     record.crc = crcOf(record, &StoredRecord::crc);
     out.write(reinterpret_cast<const char*>(&record), sizeof record);
-    offset += built.stored.size();
+    offset += built.bytes;
   }
   for (const BintreeNode& node : order) {
-    const std::vector<std::byte>& patch = bintrees.at(node).stored;
+    const std::span<const std::byte> patch = bintrees.stored(node);
     out.write(reinterpret_cast<const char*>(patch.data()), std::streamsize(patch.size()));
   }
   out.close();

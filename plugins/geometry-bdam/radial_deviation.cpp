@@ -17,12 +17,11 @@ constexpr double kBeyondEdge = 1e-6;
 
 double cross(glm::dvec2 x, glm::dvec2 y) { return x.x * y.y - x.y * y.x; }
 
-// The least of a point's three barycentrics in a triangle: >= 0 inside it.
-double leastBarycentric(const glm::dvec2& p, const std::array<glm::dvec2, 3>& t) {
-  const double area = cross(t[1] - t[0], t[2] - t[0]);
-  if (area == 0.0) return -std::numeric_limits<double>::infinity();
-  return std::min(
-      {cross(t[1] - p, t[2] - p) / area, cross(t[2] - p, t[0] - p) / area, cross(t[0] - p, t[1] - p) / area});
+// The least of a point's three barycentrics in a triangle, given the inverse of its doubled area: >= 0 inside it.
+double leastBarycentric(const glm::dvec2& p, const std::array<glm::dvec2, 3>& t, double inverseArea) {
+  if (inverseArea == 0.0) return -std::numeric_limits<double>::infinity();
+  return std::min({inverseArea * cross(t[1] - p, t[2] - p), inverseArea * cross(t[2] - p, t[0] - p),
+                   inverseArea * cross(t[0] - p, t[1] - p)});
 }
 
 }  // namespace
@@ -53,7 +52,9 @@ RadialSurface::RadialSurface(const DisplacedTriangle& node, const PlanetMesh& me
     const glm::dvec3 a = vertices_.at(i[0]), n = glm::cross(vertices_.at(i[1]) - a, vertices_.at(i[2]) - a);
     if (std::abs(glm::dot(n, glm::normalize(a))) <= kEdgeOn * glm::length(n)) continue;  // seen edge-on
     kept.push_back(i);
-    facets_.push_back({{flatVertices_[i[0]], flatVertices_[i[1]], flatVertices_[i[2]]}, n, glm::dot(n, a)});
+    const std::array<glm::dvec2, 3> corners = {flatVertices_[i[0]], flatVertices_[i[1]], flatVertices_[i[2]]};
+    const double area = cross(corners[1] - corners[0], corners[2] - corners[0]);
+    facets_.push_back({corners, area != 0.0 ? 1.0 / area : 0.0, n, glm::dot(n, a)});
     for (std::size_t e = 0; e < 3; ++e)
       edges_.push_back({std::min(i[e], i[(e + 1) % 3]), std::max(i[e], i[(e + 1) % 3])});
   }
@@ -63,33 +64,48 @@ RadialSurface::RadialSurface(const DisplacedTriangle& node, const PlanetMesh& me
   low_ = high_ = facets_[0].corners[0];
   for (const Facet& f : facets_)
     for (const glm::dvec2& p : f.corners) low_ = glm::min(low_, p), high_ = glm::max(high_, p);
-  facetGrid_.side = std::clamp(int(std::sqrt(double(facets_.size()) / kPerCell)), 1, 1024);
-  facetGrid_.cells.resize(std::size_t(facetGrid_.side * facetGrid_.side));
-  for (std::size_t f = 0; f < facets_.size(); ++f) {
-    const auto& c = facets_[f].corners;
-    list(facetGrid_, std::uint32_t(f), glm::min(c[0], glm::min(c[1], c[2])), glm::max(c[0], glm::max(c[1], c[2])));
+  std::vector<Bounds> bounds;
+  for (const Facet& f : facets_) {
+    const auto& c = f.corners;
+    bounds.emplace_back(glm::min(c[0], glm::min(c[1], c[2])), glm::max(c[0], glm::max(c[1], c[2])));
   }
-  edgeGrid_.side = std::clamp(int(std::sqrt(double(edges_.size()) / kPerCell)), 1, 1024);
-  edgeGrid_.cells.resize(std::size_t(edgeGrid_.side * edgeGrid_.side));
-  for (std::size_t e = 0; e < edges_.size(); ++e) {
-    const glm::dvec2 a = flatVertices_[edges_[e][0]], b = flatVertices_[edges_[e][1]];
-    list(edgeGrid_, std::uint32_t(e), glm::min(a, b), glm::max(a, b));
-  }
+  facetGrid_ = gridOver(bounds);
+  bounds.clear();
+  for (const auto& [a, b] : edges_)
+    bounds.emplace_back(glm::min(flatVertices_[a], flatVertices_[b]), glm::max(flatVertices_[a], flatVertices_[b]));
+  edgeGrid_ = gridOver(bounds);
 }
 
-void RadialSurface::list(Grid& grid, std::uint32_t item, const glm::dvec2& low, const glm::dvec2& high) const {
-  const glm::ivec2 from = cellOf(low, grid.side), to = cellOf(high, grid.side);
-  for (int y = from.y; y <= to.y; ++y)
-    for (int x = from.x; x <= to.x; ++x) grid.cells[std::size_t(y * grid.side + x)].push_back(item);
+// A grid of about kPerCell items a cell, listing each item in every cell its bounds touch.
+RadialSurface::Grid RadialSurface::gridOver(const std::vector<Bounds>& bounds) const {
+  Grid grid;
+  grid.side = std::clamp(int(std::sqrt(double(bounds.size()) / kPerCell)), 1, 1024);
+  grid.scale = double(grid.side) / glm::max(high_ - low_, glm::dvec2(1e-300));
+  const auto cells = std::size_t(grid.side * grid.side);
+  grid.first.assign(cells + 1, 0);
+  const auto eachCell = [&](const Bounds& b, const auto& visit) {
+    const glm::ivec2 from = cellOf(b.first, grid), to = cellOf(b.second, grid);
+    for (int y = from.y; y <= to.y; ++y)
+      for (int x = from.x; x <= to.x; ++x) visit(std::size_t(y * grid.side + x));
+  };
+  for (const Bounds& b : bounds) eachCell(b, [&](std::size_t c) { ++grid.first[c + 1]; });
+  for (std::size_t c = 0; c < cells; ++c) grid.first[c + 1] += grid.first[c];
+  grid.items.resize(grid.first[cells]);
+  std::vector<std::uint32_t> filled(grid.first.begin(), grid.first.end() - 1);
+  for (std::size_t i = 0; i < bounds.size(); ++i)
+    eachCell(bounds[i], [&](std::size_t c) { grid.items[filled[c]++] = std::uint32_t(i); });
+  return grid;
 }
 
 bool RadialSurface::seenOnTheSamePlaneAs(const RadialSurface& other) const {
   return origin_ == other.origin_ && normal_ == other.normal_;
 }
 
-glm::ivec2 RadialSurface::cellOf(const glm::dvec2& onPlane, int side) const {
-  const glm::dvec2 f = (onPlane - low_) / glm::max(high_ - low_, glm::dvec2(1e-300)) * double(side);
-  return glm::ivec2(glm::clamp(glm::floor(f), glm::dvec2(0.0), glm::dvec2(side - 1)));  // in range before it is an int
+glm::ivec2 RadialSurface::cellOf(const glm::dvec2& onPlane, const Grid& grid) const {
+  const auto along = [last = double(grid.side - 1)](double cells) {
+    return int(std::max(0.0, std::min(cells, last)));  // in range (NaN to 0) before it is an int, which truncates
+  };
+  return {along((onPlane.x - low_.x) * grid.scale.x), along((onPlane.y - low_.y) * grid.scale.y)};
 }
 
 glm::dvec2 RadialSurface::projected(const glm::dvec3& point) const {
@@ -103,12 +119,12 @@ glm::dvec3 RadialSurface::direction(const glm::dvec2& onPlane) const {
 
 std::optional<double> RadialSurface::radiusAlong(const glm::dvec3& direction) const {
   const glm::dvec2 p = projected(direction);
-  const glm::ivec2 cell = cellOf(p, facetGrid_.side);
   const Facet* best = nullptr;
   double bestInside = -std::numeric_limits<double>::infinity();
-  for (std::uint32_t f : facetGrid_.cells[std::size_t(cell.y * facetGrid_.side + cell.x)]) {
-    const double inside = leastBarycentric(p, facets_[f].corners);
-    if (inside > bestInside) best = &facets_[f], bestInside = inside;
+  for (std::uint32_t f : facetGrid_.in(cellOf(p, facetGrid_))) {
+    const Facet& facet = facets_[f];
+    const double inside = leastBarycentric(p, facet.corners, facet.inverseArea);
+    if (inside > bestInside) best = &facet, bestInside = inside;
   }
   if (!best || bestInside < -kBeyondEdge) return std::nullopt;
   return best->offset / glm::dot(best->normal, direction);
@@ -125,17 +141,20 @@ std::vector<glm::dvec3> RadialSurface::crossingDirections(const RadialSurface& o
   std::vector<std::uint32_t> seen(other.edges_.size(), std::numeric_limits<std::uint32_t>::max());
   for (std::uint32_t e = 0; e < edges_.size(); ++e) {
     const glm::dvec2 a = flatVertices_[edges_[e][0]], b = flatVertices_[edges_[e][1]];
-    const glm::ivec2 from = other.cellOf(glm::min(a, b), other.edgeGrid_.side);
-    const glm::ivec2 to = other.cellOf(glm::max(a, b), other.edgeGrid_.side);
+    const glm::ivec2 from = other.cellOf(glm::min(a, b), other.edgeGrid_);
+    const glm::ivec2 to = other.cellOf(glm::max(a, b), other.edgeGrid_);
     for (int y = from.y; y <= to.y; ++y)
       for (int x = from.x; x <= to.x; ++x)
-        for (std::uint32_t o : other.edgeGrid_.cells[std::size_t(y * other.edgeGrid_.side + x)]) {
+        for (std::uint32_t o : other.edgeGrid_.in({x, y})) {
           if (seen[o] == e) continue;
           seen[o] = e;
           const glm::dvec2 c = other.flatVertices_[other.edges_[o][0]], d = other.flatVertices_[other.edges_[o][1]];
           const double denominator = cross(b - a, d - c);  // a + s (b - a) = c + r (d - c), within both
-          if (denominator == 0.0) continue;
-          const double s = cross(c - a, d - c) / denominator, r = cross(c - a, b - a) / denominator;
+          const double sTimes = cross(c - a, d - c), rTimes = cross(c - a, b - a);
+          if (denominator == 0.0 || std::signbit(sTimes) != std::signbit(denominator) ||
+              std::signbit(rTimes) != std::signbit(denominator))
+            continue;  // s or r is not positive: most pairs, found without dividing
+          const double s = sTimes / denominator, r = rTimes / denominator;
           if (s > 0.0 && s < 1.0 && r > 0.0 && r < 1.0) directions.push_back(direction(a + s * (b - a)));
         }
   }

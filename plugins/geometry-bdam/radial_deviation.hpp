@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -41,19 +42,27 @@ class RadialSurface {
   // A triangle on the plane, and its own plane in space: the line through d meets it at offset / (normal . d).
   struct Facet {
     std::array<glm::dvec2, 3> corners;
+    double inverseArea;  // of its corners' triangle, doubled; 0 where that has none
     glm::dvec3 normal;
     double offset;
   };
-  // The cells of a grid over the surface's bounds on the plane, each listing what touches it.
+  // A grid over the surface's bounds on the plane, each cell listing what touches it: cell c's items are
+  // items[first[c]] up to items[first[c + 1]].
   struct Grid {
     int side = 1;
-    std::vector<std::vector<std::uint32_t>> cells;
+    glm::dvec2 scale{0.0};  // cells a metre on the plane
+    std::vector<std::uint32_t> first, items;
+    std::span<const std::uint32_t> in(const glm::ivec2& cell) const {
+      const auto c = std::size_t(cell.y * side + cell.x);
+      return std::span(items).subspan(first[c], first[c + 1] - first[c]);
+    }
   };
+  using Bounds = std::pair<glm::dvec2, glm::dvec2>;
 
   glm::dvec2 projected(const glm::dvec3& point) const;
   glm::dvec3 direction(const glm::dvec2& onPlane) const;
-  glm::ivec2 cellOf(const glm::dvec2& onPlane, int side) const;
-  void list(Grid& grid, std::uint32_t item, const glm::dvec2& low, const glm::dvec2& high) const;
+  glm::ivec2 cellOf(const glm::dvec2& onPlane, const Grid& grid) const;
+  Grid gridOver(const std::vector<Bounds>& bounds) const;
 
   glm::dvec3 origin_, normal_, u_, v_;
   std::vector<glm::dvec2> flatVertices_;

@@ -16,6 +16,7 @@
 #include "patch_codec.hpp"
 #include "radial_deviation.hpp"
 #include "raster_heights.hpp"
+#include "temporary_directory.hpp"
 
 namespace strata::bdam {
 namespace {
@@ -24,12 +25,13 @@ constexpr double kMars = 3396190.0;  // m
 constexpr int kLeafLevel = 8;
 
 const BuiltBintrees& built() {
+  static const test::TemporaryDirectory scratch;
   static const BuiltBintrees bintrees = [] {
     const RasterHeights geoid("/usr/share/proj/egm96_15.gtx");
     const HeightsForThread heights = [&geoid] {
       return [sample = geoid.sampler()](const glm::dvec3& d) { return 100.0 * sample(d); };
     };
-    return buildBintrees(heights, {kMars, kLeafLevel, 16, 2}, [](const LevelReport&) {});
+    return buildBintrees(heights, {kMars, kLeafLevel, 16, 2, scratch.path()}, [](const LevelReport&) {});
   }();
   return bintrees;
 }
@@ -44,7 +46,7 @@ std::vector<BintreeNode> nodesOf(int level) {
 std::vector<glm::dvec3> pointsOf(const BintreeNode& node) {
   const DisplacedTriangle triangle = displacedTriangle(node, kMars);
   std::vector<glm::dvec3> points;
-  for (const DisplacedVertex& v : decodePatch(built().at(node).stored).vertices) points.push_back(triangle.point(v));
+  for (const DisplacedVertex& v : decodePatch(built().stored(node)).vertices) points.push_back(triangle.point(v));
   return points;
 }
 
@@ -73,7 +75,7 @@ template <typename OnEdge>
 std::set<PositionKey> edgeOf(const BintreeNode& node, OnEdge onEdge) {
   const DisplacedTriangle triangle = displacedTriangle(node, kMars);
   std::set<PositionKey> positions;
-  for (const DisplacedVertex& v : decodePatch(built().at(node).stored).vertices)
+  for (const DisplacedVertex& v : decodePatch(built().stored(node)).vertices)
     if (onEdge(v)) {
       const glm::dvec3 p = triangle.point(v);
       positions.insert(
@@ -113,10 +115,10 @@ TEST(BintreeBuilder, ANodesErrorBoundsItsDistanceFromTheLeavesBelowIt) {
       PlanetMesh leaves;
       for (std::uint64_t i = 0; i < (std::uint64_t(1) << below); ++i) {
         const BintreeNode leaf{node.root, kLeafLevel, (node.path << below) | i};
-        leaves.append(meshOf(displacedTriangle(leaf, kMars), decodePatch(built().at(leaf).stored)));
+        leaves.append(meshOf(displacedTriangle(leaf, kMars), decodePatch(built().stored(leaf))));
       }
       const DisplacedTriangle triangle = displacedTriangle(node, kMars);
-      const DisplacedPatch patch = decodePatch(built().at(node).stored);
+      const DisplacedPatch patch = decodePatch(built().stored(node));
       const double deviation =
           radialDeviation(RadialSurface(triangle, meshOf(triangle, patch)), RadialSurface(triangle, leaves));
       EXPECT_LE(deviation, built().at(node).error) << "level " << level;

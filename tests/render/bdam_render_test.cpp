@@ -45,7 +45,7 @@ const std::filesystem::path& builtGeoid(double scale) {
       [&geoid, scale]() -> bdam::HeightAt {
         return [sample = geoid.sampler(), scale](const glm::dvec3& d) { return scale * sample(d); };
       },
-      {kEarth, 8, 16, 0}, [](const bdam::LevelReport&) {});
+      {kEarth, 8, 16, 0, folder}, [](const bdam::LevelReport&) {});
   for (int face = 0; face < bdam::kCubeFaces; ++face)
     bdam::writeFaceFile(folder / ("face-" + std::to_string(face) + ".bdam"), face, bintrees);
   return folder;

@@ -1,0 +1,54 @@
+#include "level_patches.hpp"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace strata::bdam {
+
+LevelPatches::LevelPatches(std::filesystem::path path)
+    : path_(std::move(path)), out_(path_, std::ios::binary | std::ios::trunc) {
+  if (!out_) throw std::runtime_error(path_.string() + ": cannot be written: " + std::strerror(errno));
+}
+
+LevelPatches::~LevelPatches() {
+  if (mapping_) ::munmap(mapping_, size_);
+  out_.close();
+  std::error_code ignored;  // a scratch folder removed first (on an interruption) took the file with it
+  std::filesystem::remove(path_, ignored);
+}
+
+std::uint64_t LevelPatches::append(std::span<const std::byte> patch) {
+  if (!out_.is_open()) throw std::logic_error(path_.string() + ": appended to after it was finished");
+  out_.write(reinterpret_cast<const char*>(patch.data()), std::streamsize(patch.size()));
+  const std::uint64_t offset = size_;
+  size_ += patch.size();
+  return offset;
+}
+
+void LevelPatches::finish() {
+  out_.close();
+  if (!out_) throw std::runtime_error(path_.string() + ": cannot be written: " + std::strerror(errno));
+  if (size_ == 0) return;
+  const int descriptor = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (descriptor < 0) throw std::runtime_error(path_.string() + ": cannot be read back: " + std::strerror(errno));
+  void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_SHARED, descriptor, 0);
+  ::close(descriptor);
+  if (mapping == MAP_FAILED) throw std::runtime_error(path_.string() + ": cannot be mapped: " + std::strerror(errno));
+  mapping_ = mapping;
+}
+
+std::span<const std::byte> LevelPatches::at(std::uint64_t offset, std::uint32_t size) const {
+  if (size == 0) return {};
+  if (offset > size_ || size > size_ - offset || !mapping_)
+    throw std::out_of_range(path_.string() + ": no patch at byte " + std::to_string(offset));
+  return {static_cast<const std::byte*>(mapping_) + offset, size};
+}
+
+}  // namespace strata::bdam
