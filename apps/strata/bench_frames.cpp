@@ -38,7 +38,7 @@ BenchFrame measuredFrame(Engine& engine, double frameMs, std::uint64_t uploadedB
           .triangles = geometry.triangles,
           .pagesResident = pages.resident,
           .pagesWanted = pages.wanted,
-          .pageFaults = pages.loading,
+          .pageFaults = pages.missing,
           .pagesUploaded = pages.uploaded,
           .uploadedThisFrame = pages.uploaded - uploadedBefore,
           .gpuBytes = pages.gpuBytes,

@@ -13,6 +13,7 @@
 #include <strata/gl/shader_library.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/gl/surface_buffer.hpp>
+#include <strata/host/page_cache.hpp>
 #include <strata/plugin/geometry.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
@@ -29,7 +30,7 @@ namespace {
 struct BdamSettings {
   std::filesystem::path path;    // required: the folder `strata build-bdam` wrote
   double pixelError = 3.0;       // the paper's tolerance [Cignoni et al. 2003, §6]
-  double cacheMegabytes = 64.0;  // about 6,000 patches of a few hundred triangles: several views' worth
+  double cacheMegabytes = 64.0;  // a quarter of the default page cache budget; about 6,000 patches: several views'
   int loadsPerFrame = 64;        // patches read and decoded a frame while the view moves (a frame kept: all)
   bool prefetch = true;          // the paper's speculative prefetch, 0.5 s ahead
 };
@@ -37,9 +38,6 @@ struct BdamSettings {
 // Patch slots at the least, whatever cache_mb says: the roots and a coarse view's patches (the paper drew up to 280 a
 // frame at 640x480). With fewer than a view needs, the refinement stops where the slots run out.
 constexpr std::size_t kFewestSlots = 256;
-
-// Frames the prefetch looks ahead, at the 30 frames a second a flight is rendered or played at: the paper's 0.5 s.
-constexpr double kFramesAhead = 15.0;
 
 const ParameterBindings<BdamSettings>& bdamParameters() {
   using S = BdamSettings;
@@ -58,15 +56,17 @@ const ParameterBindings<BdamSettings>& bdamParameters() {
                                     .minimum = 1.0,
                                     .maximum = 65536.0,
                                     .units = "MB",
-                                    .doc = "graphics memory for patches, least recently drawn out first"})
+                                    .doc = "graphics memory for patches, least recently drawn out first, out of the "
+                                           "pipeline's page cache budget (`cache: {budget}`)"})
           .add(&S::loadsPerFrame, {.name = "loads_per_frame",
                                    .minimum = 1.0,
                                    .maximum = 100000.0,
                                    .doc = "patches read and decoded a frame while the view moves, so that a frame "
                                           "waits for no more; a frame kept (strata render) reads all it needs"})
           .add(&S::prefetch, {.name = "prefetch",
-                              .doc = "ask the kernel ahead for the patches the view will want in 0.5 s, the view "
-                                     "moved on as it moved last frame (the paper's madvise prefetch)"});
+                              .doc = "ask the kernel ahead for the patches the view half a second on will want, "
+                                     "the eye moved on as it moved since the last frame (the paper's madvise "
+                                     "prefetch)"});
   return bindings;
 }
 
@@ -75,6 +75,7 @@ class BdamGeometry : public Node, public SurfaceGeometry {
   explicit BdamGeometry(const NodeSetup& setup)
       : settings_(bdamParameters().read(setup.parameters)),
         where_(bdamParameters().where(setup.parameters, &BdamSettings::path)),
+        cacheWhere_(bdamParameters().where(setup.parameters, &BdamSettings::cacheMegabytes)),
         radius_(setup.body->radius) {}
 
   void open() override;
@@ -93,15 +94,14 @@ class BdamGeometry : public Node, public SurfaceGeometry {
   std::size_t slots() const;
   std::optional<NodeRecord> record(const BintreeNode& node) const;
   Cut refine(const View& view, const std::function<bool(const BintreeNode&)>& resident) const;
-  void predictAndPrefetch(const View& view);
+  void prefetchAhead(const FrameState& frame);
 
   BdamSettings settings_;
-  SourceLocation where_;
+  SourceLocation where_, cacheWhere_;
   double radius_;
   HeightRange heights_;
   std::unique_ptr<BdamData> data_;
   std::unique_ptr<PatchLoader> loader_;
-  std::optional<glm::dvec3> lastEye_;
   PatchBatch batch_;
   std::vector<PendingPatch> uploads_;
   std::uint64_t vertices_ = 0, triangles_ = 0;
@@ -131,8 +131,7 @@ void BdamGeometry::open() {
 
 // Slots of the largest patch's size within cache_mb, at least kFewestSlots.
 std::size_t BdamGeometry::slots() const {
-  const double slotBytes =
-      double(data_->mostVertices()) * sizeof(DisplacedVertex) + double(data_->mostIndices()) * sizeof(std::uint32_t);
+  const double slotBytes = double(PatchBuffers::slotBytes(data_->mostVertices(), data_->mostIndices()));
   return std::max<std::size_t>(std::size_t(settings_.cacheMegabytes * 1e6 / slotBytes), kFewestSlots);
 }
 
@@ -141,6 +140,7 @@ void BdamGeometry::createResources(GpuContext& gpu) {
       {{GL_VERTEX_SHADER, "geometry-bdam/bdam_surface.vert", gpu.shaders->expand("geometry-bdam/bdam_surface.vert")},
        {GL_FRAGMENT_SHADER, "geometry-bdam/bdam_surface.frag",
         gpu.shaders->expand("geometry-bdam/bdam_surface.frag")}});
+  gpu.pages->reserve(slots() * PatchBuffers::slotBytes(data_->mostVertices(), data_->mostIndices()), cacheWhere_);
   buffers_.emplace(slots(), data_->mostVertices(), data_->mostIndices());
   rasterisationTimer_.emplace();
 }
@@ -159,16 +159,12 @@ Cut BdamGeometry::refine(const View& view, const std::function<bool(const Bintre
                       {[this](const BintreeNode& node) { return record(node); }, resident});
 }
 
-// The refinement on the view moved on as it moved since the last frame [Cignoni et al. 2003, §4.4: "linear
-// extrapolation of the camera position with a 0.5 s look-ahead"], every patch taken as resident, so that it reaches
-// as deep as that view will; the kernel is asked for those not resident.
-void BdamGeometry::predictAndPrefetch(const View& view) {
-  if (settings_.prefetch && lastEye_) {
-    View ahead = view;
-    ahead.eye = view.eye + kFramesAhead * (view.eye - *lastEye_);
-    loader_->prefetch(refine(ahead, [](const BintreeNode&) { return true; }).drawn);
-  }
-  lastEye_ = view.eye;
+// The refinement on the view half a second on [Cignoni et al. 2003, §4.4: "linear extrapolation of the camera
+// position with a 0.5 s look-ahead"], every patch taken as resident, so that it reaches as deep as that view will;
+// the kernel is asked for those not resident.
+void BdamGeometry::prefetchAhead(const FrameState& frame) {
+  if (settings_.prefetch && frame.ahead)
+    loader_->prefetch(refine(*frame.ahead, [](const BintreeNode&) { return true; }).drawn);
 }
 
 void BdamGeometry::prepare(const FrameState& frame) {
@@ -184,7 +180,7 @@ void BdamGeometry::prepare(const FrameState& frame) {
     cut = refine(frame.view, resident);
     for (const BintreeNode& node : cut.drawn) loader_->drawn(node, frame.index);
   }
-  predictAndPrefetch(frame.view);
+  prefetchAhead(frame);
   std::vector<PlacedNode> placed;
   vertices_ = triangles_ = 0;
   for (const BintreeNode& node : cut.drawn) {

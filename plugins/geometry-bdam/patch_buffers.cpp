@@ -77,8 +77,12 @@ void PatchBuffers::draw(const PatchBatch& batch) {
   glBindVertexArray(0);
 }
 
+std::uint64_t PatchBuffers::slotBytes(std::uint32_t mostVertices, std::uint32_t mostIndices) {
+  return mostVertices * sizeof(DisplacedVertex) + mostIndices * sizeof(std::uint32_t);
+}
+
 std::uint64_t PatchBuffers::bytes() const {
-  return slots_ * (mostVertices_ * sizeof(DisplacedVertex) + mostIndices_ * sizeof(std::uint32_t)) +
+  return slots_ * slotBytes(mostVertices_, mostIndices_) +
          capacity_ * (sizeof(GpuPatch) + sizeof(DrawElementsIndirectCommand) + sizeof(std::uint32_t));
 }
 

@@ -24,6 +24,8 @@ class PatchBuffers {
   // Uploads the frame's patches and draws them with the program in use (bdam_surface.vert).
   void draw(const PatchBatch& batch);
   std::uint64_t bytes() const;
+  // Graphics memory a slot takes, for patches of up to so many vertices and indices.
+  static std::uint64_t slotBytes(std::uint32_t mostVertices, std::uint32_t mostIndices);
 
  private:
   enum Buffer { kVertices, kIndices, kPatches, kDraws, kPatchNumbers, kBufferCount };

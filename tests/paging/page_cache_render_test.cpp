@@ -1,6 +1,7 @@
 // Rendering through the page cache (strata/host/page_cache.hpp) on the headless context: a budget that holds
 // a fraction of a raster's pages stays within itself, evicts as the view moves and still draws what a
-// roomy cache draws; a page that cannot be read is stood in for by the coarser level.
+// roomy cache draws; a page that cannot be read is stood in for by the coarser level; a moving view finds its pages
+// read ahead.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -140,6 +141,36 @@ TEST_F(PageCacheRendering, AnUnreadablePageIsStoodInForByTheCoarserLevel) {
   const Image stoodIn = renderFrame(*engine, pipeline(damaged, "{}", -22.5, 22.5, 1.5e6), kFrame, kFrame);
   EXPECT_EQ(engine->pageCacheStatistics().failed, 1u);
   EXPECT_LE(largestDifference(expected, stoodIn), 2);
+}
+
+// A view moving east 0.3 degrees a frame, looking 100 frames (30 degrees) ahead, at level-0 pages 45 degrees wide:
+// once the pages of the view ahead are read, a jump to where it looked finds every page it wants in place [Cignoni et
+// al. 2003, §4.4], where without prefetch coarser pages stand in for some.
+TEST_F(PageCacheRendering, AMovingViewFindsItsPagesReadAhead) {
+  constexpr double kFramesAhead = 100.0;
+  for (const bool prefetch : {true, false}) {
+    auto engine = makeEngine();
+    engine->load(pipeline(raster_->path() / "plain.tif", prefetch ? "{prefetch: true}" : "{prefetch: false}", -150.0,
+                          20.0, 1.5e6));
+    engine->setLookAhead(kFramesAhead);
+    engine->renderComplete(kFrame, kFrame);
+    Camera before = engine->camera();
+    for (int frame = 0; frame < 500; ++frame) {
+      before = engine->camera();
+      engine->camera().lon += 0.3;
+      engine->render(kFrame, kFrame);
+      if (engine->pageCacheStatistics().loading == 0) break;
+    }
+    ASSERT_EQ(engine->pageCacheStatistics().loading, 0) << "the pages of the view ahead were not read in 500 frames";
+    EXPECT_EQ(engine->pageCacheStatistics().ahead > 0, prefetch);
+    engine->camera() = cameraAhead(engine->pipeline().body, before, engine->camera(), kFramesAhead);
+    engine->setLookAhead(0.0);  // the arrival looks no further
+    engine->render(kFrame, kFrame);
+    if (prefetch)
+      EXPECT_EQ(engine->pageCacheStatistics().missing, 0) << "pages the arrival wanted were not read ahead";
+    else
+      EXPECT_GT(engine->pageCacheStatistics().missing, 0) << "the arrival found its pages without prefetch";
+  }
 }
 
 }  // namespace

@@ -182,5 +182,39 @@ TEST(BdamDamage, ADamagedPatchIsReportedAndTheCoarserOneDrawnInItsPlace) {
   EXPECT_EQ(holes, 0) << "the view from 200 km looks at the ground alone";
 }
 
+// geometry.bdam's patch slots take their graphics memory out of the pipeline's page cache budget: the cache keeps
+// them aside and its atlases share the rest; a cache_mb the budget cannot hold is an error at cache_mb's line.
+TEST(BdamMemory, ThePatchSlotsComeOutOfThePageCacheBudget) {
+  TemporaryDirectory directory;
+  auto engine = makeEngine();
+  const Camera camera{.lon = 10, .lat = 20, .altitude = 2.0e7};
+  engine->load(
+      directory.write("icosahedral.yaml", pipelineWith("{type: geometry.icosahedral, height: relief}", "none")));
+  renderFrames(*engine, camera, kWidth, kHeight, 1);
+  const PageCacheStatistics alone = engine->pageCacheStatistics();
+  engine->load(directory.write("bdam.yaml", pipelineWith(bdamTerrain(2000.0), "none")));
+  renderFrames(*engine, camera, kWidth, kHeight, 1);
+  const PageCacheStatistics& shared = engine->pageCacheStatistics();
+  EXPECT_EQ(alone.reservedBytes, 0u);
+  EXPECT_LE(shared.reservedBytes, 64'000'000u);  // cache_mb's default, in slots of the largest patch (a few KB)
+  EXPECT_GT(shared.reservedBytes, 63'900'000u);
+  EXPECT_LT(shared.capacity, alone.capacity);
+  EXPECT_LE(shared.gpuBytes + shared.stagingBytes + shared.reservedBytes, std::uint64_t(256) << 20);
+
+  const std::string crowded =
+      "strata: 1\ncache: {budget: 64}\n" +
+      pipelineWith("{type: geometry.bdam, cache_mb: 100, path: " + builtGeoid(2000.0).string() + "}", "none")
+          .substr(10);
+  try {
+    engine->load(directory.write("crowded.yaml", crowded));
+    FAIL() << "a cache_mb beyond the budget loaded";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.where().line, 7) << error.what();  // the terrain node's, where cache_mb is
+    EXPECT_NE(error.problem().find("more than the 64 MiB the pipeline's page cache budget has left"), std::string::npos)
+        << error.problem();
+    EXPECT_NE(error.fix().find("raise `cache: {budget: MiB}`"), std::string::npos) << error.fix();
+  }
+}
+
 }  // namespace
 }  // namespace strata::test

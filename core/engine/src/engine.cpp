@@ -34,6 +34,9 @@ struct Engine::Impl {
   std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
   HeightRange terrain;               // the graph's geometries' heights, settled when their nodes opened
   Camera camera;
+  // The camera of the last frame and when it began, which the view ahead is extrapolated from.
+  std::optional<std::pair<Camera, std::chrono::steady_clock::time_point>> lastCamera;
+  std::optional<double> framesAhead;  // setLookAhead
   std::optional<DayNumber> date;
   FrameStatistics statistics;
   std::set<std::string> sourcesAdvised;  // the files whose page failures have been given the fix
@@ -98,6 +101,7 @@ void Engine::install(Pipeline loaded, const std::vector<std::string>& overrides)
   impl_->graph = std::move(graph);
   impl_->terrain = impl_->graph->terrainHeights();
   impl_->pipeline = std::move(pipeline);
+  impl_->lastCamera.reset();
   impl_->camera = impl_->pipeline->camera;
   impl_->date = impl_->pipeline->date;
   impl_->overrides = overrides;
@@ -161,13 +165,14 @@ const FrameOutput& Engine::render(int width, int height) { return renderFrame(wi
 
 const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
-  FrameState frame{&impl_->pipeline->body, view(width, height), impl_->statistics.frame, impl_->date, still};
+  FrameState frame{&impl_->pipeline->body,         view(width, height), impl_->statistics.frame, impl_->date, still,
+                   viewAhead(width, height, still)};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);
   start = std::chrono::steady_clock::now();
   const HostGlState hostState;  // put back when the frame is done, or a node throws
-  impl_->pages->update(*frame.body, frame.view, impl_->terrain, frame.index);
+  impl_->pages->update(*frame.body, frame.view, impl_->terrain, frame.index, frame.ahead);
   for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
   impl_->graph->render(frame);
@@ -175,6 +180,21 @@ const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   ++impl_->statistics.frame;
   return impl_->graph->output();
 }
+
+// The camera moved on as it moved since the last frame, for half a second at the rate frames come (or as
+// setLookAhead says): FrameState::ahead.
+std::optional<View> Engine::viewAhead(int width, int height, bool still) {
+  constexpr double kLookAheadSeconds = 0.5;  // the paper's [Cignoni et al. 2003, §4.4]: a disk read's worth and more
+  const auto now = std::chrono::steady_clock::now();
+  const auto last = std::exchange(impl_->lastCamera, std::pair{impl_->camera, now});
+  if (still || !last || last->first == impl_->camera) return std::nullopt;
+  const double seconds = std::max(1e-3, std::chrono::duration<double>(now - last->second).count());
+  const double frames = impl_->framesAhead.value_or(kLookAheadSeconds / seconds);
+  return makeView(impl_->pipeline->body, cameraAhead(impl_->pipeline->body, last->first, impl_->camera, frames), width,
+                  height, impl_->terrain);
+}
+
+void Engine::setLookAhead(std::optional<double> frames) { impl_->framesAhead = frames; }
 
 const FrameOutput& Engine::renderComplete(int width, int height) { return renderLoaded(width, height, false); }
 

@@ -46,6 +46,20 @@ glm::mat4 reversedInfiniteProjection(double verticalFov, double aspect, double n
 
 }  // namespace
 
+Camera cameraAhead(const Body& body, const Camera& before, const Camera& now, double frames) {
+  const auto eyeOf = [&body](const Camera& c) {
+    return unitNormal(glm::radians(c.lon), glm::radians(c.lat)) * (body.radius + c.altitude);
+  };
+  const glm::dvec3 eye = eyeOf(now) + frames * (eyeOf(now) - eyeOf(before));
+  const double distance = glm::length(eye);
+  if (!(distance > 0.0) || !std::isfinite(distance)) return now;
+  Camera ahead = now;
+  ahead.lon = glm::degrees(std::atan2(eye.y, eye.x));
+  ahead.lat = glm::degrees(std::asin(std::clamp(eye.z / distance, -1.0, 1.0)));
+  ahead.altitude = std::max(distance - body.radius, 0.1 * now.altitude);
+  return ahead;
+}
+
 View makeView(const Body& body, const Camera& camera, int width, int height, const HeightRange& terrain) {
   const double lon = glm::radians(camera.lon), lat = glm::radians(camera.lat);
   const double heading = glm::radians(camera.heading), tilt = glm::radians(camera.tilt);

@@ -46,11 +46,12 @@ struct PageCache::Impl {
   std::map<PageFormat, int> capacities() const;
   std::unique_ptr<paging::PageAtlas> fittingAtlas(PageFormat format, int capacity, int coarsest) const;
   void loadCoarsest();
-  std::vector<paging::WantedPage> select(const Body& body, const View& view, const HeightRange& terrain);
+  std::vector<paging::WantedPage> select(const Body& body, const View& view, const std::optional<View>& ahead,
+                                         const HeightRange& terrain);
   void request(const std::vector<paging::WantedPage>& wanted, std::uint64_t frame);
   void uploadFinished(std::uint64_t frame, std::size_t count, bool pinned);
   void place(const LoadedPage& loaded, std::uint64_t frame, bool pinned);
-  void updateStatistics(int wanted);
+  void updateStatistics(const std::vector<paging::WantedPage>& wanted);
   // Pages read and waiting for upload, plus per loader thread the page it assembles and the window it
   // reads that page from.
   std::size_t pagesHeldOnCpu() const {
@@ -58,6 +59,7 @@ struct PageCache::Impl {
   }
 
   PageCacheSettings settings;
+  std::uint64_t reserved = 0;  // of the budget, by nodes (reserve)
   std::vector<AttachedLayer> layers;
   paging::PageIndex index;
   std::map<PageFormat, std::unique_ptr<paging::PageAtlas>> atlases;
@@ -92,15 +94,31 @@ PagedLayerPlacement PageCache::attach(std::shared_ptr<const PageSource> source, 
   return placement;
 }
 
-void PageCache::update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame) {
+void PageCache::reserve(std::uint64_t bytes, const SourceLocation& where) {
+  Impl& cache = *impl_;
+  if (cache.loader) throw std::logic_error("PageCache::reserve() after the cache allocated");
+  const std::uint64_t left = cache.settings.budgetBytes - cache.reserved;
+  if (bytes > left)
+    throw Error(where,
+                "keeps " + std::to_string(bytes >> 20) + " MiB of GPU memory, more than the " +
+                    std::to_string(left >> 20) + " MiB the pipeline's page cache budget has left (of " +
+                    std::to_string(cache.settings.budgetBytes >> 20) + " MiB)",
+                "ask for less, or raise `cache: {budget: MiB}`");
+  cache.reserved += bytes;
+  cache.statistics.reservedBytes = cache.reserved;
+}
+
+void PageCache::update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame,
+                       const std::optional<View>& ahead) {
   Impl& cache = *impl_;
   if (cache.layers.empty()) return;
   allocate();
-  const std::vector<paging::WantedPage> wanted = cache.select(body, view, terrain);
+  const std::vector<paging::WantedPage> wanted =
+      cache.select(body, view, cache.settings.prefetch ? ahead : std::nullopt, terrain);
   cache.request(wanted, frame);
   cache.uploadFinished(frame, std::size_t(cache.settings.uploadsPerFrame), false);
   cache.index.upload();
-  cache.updateStatistics(int(wanted.size()));
+  cache.updateStatistics(wanted);
 }
 
 void PageCache::allocate() {
@@ -136,7 +154,8 @@ std::vector<PageFailure> PageCache::takeFailures() { return std::exchange(impl_-
 // format's share in slots of its size.
 std::map<PageFormat, int> PageCache::Impl::capacities() const {
   const std::uint64_t fixed = (std::uint64_t(settings.uploadsPerFrame) + pagesHeldOnCpu()) * kPageBytes + index.bytes();
-  const std::uint64_t bytes = settings.budgetBytes > fixed ? settings.budgetBytes - fixed : 0;
+  const std::uint64_t budget = settings.budgetBytes - reserved;
+  const std::uint64_t bytes = budget > fixed ? budget - fixed : 0;
   std::map<PageFormat, int> layersOf;
   for (const AttachedLayer& layer : layers) ++layersOf[layer.source->format()];
   GLint most = 0;
@@ -182,9 +201,11 @@ void PageCache::Impl::allocate() {
     if (capacity < coarsest)
       throw Error(
           settings.where,
-          "the page cache budget of " + std::to_string(settings.budgetBytes >> 20) + " MiB holds " +
-              std::to_string(capacity) + " pages for " + (format == PageFormat::Colour ? "colour" : "value") +
-              " layers, fewer than the " + std::to_string(coarsest) + " pages of their coarsest levels",
+          "the page cache budget of " + std::to_string(settings.budgetBytes >> 20) + " MiB" +
+              (reserved ? " (" + std::to_string(reserved >> 20) + " MiB of it kept by nodes for their own data)" : "") +
+              " holds " + std::to_string(capacity) + " pages for " +
+              (format == PageFormat::Colour ? "colour" : "value") + " layers, fewer than the " +
+              std::to_string(coarsest) + " pages of their coarsest levels",
           "raise `cache: {budget: MiB}` (each page takes " + std::to_string(paging::slotBytes(format) >> 10) + " KiB)");
     atlases[format] = fittingAtlas(format, capacity, coarsest);
   }
@@ -219,10 +240,11 @@ void PageCache::Impl::loadCoarsest() {
   }
 }
 
-// The pages the view needs of the layers not idle, every shown layer's before any prefetched one's, so that
-// prefetching only fills the room the shown layers leave.
+// The pages the view needs of the layers not idle: every shown layer's, then those the view ahead needs beyond them
+// of the shown layers, then the prefetched layers', so that reading ahead, and for a later date, only fills the room
+// the view leaves.
 std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const View& view,
-                                                        const HeightRange& terrain) {
+                                                        const std::optional<View>& ahead, const HeightRange& terrain) {
   std::vector<paging::SelectableLayer> selectable;
   std::vector<std::pair<int, bool>> attached;  // per selectable: its layer, and whether it is shown
   {
@@ -234,9 +256,19 @@ std::vector<paging::WantedPage> PageCache::Impl::select(const Body& body, const 
       }
   }
   std::vector<paging::WantedPage> wanted = paging::selectPages(selectable, body, view, terrain);
-  std::stable_partition(wanted.begin(), wanted.end(), [&attached](const paging::WantedPage& want) {
+  const auto shown = [&attached](const paging::WantedPage& want) {
     return attached[std::size_t(want.page.layer)].second;
-  });
+  };
+  if (ahead) {
+    std::set<LayerPage> already;
+    for (const paging::WantedPage& want : wanted) already.insert(want.page);
+    for (const paging::WantedPage& want : paging::selectPages(selectable, body, *ahead, terrain))
+      if (shown(want) && already.insert(want.page).second)
+        wanted.push_back({want.page, want.depth, want.distance, true});
+  }
+  const auto rank = [&shown](const paging::WantedPage& want) { return shown(want) ? (want.onlyAhead ? 1 : 0) : 2; };
+  std::stable_sort(wanted.begin(), wanted.end(),
+                   [&rank](const paging::WantedPage& a, const paging::WantedPage& b) { return rank(a) < rank(b); });
   for (paging::WantedPage& want : wanted) want.page.layer = attached[std::size_t(want.page.layer)].first;
   return wanted;
 }
@@ -301,7 +333,7 @@ void PageCache::Impl::place(const LoadedPage& loaded, std::uint64_t frame, bool 
   ++statistics.uploaded;
 }
 
-void PageCache::Impl::updateStatistics(int wanted) {
+void PageCache::Impl::updateStatistics(const std::vector<paging::WantedPage>& wanted) {
   statistics.capacity = statistics.resident = statistics.pinned = 0;
   statistics.gpuBytes = uploads->bytes() + index.bytes();
   for (const auto& [format, atlas] : atlases) {
@@ -310,7 +342,14 @@ void PageCache::Impl::updateStatistics(int wanted) {
     statistics.pinned += atlas->pinned();
     statistics.gpuBytes += std::uint64_t(atlas->capacity()) * paging::slotBytes(format);
   }
-  statistics.wanted = wanted;
+  statistics.wanted = int(wanted.size());
+  statistics.ahead = statistics.missing = 0;
+  for (const paging::WantedPage& want : wanted) {
+    const AttachedLayer& layer = layers[std::size_t(want.page.layer)];
+    statistics.ahead += want.onlyAhead;
+    statistics.missing +=
+        !want.onlyAhead && !layer.resident.contains(want.page.key) && !layer.failed.contains(want.page.key);
+  }
   statistics.loading = int(loader->outstanding());
   statistics.stagingBytes = (loader->peakHeld() + std::size_t(settings.loaderThreads)) * kPageBytes;  // + windows
 }

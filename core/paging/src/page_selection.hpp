@@ -21,8 +21,9 @@ struct SelectableLayer {
 // then nearer ones.
 struct WantedPage {
   LayerPage page;
-  int depth = 0;          // levels below the layer's coarsest
-  double distance = 0.0;  // m from the eye to the nearest sampled point of the page
+  int depth = 0;           // levels below the layer's coarsest
+  double distance = 0.0;   // m from the eye to the nearest sampled point of the page
+  bool onlyAhead = false;  // wanted by the view ahead (PageCache::update), not by the view itself
 };
 
 // The pages each layer needs for `view`, chosen from their bounds as in [Kooima 2008, §4.3.2]: a page

@@ -80,7 +80,8 @@ const ParameterBindings<PageCacheSettings>& cacheParameters() {
                .minimum = 16.0,
                .maximum = double(1 << 20),
                .units = "MiB",
-               .doc = "GPU memory for pages, upload staging included"},
+               .doc = "GPU memory for pages, upload staging included, and for what nodes page themselves "
+                      "(geometry.bdam's patches)"},
               [](const PageCacheSettings& cache) { return std::int64_t(cache.budgetBytes >> kMebibyte); },
               [](PageCacheSettings& cache, std::int64_t mib) { cache.budgetBytes = std::uint64_t(mib) << kMebibyte; })
           .add(&PageCacheSettings::uploadsPerFrame, {.name = "uploads_per_frame",
@@ -92,7 +93,10 @@ const ParameterBindings<PageCacheSettings>& cacheParameters() {
                                                    .minimum = 1.0,
                                                    .maximum = 64.0,
                                                    .units = "threads",
-                                                   .doc = "threads reading pages"});
+                                                   .doc = "threads reading pages"})
+          .add(&PageCacheSettings::prefetch,
+               {.name = "prefetch",
+                .doc = "read the pages the view half a second on will want, into the room the view's own leave"});
   return bindings;
 }
 

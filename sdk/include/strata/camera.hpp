@@ -47,6 +47,11 @@ struct View {
 // (groundLevelNear), so that a view 2 m above a plateau 3 km high does not clip the plateau.
 View makeView(const Body& body, const Camera& camera, int width, int height, const HeightRange& terrain = {});
 
+// The camera `frames` frames on: its eye moved on in a straight line as it moved from `before` to `now`, looking as
+// `now` does [Cignoni et al. 2003, §4.4: "linear extrapolation of the camera position"]. The eye stays at least a
+// tenth of `now`'s altitude above the body, so that a descent extrapolated into the ground still looks from above it.
+Camera cameraAhead(const Body& body, const Camera& before, const Camera& now, double frames);
+
 // Planet-fixed unit normal at geographic longitude and latitude (radians).
 glm::dvec3 unitNormal(double lonRad, double latRad);
 

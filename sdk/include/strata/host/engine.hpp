@@ -2,6 +2,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <strata/export.hpp>
 #include <string>
 #include <vector>
@@ -88,6 +89,10 @@ class Engine {
   // benchmark), the same on every run however the page loaders are timed. Logs a warning (strata/log.hpp),
   // and returns the last, when 256 renders did not settle it.
   const FrameOutput& renderSettled(int width, int height);
+  // How far ahead FrameState::ahead looks, for the prefetch of pages and patches: the camera's move since the last
+  // frame repeated `frames` times. Unset, the default: half a second [Cignoni et al. 2003, §4.4] at the interval
+  // measured between the last two frames. Tests and offline runs that want the same reads on every run set it.
+  void setLookAhead(std::optional<double> frames);
   const FrameStatistics& statistics() const;
   // The geometry generators' statistics for the last frame, summed; waits for the GPU to finish it.
   GeometryStatistics geometryStatistics() const;
@@ -98,6 +103,7 @@ class Engine {
  private:
   const FrameOutput& renderFrame(int width, int height, bool still);
   const FrameOutput& renderLoaded(int width, int height, bool still);
+  std::optional<View> viewAhead(int width, int height, bool still);
   void install(Pipeline pipeline, const std::vector<std::string>& overrides);
   Pipeline read(const std::vector<std::string>& overrides) const;
   void reloadWith(Pipeline changed, const std::vector<std::string>& overrides);

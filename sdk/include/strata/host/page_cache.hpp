@@ -1,6 +1,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <strata/export.hpp>
 #include <string>
 #include <vector>
@@ -24,12 +25,15 @@ struct PageCacheStatistics {
   int resident = 0;            // pages in them now
   int pinned = 0;              // of those, the coarsest levels, never evicted
   int wanted = 0;              // pages the last frame asked for
+  int ahead = 0;               // of those, pages only the view ahead wanted (PageCacheSettings::prefetch)
+  int missing = 0;             // pages the view itself wanted that were not in place: coarser ones stood in
   int loading = 0;             // requested and not yet uploaded
   std::uint64_t uploaded = 0;  // pages copied to the GPU since the pipeline loaded
   std::uint64_t evicted = 0;
-  std::uint64_t failed = 0;        // pages that could not be read (each reported once)
-  std::uint64_t gpuBytes = 0;      // atlases, index and upload buffers
-  std::uint64_t stagingBytes = 0;  // the most page memory held on the CPU between read and upload
+  std::uint64_t failed = 0;         // pages that could not be read (each reported once)
+  std::uint64_t gpuBytes = 0;       // atlases, index and upload buffers
+  std::uint64_t stagingBytes = 0;   // the most page memory held on the CPU between read and upload
+  std::uint64_t reservedBytes = 0;  // of the budget, what nodes keep for their own data (PageCache::reserve)
 };
 
 // A page that could not be read. The cache never asks for it again; the coarser page it has stands in.
@@ -71,14 +75,20 @@ class PageCache {
   // edges border each other. Layers attach before the first update().
   PagedLayerPlacement attach(std::shared_ptr<const PageSource> source, const RasterGeoreference& georeference,
                              bool wrapX);
+  // GPU memory a node keeps within the budget for data it pages itself (geometry.bdam's patches), asked for in
+  // createResources(): the atlases share what is left. Throws strata::Error at `where` when the budget has not that
+  // much left.
+  void reserve(std::uint64_t bytes, const SourceLocation& where);
   // Once the layers have attached: allocates the atlases and the index, and loads the coarsest level of
   // every layer, which is pinned. Throws strata::Error when the budget cannot hold even those.
   void allocate();
   // Once a frame, before rendering: chooses the pages `view` needs, starts their loads, uploads finished
   // ones within the per-frame budget and points the index at them. Allocates first if need be. `terrain`:
   // the heights the drawn surfaces keep within (SurfaceGeometry::heights), whose ground nearest the eye
-  // (groundLevelNear) distances are measured to.
-  void update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame);
+  // (groundLevelNear) distances are measured to. `ahead`: the view half a second on (FrameState::ahead), whose pages
+  // are read after the view's own, into the room those leave, unless the settings' prefetch is off.
+  void update(const Body& body, const View& view, const HeightRange& terrain, std::uint64_t frame,
+              const std::optional<View>& ahead = std::nullopt);
   // How much `layer`'s pages are wanted from the next update() on (PageDemand). Any thread: nodes call it
   // from prepare().
   void setDemand(int layer, PageDemand demand);

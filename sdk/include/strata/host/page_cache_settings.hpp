@@ -18,6 +18,9 @@ struct PageCacheSettings {
   // Threads reading pages with GDAL. Two keep a compressed COG on an SSD busy while leaving the other
   // cores to the frame's workers.
   int loaderThreads = 2;
+  // Load the pages the view half a second on will want (FrameState::ahead) into the room the view's own leave:
+  // the paper's speculative prefetch [Cignoni et al. 2003, §4.4], so that a moving view finds its pages read.
+  bool prefetch = true;
   SourceLocation where;  // the `cache:` section, for messages
 };
 

@@ -19,6 +19,10 @@ struct FrameState {
   // A frame drawn to be kept (Engine::renderSettled): generators whose detail follows a moving view over
   // several frames settle it at once, as they do on a pipeline's first frame, whatever that costs.
   bool still = false;
+  // The view half a second on, the eye moved on as it moved since the last frame (cameraAhead): what the page cache
+  // and geometry.bdam read ahead for [Cignoni et al. 2003, §4.4]. None on a still frame, when the camera has not
+  // moved, and on a pipeline's first frame.
+  std::optional<View> ahead;
 };
 
 }  // namespace strata
