@@ -1,9 +1,6 @@
 #include "face_file.hpp"
 
-#include <fcntl.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -122,27 +119,18 @@ void writeFaceFile(const std::filesystem::path& path, int face, const BuiltBintr
 }
 
 FaceFile::FaceFile(const std::filesystem::path& path) : path_(path) {
-  const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) throw FaceFileError(path.string() + ": cannot be opened: " + std::strerror(errno));
-  struct stat status {};
-  if (::fstat(descriptor, &status) == 0 && status.st_size >= std::int64_t(sizeof(StoredHeader))) {
-    size_ = std::size_t(status.st_size);
-    mapping_ = ::mmap(nullptr, size_, PROT_READ, MAP_SHARED, descriptor, 0);
+  try {
+    mapped_ = MappedFile(path);
+  } catch (const std::runtime_error& error) {
+    throw FaceFileError(error.what());
   }
-  ::close(descriptor);
-  if (mapping_ == nullptr || mapping_ == MAP_FAILED) {
-    mapping_ = nullptr;
+  if (bytes().size() < sizeof(StoredHeader))
     throw FaceFileError(path.string() + ": is not a face file of `strata build-bdam` (too short, or unreadable)");
-  }
   // Read what is asked for and no more: the kernel's read-around would fetch neighbours that no view asked for, and
   // the patches a flight will want are asked for ahead by prefetch().
-  ::madvise(mapping_, size_, MADV_RANDOM);
+  mapped_.advise(bytes(), MADV_RANDOM);
   const auto stored = readAt<StoredHeader>(bytes(), 0);
-  const auto refuse = [&](const std::string& what) {
-    ::munmap(mapping_, size_);
-    mapping_ = nullptr;
-    return FaceFileError(path.string() + ": " + what);
-  };
+  const auto refuse = [&](const std::string& what) { return FaceFileError(path.string() + ": " + what); };
   if (stored.magic != kMagic) throw refuse("is not a face file of `strata build-bdam`");
   if (stored.version != kFaceFileVersion)
     throw refuse("is a face file of format " + std::to_string(stored.version) + ", this Strata reads format " +
@@ -152,16 +140,12 @@ FaceFile::FaceFile(const std::filesystem::path& path) : path_(path) {
       !(stored.lowest <= stored.highest) || !std::isfinite(stored.lowest) || !std::isfinite(stored.highest) ||
       stored.nodesPerBintree != nodesPerBintree(int(stored.leafLevel)) ||
       stored.patchesFrom != sizeof(StoredHeader) + 2 * stored.nodesPerBintree * sizeof(StoredRecord) ||
-      stored.patchesFrom > size_ || stored.mostIndices % 3 != 0)
+      stored.patchesFrom > bytes().size() || stored.mostIndices % 3 != 0)
     throw refuse("its header is damaged (or the file is cut short): build it again with `strata build-bdam`");
   header_ = {int(stored.face), int(stored.leafLevel), int(stored.divisions), stored.radius,
              stored.lowest,    stored.highest,        stored.mostVertices,   stored.mostIndices};
   nodesPerBintree_ = stored.nodesPerBintree;
   patchesFrom_ = stored.patchesFrom;
-}
-
-FaceFile::~FaceFile() {
-  if (mapping_) ::munmap(mapping_, size_);
 }
 
 std::string FaceFile::where(const BintreeNode& node) const {
@@ -179,7 +163,7 @@ NodeRecord FaceFile::node(const BintreeNode& node) const {
       std::isfinite(record.error) && std::isfinite(record.radius) &&
       std::all_of(std::begin(record.centre), std::end(record.centre), [](double v) { return std::isfinite(v); });
   if (record.crc != crcOf(record, &StoredRecord::crc) || !finite || record.error < 0.0 || record.radius < 0.0 ||
-      record.offset < patchesFrom_ || record.offset > size_ || record.bytes > size_ - record.offset)
+      record.offset < patchesFrom_ || record.offset > bytes().size() || record.bytes > bytes().size() - record.offset)
     throw FaceFileError(where(node) + ": its record is damaged, or the file is cut short");
   return {bytes().subspan(record.offset, record.bytes),
           record.error,
@@ -195,12 +179,6 @@ DisplacedPatch FaceFile::patch(const BintreeNode& node) const {
   }
 }
 
-void FaceFile::prefetch(const BintreeNode& node) const {
-  const NodeRecord record = this->node(node);
-  const std::uintptr_t page = std::uintptr_t(::sysconf(_SC_PAGESIZE));
-  const auto from = reinterpret_cast<std::uintptr_t>(record.stored.data()) / page * page;
-  const auto to = reinterpret_cast<std::uintptr_t>(record.stored.data() + record.stored.size());
-  ::madvise(reinterpret_cast<void*>(from), to - from, MADV_WILLNEED);
-}
+void FaceFile::prefetch(const BintreeNode& node) const { mapped_.advise(this->node(node).stored, MADV_WILLNEED); }
 
 }  // namespace strata::bdam

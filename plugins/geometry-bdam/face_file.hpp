@@ -8,6 +8,7 @@
 
 #include "bintree_builder.hpp"
 #include "displaced_patch.hpp"
+#include "mapped_file.hpp"
 
 namespace strata::bdam {
 
@@ -50,9 +51,6 @@ struct NodeRecord {
 class FaceFile {
  public:
   explicit FaceFile(const std::filesystem::path& path);  // throws FaceFileError
-  ~FaceFile();
-  FaceFile(const FaceFile&) = delete;
-  FaceFile& operator=(const FaceFile&) = delete;
 
   const FaceFileHeader& header() const { return header_; }
   // A node of one of this face's two bintrees, to the leaf level; throws FaceFileError for a damaged record.
@@ -63,12 +61,11 @@ class FaceFile {
   void prefetch(const BintreeNode& node) const;
 
  private:
-  std::span<const std::byte> bytes() const { return {static_cast<const std::byte*>(mapping_), size_}; }
+  std::span<const std::byte> bytes() const { return mapped_.bytes(); }
   std::string where(const BintreeNode& node) const;
 
   std::filesystem::path path_;
-  void* mapping_ = nullptr;
-  std::size_t size_ = 0;
+  MappedFile mapped_;
   FaceFileHeader header_;
   std::uint64_t nodesPerBintree_ = 0;
   std::uint64_t patchesFrom_ = 0;

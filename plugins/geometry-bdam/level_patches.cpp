@@ -1,9 +1,5 @@
 #include "level_patches.hpp"
 
-#include <fcntl.h>
-#include <sys/mman.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -18,7 +14,7 @@ LevelPatches::LevelPatches(std::filesystem::path path)
 }
 
 LevelPatches::~LevelPatches() {
-  if (mapping_) ::munmap(mapping_, size_);
+  mapped_ = {};
   out_.close();
   std::error_code ignored;  // a scratch folder removed first (on an interruption) took the file with it
   std::filesystem::remove(path_, ignored);
@@ -35,20 +31,14 @@ std::uint64_t LevelPatches::append(std::span<const std::byte> patch) {
 void LevelPatches::finish() {
   out_.close();
   if (!out_) throw std::runtime_error(path_.string() + ": cannot be written: " + std::strerror(errno));
-  if (size_ == 0) return;
-  const int descriptor = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
-  if (descriptor < 0) throw std::runtime_error(path_.string() + ": cannot be read back: " + std::strerror(errno));
-  void* mapping = ::mmap(nullptr, size_, PROT_READ, MAP_SHARED, descriptor, 0);
-  ::close(descriptor);
-  if (mapping == MAP_FAILED) throw std::runtime_error(path_.string() + ": cannot be mapped: " + std::strerror(errno));
-  mapping_ = mapping;
+  mapped_ = MappedFile(path_);
 }
 
 std::span<const std::byte> LevelPatches::at(std::uint64_t offset, std::uint32_t size) const {
-  if (size == 0) return {};
-  if (offset > size_ || size > size_ - offset || !mapping_)
+  const std::span<const std::byte> bytes = mapped_.bytes();
+  if (offset > bytes.size() || size > bytes.size() - offset)
     throw std::out_of_range(path_.string() + ": no patch at byte " + std::to_string(offset));
-  return {static_cast<const std::byte*>(mapping_) + offset, size};
+  return bytes.subspan(offset, size);
 }
 
 }  // namespace strata::bdam

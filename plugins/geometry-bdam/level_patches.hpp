@@ -5,6 +5,8 @@
 #include <fstream>
 #include <span>
 
+#include "mapped_file.hpp"
+
 namespace strata::bdam {
 
 // One bintree level's stored patches while the build goes on above it [Cignoni et al. 2003, §5: the construction runs
@@ -29,7 +31,7 @@ class LevelPatches {
   std::filesystem::path path_;
   std::ofstream out_;
   std::uint64_t size_ = 0;
-  void* mapping_ = nullptr;
+  MappedFile mapped_;
 };
 
 }  // namespace strata::bdam

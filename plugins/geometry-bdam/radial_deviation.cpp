@@ -46,12 +46,10 @@ RadialSurface::RadialSurface(const DisplacedTriangle& node, const PlanetMesh& me
       v_(glm::cross(normal_, u_)),
       vertices_(mesh.positions) {
   for (const glm::dvec3& p : vertices_) flatVertices_.push_back(projected(p));
-  std::vector<std::array<std::uint32_t, 3>> kept;
   for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
     const std::array<std::uint32_t, 3> i = {mesh.indices[t], mesh.indices[t + 1], mesh.indices[t + 2]};
     const glm::dvec3 a = vertices_.at(i[0]), n = glm::cross(vertices_.at(i[1]) - a, vertices_.at(i[2]) - a);
     if (std::abs(glm::dot(n, glm::normalize(a))) <= kEdgeOn * glm::length(n)) continue;  // seen edge-on
-    kept.push_back(i);
     const std::array<glm::dvec2, 3> corners = {flatVertices_[i[0]], flatVertices_[i[1]], flatVertices_[i[2]]};
     const double area = cross(corners[1] - corners[0], corners[2] - corners[0]);
     facets_.push_back({corners, area != 0.0 ? 1.0 / area : 0.0, n, glm::dot(n, a)});
