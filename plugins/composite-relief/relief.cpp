@@ -9,6 +9,7 @@
 #include <strata/plugin/node_type.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
+#include <strata/sun.hpp>
 
 #include "plugin_shaders.hpp"
 #include "relief_layer.hpp"
@@ -32,6 +33,7 @@ std::string rampProblem(const std::vector<double>& stops) {
 struct ReliefSettings {
   double azimuth = 315.0;  // light from the north-west, the cartographic convention, under which relief reads as raised
   double altitude = 45.0;  // the usual hillshade default: flat ground at cos 45 = 0.71, slopes shown both ways
+  bool sun = false;        // a hillshade's light, the same over the whole map, as cartographers draw relief
   double exaggeration = 1.0;      // the true relief; raise it to see gentle slopes on a planet's scale
   bool multiply = true;           // shaded imagery, the common use; alone shows the shade even where a surface is given
   bool multidirectional = false;  // the one light a reader expects; four show relief facing any way, as from orbit
@@ -59,6 +61,12 @@ const ParameterBindings<ReliefSettings>& reliefParameters() {
                               .units = "deg",
                               .doc = "height of the light above the horizon",
                               .live = true})
+          .choice(&S::sun,
+                  {.name = "light",
+                   .doc = "azimuth: one light at azimuth and altitude over every point (a hillshade); sun: the "
+                          "scene's sun as it stands over each point, dark where it has set",
+                   .live = true},
+                  {{"azimuth", false}, {"sun", true}})
           .add(&S::exaggeration, {.name = "exaggeration",
                                   .minimum = 0.0,
                                   .maximum = 1.0e4,
@@ -111,10 +119,32 @@ ReliefLayer::Ramp tintOf(const ReliefSettings& settings, const ParameterSet& par
   return {settings.tint, settings.tintRamp};
 }
 
-ReliefLayer::Lighting lightingOf(const ParameterSet& parameters) {
+// Throws strata::Error at `light` where it asks for a sun the scene does not place (`sunKnown`), or for the
+// sun together with the multidirectional mode's fixed lights.
+void checkSun(const ReliefSettings& settings, const ParameterSet& parameters, bool sunKnown) {
+  if (!settings.sun) return;
+  const SourceLocation& where = reliefParameters().where(parameters, &ReliefSettings::sun);
+  if (!sunKnown)
+    throw Error(where, "light: sun, but the scene does not say where the sun is",
+                "give the scene a date and time (date: 2024-03-20T12:00; the sun follows it on the Earth), or the "
+                "point the sun stands over (sun: {lon: 0, lat: 0})");
+  if (settings.multidirectional)
+    throw Error(where, "light: sun has one light, the sun; mode: multidirectional has four of its own",
+                "set mode: single, or light: azimuth");
+}
+
+ReliefLayer::Lighting lightingOf(const ParameterSet& parameters, bool sunKnown) {
   const ReliefSettings settings = reliefParameters().read(parameters);
-  return {settings.azimuth,          settings.altitude, settings.exaggeration,        settings.multiply,
-          settings.multidirectional, settings.output,   tintOf(settings, parameters), settings.normalised};
+  checkSun(settings, parameters, sunKnown);
+  return {settings.azimuth,
+          settings.altitude,
+          settings.exaggeration,
+          settings.multiply,
+          settings.multidirectional,
+          settings.output,
+          tintOf(settings, parameters),
+          settings.normalised,
+          settings.sun};
 }
 
 const Layer* surfaceOf(const NodeSetup& setup) {
@@ -125,13 +155,18 @@ const Layer* surfaceOf(const NodeSetup& setup) {
 class Relief : public Node {
  public:
   explicit Relief(const NodeSetup& setup)
-      : layer_(setup.id, *setup.input("height")->layer(), surfaceOf(setup), lightingOf(setup.parameters),
+      : sunKnown_(setup.sun.has_value()),
+        layer_(setup.id, *setup.input("height")->layer(), surfaceOf(setup), lightingOf(setup.parameters, sunKnown_),
                setup.body->radius) {}
 
   Layer* layer() override { return &layer_; }
-  void update(const ParameterSet& parameters) override { layer_.relight(lightingOf(parameters)); }
+  void prepare(const FrameState& frame) override {
+    if (frame.sun) layer_.setSun(sunDirection(*frame.sun));
+  }
+  void update(const ParameterSet& parameters) override { layer_.relight(lightingOf(parameters, sunKnown_)); }
 
  private:
+  bool sunKnown_;  // whether the scene places the sun (NodeSetup::sun): light: sun needs it
   ReliefLayer layer_;
 };
 
@@ -141,7 +176,8 @@ NodeTypeDeclaration declaration() {
   type.type = "composite.relief";
   type.category = NodeCategory::Compositor;
   type.summary =
-      "Shaded relief of a height layer, grey or multiplied over a colour layer, lit at an azimuth and altitude";
+      "Shaded relief of a height layer, grey or multiplied over a colour layer, lit at an azimuth and altitude or by "
+      "the sun";
   type.inputs = {{.name = "height",
                   .type = PortType::Layer,
                   .kinds = {LayerKind::Height},

@@ -39,13 +39,16 @@ glm::vec3 ReliefLayer::lightDirection(double azimuthDegrees, double altitudeDegr
           float(std::sin(altitude))};
 }
 
-// What the layer shows where the height's slopes are `slopes`: the Lambertian shade (from one light, or
-// Mark's four), or the slope or the aspect, each from 0 to 1. Selected, not branched: llvmpipe would run every
-// branch, and the shade and one arctangent are all any choice costs.
+// What the layer shows where the height's slopes are `slopes` and `light` is the light in the ground's
+// east/north/up frame: the Lambertian shade (from that light, or Mark's four), or the slope or the aspect, each
+// from 0 to 1. Normalised, the shade is over flat ground's: sin(altitude), or under the sun its height over the
+// point's horizon, light.z. Selected, not branched: llvmpipe would run every branch, and the shade and one
+// arctangent are all any choice costs.
 std::string ReliefLayer::value() const {
   const std::string& p = prefix_;
-  return "float " + p + "_value(vec2 slopes) {\n  float shade = reliefShade(slopes, " + p + "_exaggeration, " + p +
-         "_light, " + p + "_multidirectional == 1, " + p + "_altitude) / " + p + "_flat;\n  return " + p +
+  return "float " + p + "_value(vec2 slopes, vec3 light) {\n  float level = " + p + "_sunLit == 1 && " + p +
+         "_normalise == 1 ? max(light.z, 0.01) : " + p + "_flat;\n  float shade = reliefShade(slopes, " + p +
+         "_exaggeration, light, " + p + "_multidirectional == 1, " + p + "_altitude) / level;\n  return " + p +
          "_output == 0 ? shade : reliefAngle(slopes, " + p + "_exaggeration, " + p + "_output == 2);\n}\n";
 }
 
@@ -67,7 +70,7 @@ std::string ReliefLayer::shaded() const {
   const std::string shade =
       "  vec2 slopes = height.gb;\n"
       "  vec3 shade = " +
-      p + "_tint(slopes, height.r) * " + p + "_value(slopes);\n";
+      p + "_tint(slopes, height.r) * " + p + "_value(slopes, light);\n";
   if (!surface_) return "  if (height.a <= 0.0) return vec4(0.0);\n" + shade + "  return vec4(shade, height.a);\n";
   return "  vec4 surface = " + surface_->samplingFunction() +
          "(p);\n"
@@ -84,6 +87,15 @@ std::string ReliefLayer::glsl() const {
          "uniform vec3 " +
          p +
          "_light;\n"
+         "uniform vec3 " +
+         p +
+         "_sun;\n"
+         "uniform int " +
+         p +
+         "_sunLit;\n"
+         "uniform int " +
+         p +
+         "_normalise;\n"
          "uniform float " +
          p +
          "_exaggeration;\n"
@@ -115,6 +127,9 @@ std::string ReliefLayer::glsl() const {
          p + "_ramp[RELIEF_RAMP_STOPS];\n" + heightSlopesGlsl(p + "_slopes", height_, p + "_radius") + value() +
          tint() + "vec4 " + p +
          "(SurfacePoint p) {\n"
+         "  vec3 light = " +
+         p + "_sunLit == 1 ? reliefLocalDirection(p, " + p + "_sun) : " + p +
+         "_light;\n"
          "  vec4 height = " +
          p + "_slopes(p);\n" + shaded() + "}\n";
 }
@@ -123,6 +138,9 @@ void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {
   height_.bind(program, units);
   if (surface_) surface_->bind(program, units);
   program.set(prefix_ + "_light", lightDirection(lighting_.azimuth, lighting_.altitude));
+  program.set(prefix_ + "_sun", sun_);
+  program.set(prefix_ + "_sunLit", lighting_.sun ? 1 : 0);
+  program.set(prefix_ + "_normalise", lighting_.normalised ? 1 : 0);
   program.set(prefix_ + "_exaggeration", float(lighting_.exaggeration));
   program.set(prefix_ + "_radius", float(radius_));
   program.set(prefix_ + "_altitude", float(lighting_.altitude * std::numbers::pi / 180.0));

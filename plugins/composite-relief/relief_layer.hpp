@@ -13,7 +13,8 @@ namespace strata::composite {
 // Shaded relief of a height layer [Kooima 2008, §1.1]: the composed height's
 // gradient over a pixel's footprint along the ground gives the surface normal in the local east/north/up
 // frame, and the Lambertian cosine of its angle to a light at an azimuth and altitude (or to four, in the
-// multidirectional mode) is the shade, grey alone or multiplied over a surface layer; or it shows the slope
+// multidirectional mode), or to the sun as it stands over each point, is the shade, grey alone or multiplied
+// over a surface layer; or it shows the slope
 // or the aspect instead; a tint (a colour ramp by elevation or by slope) colours it. The light and the exaggeration are
 // uniforms: changing them rebuilds no program.
 class ReliefLayer : public Layer {
@@ -38,6 +39,7 @@ class ReliefLayer : public Layer {
     Output output = Output::Shade;
     Ramp tint;
     bool normalised = false;  // the shade over flat ground's, sin(altitude): flat ground keeps the surface's colour
+    bool sun = false;         // lit by the sun (setSun) as it stands over each point, not at azimuth and altitude
   };
 
   // `surface`, or none: the colour layer to shade. `radius`: the body's, to turn angles into metres.
@@ -51,6 +53,8 @@ class ReliefLayer : public Layer {
   std::uint64_t revision() const override { return height_.revision() + (surface_ ? surface_->revision() : 0); }
   // New lighting for the next frame: its values are uniforms.
   void relight(Lighting lighting) { lighting_ = std::move(lighting); }
+  // The planet-fixed unit vector toward the sun, for Lighting::sun, from the next frame on.
+  void setSun(const glm::dvec3& towardSun) { sun_ = glm::vec3(towardSun); }
 
   // The unit vector towards the light in the local east/north/up frame.
   static glm::vec3 lightDirection(double azimuthDegrees, double altitudeDegrees);
@@ -66,6 +70,7 @@ class ReliefLayer : public Layer {
   const Layer* surface_;
   Lighting lighting_;
   double radius_;
+  glm::vec3 sun_{0.0f, 0.0f, 1.0f};
 };
 
 }  // namespace strata::composite

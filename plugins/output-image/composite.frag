@@ -18,9 +18,10 @@ const int kSamples = STRATA_SAMPLES;
 uniform DeferredBuffer surfaceBuffer;
 uniform DeferredBuffer depthBuffer;
 
-uniform vec3 lightDirection;  // planet-fixed, unit, toward the light
-uniform float ambient;        // share of light that reaches surfaces facing away
-uniform int shade;            // 0: unlit colours, 1: Lambertian
+uniform vec3 lightDirection;  // planet-fixed, unit, toward the light (the sun's, where shade is 2)
+uniform float ambient;        // share of light that reaches surfaces facing away (by day, where shade is 2)
+uniform int shade;            // 0: unlit colours, 1: Lambertian, 2: Lambertian by the sun, dark at night
+uniform float twilightSine;   // sine of the sun's depth below the horizon where its light is gone (shade 2)
 uniform vec3 emptyColour;     // surface where no layer has data (linear)
 uniform vec3 background;      // where there is no body (linear)
 uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred buffer's lonlat is measured
@@ -53,9 +54,17 @@ SurfacePoint surfacePointAt(DeferredBuffer surfaces, ivec2 pixel, int s, vec4 he
                       footprint(surfaces, pixel, s, ivec2(0, 1), here.xy), here.xy);
 }
 
-// The light on a surface of shading normal `normal`.
-float lightOn(vec3 normal) {
-  return shade == 1 ? ambient + (1.0 - ambient) * max(dot(normalize(normal), lightDirection), 0.0) : 1.0;
+// How much of the day's light reaches ground of sphere normal `sphereNormal`: 1 where the sun is up, fading
+// smoothly to 0 as it sinks through the twilight below the horizon; 1 everywhere unless lit by the sun.
+float daylight(vec3 sphereNormal) {
+  return shade == 2 ? smoothstep(-twilightSine, 0.0, dot(sphereNormal, lightDirection)) : 1.0;
+}
+
+// The light on a surface of shading normal `normal` at sphere normal `sphereNormal`: the ambient share by
+// day, and the direct light by Lambert's law.
+float lightOn(vec3 normal, vec3 sphereNormal) {
+  if (shade == 0) return 1.0;
+  return ambient * daylight(sphereNormal) + (1.0 - ambient) * max(dot(normalize(normal), lightDirection), 0.0);
 }
 
 STRATA_SURFACE_LAYERS_GLSL
@@ -75,8 +84,12 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   vec4 accumulated = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE
   vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
+  accumulated = vec4(0.0);
+  STRATA_NIGHT_LAYERS_ACCUMULATE
+  vec3 night = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : vec3(0.0);
+  vec3 light = albedo * lightOn(shadingNormalOf(here, p.normal), p.normal) + night * (1.0 - daylight(p.normal));
   float depth = texelFetch(depthBuffer, pixel, s).r;
-  return clamp(translucentOver(pixel, s, albedo * lightOn(shadingNormalOf(here, p.normal)), depth), 0.0, 1.0);
+  return clamp(translucentOver(pixel, s, light, depth), 0.0, 1.0);
 }
 
 // Samples of one surface lie within a pixel's footprint of each other: each holds its triangle's values at

@@ -16,6 +16,7 @@
 #include <strata/plugin/output.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
 #include <strata/plugin/plugin.hpp>
+#include <strata/sun.hpp>
 
 #include "body_outline.hpp"
 #include "outline_fan.hpp"
@@ -25,14 +26,19 @@
 namespace strata::image {
 namespace {
 
+// How the composed colours are lit.
+enum class Shading { None, Lambert, Sun };
+
 // The node's settings as a pipeline writes them, each default's reason beside it.
 struct ImageSettings {
-  bool lambert = true;
+  Shading shading = Shading::Lambert;
   // 315/45 is the cartographic convention for shaded relief: light from the upper left, so hills do not read
   // as valleys.
   double lightAzimuth = 315.0;
   double lightElevation = 45.0;
   double ambient = 0.25;
+  // Civil twilight: until the sun is 6 degrees below the horizon the sky lights the ground enough to see by.
+  double twilight = 6.0;
   double opacity = 0.5;  // what lies behind shows as clearly as the translucent surface itself
   // Four samples: the limb's and silhouettes' steps fall to a quarter, and llvmpipe and every GL 4.5 GPU
   // offer them (GL_MAX_SAMPLES is at least 4).
@@ -46,11 +52,13 @@ const ParameterBindings<ImageSettings>& imageParameters() {
   using S = ImageSettings;
   static const auto bindings =
       ParameterBindings<S>()
-          .choice(&S::lambert,
+          .choice(&S::shading,
                   {.name = "shading",
-                   .doc = "lambert: lit by one distant light; none: the layers' colours as they are",
+                   .doc = "lambert: lit by one light from the view's side (light_azimuth, light_elevation); sun: "
+                          "lit by the scene's sun, dark beyond the terminator but for the night layers; none: the "
+                          "layers' colours as they are",
                    .live = true},
-                  {{"lambert", true}, {"none", false}})
+                  {{"lambert", Shading::Lambert}, {"sun", Shading::Sun}, {"none", Shading::None}})
           .add(&S::lightAzimuth, {.name = "light_azimuth",
                                   .minimum = 0.0,
                                   .maximum = 360.0,
@@ -69,6 +77,14 @@ const ParameterBindings<ImageSettings>& imageParameters() {
                              .doc = "share of light on surfaces facing away, so the night side keeps its imagery "
                                     "readable",
                              .live = true})
+          .add(&S::twilight, {.name = "twilight",
+                              .minimum = 0.0,
+                              .maximum = 30.0,
+                              .units = "deg",
+                              .doc = "how far below the horizon the sun's light fades out (shading: sun): the "
+                                     "terminator's width",
+                              .live = true,
+                              .exclusiveMinimum = true})
           .add(&S::opacity, {.name = "opacity",
                              .minimum = 0.0,
                              .maximum = 1.0,
@@ -90,6 +106,11 @@ const ParameterBindings<ImageSettings>& imageParameters() {
 
 const glm::vec3 kBackground(0.0f);  // where there is no body: black, as space
 
+const char* const kNoSun = "shading: sun, but the scene does not say where the sun is";
+const char* const kNoSunFix =
+    "give the scene a date and time (date: 2024-03-20T12:00; the sun follows it on the Earth), or the point the "
+    "sun stands over (sun: {lon: 0, lat: 0})";
+
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
@@ -99,29 +120,28 @@ class ImageOutput : public Node, public FrameOutput {
         displayGlsl_(displayGlsl(setup)),
         translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
+    for (Node* node : setup.inputList("night")) night_.push_back(node->layer());
+    checkSun(setup);
     geometry_->requestSamples(settings_.samples);
     translucent_.requestSamples(settings_.samples);
   }
 
   void createResources(GpuContext& gpu) override {
     const int samples = checkedSamples();
-    std::string layersGlsl, accumulate;
-    for (const Layer* layer : surface_) {
-      layersGlsl += layer->glslOnce();
-      const bool colour = layer->kind() == LayerKind::Color;
-      // [Kooima 2008, §4.1.2]: value x weight into rgb, the weight into alpha.
-      accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
-                    (colour ? "rgb" : "rrr") + " * v.a, v.a); }\n";
-    }
+    std::string layersGlsl;
+    for (const Layer* layer : surface_) layersGlsl += layer->glslOnce();
+    for (const Layer* layer : night_) layersGlsl += layer->glslOnce();
     program_ = ShaderProgram(
         {{GL_VERTEX_SHADER, "output-image/outline.vert", gpu.shaders->expand("output-image/outline.vert")},
          {GL_FRAGMENT_SHADER, "output-image/composite.frag",
-          gpu.shaders->expand("output-image/composite.frag", {{"STRATA_DEFERRED_SAMPLER", glslSamplerFor(samples)},
-                                                              {"STRATA_SAMPLES", std::to_string(samples)},
-                                                              {"STRATA_DISPLAY_GLSL", displayGlsl_},
-                                                              {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
-                                                              {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                                                              {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulate}})}});
+          gpu.shaders->expand("output-image/composite.frag",
+                              {{"STRATA_DEFERRED_SAMPLER", glslSamplerFor(samples)},
+                               {"STRATA_SAMPLES", std::to_string(samples)},
+                               {"STRATA_DISPLAY_GLSL", displayGlsl_},
+                               {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
+                               {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
+                               {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulation(surface_)},
+                               {"STRATA_NIGHT_LAYERS_ACCUMULATE", accumulation(night_)}})}});
     background_ =
         ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
                        {GL_FRAGMENT_SHADER, "output-image/background.frag",
@@ -144,9 +164,10 @@ class ImageOutput : public Node, public FrameOutput {
       triangle_->draw();
     }
     program_.use();
-    program_.set("lightDirection", lightDirection(frame.view));
+    program_.set("lightDirection", lightDirection(frame));
     program_.set("ambient", float(settings_.ambient));
-    program_.set("shade", settings_.lambert ? 1 : 0);
+    program_.set("shade", int(settings_.shading));
+    program_.set("twilightSine", float(std::sin(glm::radians(settings_.twilight))));
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
     program_.set("background", kBackground);
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
@@ -156,11 +177,17 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
+    for (const Layer* layer : night_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);
     fan_->draw(outline.fan);
   }
 
-  void update(const ParameterSet& parameters) override { settings_ = imageParameters().read(parameters); }
+  void update(const ParameterSet& parameters) override {
+    const ImageSettings settings = imageParameters().read(parameters);
+    if (settings.shading == Shading::Sun && !sunKnown_)
+      throw Error(imageParameters().where(parameters, &ImageSettings::shading), kNoSun, kNoSunFix);
+    settings_ = settings;
+  }
 
   FrameOutput* output() override { return this; }
   const Framebuffer& frame() const override { return frame_; }
@@ -204,9 +231,35 @@ class ImageOutput : public Node, public FrameOutput {
     return samples;
   }
 
+  // [Kooima 2008, §4.1.2]: each layer's value x weight into rgb, the weight into alpha, for composite.frag.
+  static std::string accumulation(const std::vector<const Layer*>& layers) {
+    std::string accumulate;
+    for (const Layer* layer : layers)
+      accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
+                    (layer->kind() == LayerKind::Color ? "rgb" : "rrr") + " * v.a, v.a); }\n";
+    return accumulate;
+  }
+
+  // Throws strata::Error at `shading` where it asks for the sun and the scene places none, and at the node
+  // where night layers are given without the sun that would show them.
+  void checkSun(const NodeSetup& setup) {
+    sunKnown_ = setup.sun.has_value();
+    const SourceLocation shadingWhere = imageParameters().where(setup.parameters, &ImageSettings::shading);
+    if (settings_.shading == Shading::Sun && !sunKnown_) throw Error(shadingWhere, kNoSun, kNoSunFix);
+    if (!night_.empty() && settings_.shading != Shading::Sun)
+      throw Error(shadingWhere, "night layers are given, but only the sun's shading has a night to show them in",
+                  "set shading: sun, or leave out the night input");
+  }
+
+  // Toward the light, planet-fixed: the scene's sun (shading: sun), or the light given in the view.
+  glm::vec3 lightDirection(const FrameState& frame) const {
+    if (settings_.shading == Shading::Sun && frame.sun) return glm::vec3(sunDirection(*frame.sun));
+    return lightInView(frame.view);
+  }
+
   // The light, given in the view (azimuth clockwise from the top of the image, elevation above the image
   // plane toward the viewer), turned into planet-fixed axes.
-  glm::vec3 lightDirection(const View& view) const {
+  glm::vec3 lightInView(const View& view) const {
     const double azimuth = glm::radians(settings_.lightAzimuth);
     const double elevation = glm::radians(settings_.lightElevation);
     const glm::dvec3 inView(std::sin(azimuth) * std::cos(elevation), std::cos(azimuth) * std::cos(elevation),
@@ -219,6 +272,8 @@ class ImageOutput : public Node, public FrameOutput {
   SourceLocation samplesWhere_;  // the node's `antialiasing`, for errors about it
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
+  std::vector<const Layer*> night_;
+  bool sunKnown_ = false;  // whether the scene places the sun (NodeSetup::sun): shading: sun needs it
   TranslucentSurfaces translucent_;
   ShaderProgram program_;
   ShaderProgram background_;
@@ -241,6 +296,13 @@ NodeTypeDeclaration declaration() {
        .list = true,
        .optional = true,
        .doc = "layers draped on it, blended by coverage where they overlap; none: grey"},
+      {.name = "night",
+       .type = PortType::Layer,
+       .kinds = {LayerKind::Color, LayerKind::Luminance},
+       .list = true,
+       .optional = true,
+       .doc = "layers shown unlit where the sun has set (shading: sun), fading in through the twilight: city "
+              "lights"},
       {.name = "translucent",
        .type = PortType::Geometry,
        .list = true,

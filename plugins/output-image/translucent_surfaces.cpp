@@ -56,7 +56,7 @@ std::string TranslucentSurfaces::colourOf(std::size_t i) const {
          "  vec4 v = " +
          layers_[i]->samplingFunction() +
          "(p);\n"
-         "  return vec4(v.rgb * lightOn(shadingNormalOf(here, p.normal)), v.a);\n"
+         "  return vec4(v.rgb * lightOn(shadingNormalOf(here, p.normal), p.normal), v.a);\n"
          "}\n";
 }
 

@@ -14,6 +14,7 @@
 #include <strata/plugin/plugin.hpp>
 #include <strata/plugin/plugin_registry.hpp>
 
+#include "body_of_the_crs.hpp"
 #include "colour_encoding.hpp"
 #include "gdal_page_source.hpp"
 #include "georeferencing.hpp"
@@ -34,6 +35,7 @@ class GdalSource : public Node {
       : parameters_(setup.parameters),
         settings_(gdalParameters().read(setup.parameters)),
         plugins_(*setup.plugins),
+        body_(*setup.body),
         encoding_(colourEncodingOf(setup, settings_)),
         layer_(setup.id, settings_.kind) {
     layer_.setValueTransform(settings_.scale, settings_.offset);
@@ -43,6 +45,7 @@ class GdalSource : public Node {
     const SourceLocation where = whereOf(&GdalSettings::path);
     std::unique_ptr<GDALDataset> dataset = openDataset(where);
     checkRaster(*dataset, settings_.kind, where);
+    reportAnotherBody(*dataset, settings_.projection, body_, where);
     std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where);
     if (settings_.kind != LayerKind::Color) countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
     if (settings_.kind == LayerKind::Height) refuseHeightsNoTerrainHas(where);
@@ -172,6 +175,7 @@ class GdalSource : public Node {
   ParameterSet parameters_;  // where each setting was given, for messages
   GdalSettings settings_;
   const PluginRegistry& plugins_;
+  Body body_;                               // the pipeline's, which the raster's CRS is checked against
   std::optional<ColourEncoding> encoding_;  // none: values, or colours already scene-linear
   PagedRasterLayer layer_;
   std::shared_ptr<const MemoryFile> polygonMask_;  // where a vector file's polygons were rasterised

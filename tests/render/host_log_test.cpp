@@ -72,6 +72,39 @@ TEST(HostLog, ASourcesWarningReachesTheHostsSinkAndNotStderr) {
   EXPECT_EQ(printed.find("overviews"), std::string::npos) << printed;
 }
 
+// What the library logged about `file` while rendering `pipeline` once.
+std::vector<LogMessage> messagesAbout(const std::filesystem::path& pipeline, const std::string& file) {
+  CollectedLog log;
+  std::unique_ptr<Engine> engine = makeEngine();
+  renderFrame(*engine, pipeline, 64, 32);
+  std::vector<LogMessage> messages;
+  for (const LogMessage& message : log.messages())
+    if (message.text.find(file) != std::string::npos) messages.push_back(message);
+  return messages;
+}
+
+// A global map of Mars (the IAU 2000 sphere of 3396190 m) given to a pipeline of the Earth is reported at its
+// source, naming both bodies, and drawn; on Mars it is not reported.
+TEST(HostLog, ARasterOfAnotherBodyIsReported) {
+  TemporaryDirectory directory;
+  const std::filesystem::path mars = directory.path() / "mars.tif";
+  writeRasterFile(mars, {.crs = "+proj=longlat +R=3396190 +no_defs",
+                         .geotransform = {-180.0, 0.6, 0.0, 90.0, 0.0, -0.6},
+                         .bands = 3,
+                         .type = GDT_Byte,
+                         .nodata = std::nullopt});
+  std::string pipeline = globePipeline(mars);
+  const std::vector<LogMessage> onEarth = messagesAbout(directory.write("earth.yaml", pipeline), "mars.tif");
+  ASSERT_EQ(onEarth.size(), 1u);
+  EXPECT_NE(onEarth[0].text.find("lies on a body of 3396190 m (Mars's), not on the pipeline's Earth of 6371000 m"),
+            std::string::npos)
+      << onEarth[0].text;
+  EXPECT_NE(onEarth[0].text.find("earth.yaml:5:"), std::string::npos) << onEarth[0].text;
+  EXPECT_NE(onEarth[0].fix.find("body: {name: Mars}"), std::string::npos) << onEarth[0].fix;
+  pipeline.replace(pipeline.find("{name: Earth, radius: 6371000}"), 30, "{name: Mars}");
+  EXPECT_TRUE(messagesAbout(directory.write("mars.yaml", pipeline), "mars.tif").empty());
+}
+
 TEST(HostLog, WithoutASinkAMessageAndItsFixArePrintedToStderr) {
   testing::internal::CaptureStderr();
   logWarning("the page cache holds 12 of 40 pages", "give the cache a larger budget");

@@ -30,7 +30,9 @@
 #include <numbers>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <strata/error.hpp>
+#include <strata/sun.hpp>
 
 #include "rendering.hpp"
 #include "sphere_raycast.hpp"
@@ -162,6 +164,34 @@ TEST_F(Relief, NormalisedTheShadeIsOverFlatGrounds) {
     return srgbLevel(analyticShade(o, 315.0, 45.0) / std::sin(45.0 * kDegree));
   });
   EXPECT_LE(agreement.largest, 1.0);
+}
+
+// Under the sun the light is the sun's direction in each point's own east/north/up frame: a sun over (-45, 10)
+// stands west and a little north of the cone, higher over its western flank, and the shade follows it point by
+// point. The same tolerance as for a fixed light.
+TEST_F(Relief, UnderTheSunEachPointIsLitAsTheSunStandsOverIt) {
+  std::string text = pipeline(file("cone.tif"), ", light: sun");
+  text.replace(text.find("camera:"), 0, "sun: {lon: -45, lat: 10}\n");
+  const glm::dvec3 sun = sunDirection({-45.0, 10.0});
+  const Agreement agreement = compare("sun", text, [&](Offset o) {
+    const double lon = o.east / (kRadius * std::cos(o.north / kRadius)) / kDegree, lat = o.north / kRadius / kDegree;
+    const glm::dvec3 up = unitNormal(lon * kDegree, lat * kDegree);
+    const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)), north = glm::cross(up, east);
+    const double altitude = std::asin(glm::dot(sun, up)) / kDegree;
+    const double azimuth = std::atan2(glm::dot(sun, east), glm::dot(sun, north)) / kDegree;
+    return srgbLevel(analyticShade(o, azimuth, altitude));
+  });
+  EXPECT_GT(agreement.judged, 10000);
+  EXPECT_LE(agreement.largest, 1.0);
+}
+
+TEST_F(Relief, TheSunsLightNeedsTheScenesSun) {
+  try {
+    renderFrame(*engine_, directory_.write("relief.yaml", pipeline(file("cone.tif"), ", light: sun")), 16, 16);
+    FAIL() << "loaded without a sun";
+  } catch (const Error& error) {
+    EXPECT_EQ(error.problem(), "light: sun, but the scene does not say where the sun is");
+  }
 }
 
 // Mark's multidirectional shading (USGS Open-File Report 92-422) of the exact normal: lights at 225, 270,

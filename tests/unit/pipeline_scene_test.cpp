@@ -1,5 +1,7 @@
-// The body:, camera:, date: and colour: sections.
+// The body:, camera:, date:, sun: and colour: sections.
 #include "pipeline_test_fixtures.hpp"
+
+#include <strata/log.hpp>
 
 namespace strata::testing {
 namespace {
@@ -139,6 +141,55 @@ TEST_F(SceneTest, BodyNameAndRadius) {
   const Body body = parse(withSection("body: {name: Moon, radius: 1737400}")).body;
   EXPECT_EQ(body.name, "Moon");
   EXPECT_DOUBLE_EQ(body.radius, 1737400.0);
+}
+
+// A named body takes the IAU report's mean radius (strata/named_bodies.hpp); a radius given wins.
+TEST_F(SceneTest, NamedBodyTakesItsMeanRadius) {
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Mars}")).body.radius, 3389500.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: moon}")).body.radius, 1737400.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Mars, radius: 3396190}")).body.radius, 3396190.0);
+  EXPECT_DOUBLE_EQ(parse(withSection("camera: {}")).body.radius, Body{}.radius);
+}
+
+TEST_F(SceneTest, UnknownBodyWithoutARadius) {
+  const Error error = parseError(withSection("body: {name: Vulcan}"));
+  EXPECT_EQ(error.problem(), "'Vulcan' is not a body Strata knows by name, and no radius is given");
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_NE(error.fix().find("radius"), std::string::npos);
+  EXPECT_NE(error.fix().find("Ganymede"), std::string::npos);
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Vulcan, radius: 500000}")).body.radius, 500000.0);
+}
+
+TEST_F(SceneTest, RadiusInKilometresIsRefused) {
+  const Error named = parseError(withSection("body: {name: Mars, radius: 3389.5}"));
+  EXPECT_EQ(named.problem(), "body radius 3389.5 looks like kilometres: Mars's mean radius is 3389500 m");
+  EXPECT_EQ(named.where().column, 28);
+  EXPECT_NE(named.fix().find("metres"), std::string::npos);
+  // Unnamed, it is taken for the body whose radius it would be in kilometres.
+  EXPECT_EQ(parseError(withSection("body: {radius: 6371}")).problem(),
+            "body radius 6371 looks like kilometres: Earth's mean radius is 6371000 m");
+  // A small body of its own name may be that small.
+  EXPECT_DOUBLE_EQ(parse(withSection("body: {name: Bennu, radius: 3389.5}")).body.radius, 3389.5);
+}
+
+TEST_F(SceneTest, NamedBodyGivenAnotherRadiusIsWarnedAndDrawnSo) {
+  std::vector<LogMessage> warnings;
+  const LogSink previous = setLogSink([&warnings](const LogMessage& message) { warnings.push_back(message); });
+  const Body body = parse(withSection("body: {name: Mars, radius: 6371000}")).body;
+  setLogSink(previous);
+  EXPECT_DOUBLE_EQ(body.radius, 6371000.0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].text.find("is not Mars's (mean 3389500 m)"), std::string::npos) << warnings[0].text;
+  EXPECT_NE(warnings[0].text.find(":2:"), std::string::npos) << warnings[0].text;
+}
+
+TEST_F(SceneTest, SunIsAFixedSubsolarPoint) {
+  const Pipeline pipeline = parse(withSection("sun: {lon: 190, lat: -20}"));
+  ASSERT_TRUE(pipeline.sun);
+  EXPECT_DOUBLE_EQ(pipeline.sun->lon, -170.0);
+  EXPECT_DOUBLE_EQ(pipeline.sun->lat, -20.0);
+  EXPECT_FALSE(parse(withSection("camera: {}")).sun);
+  EXPECT_EQ(parseError(withSection("sun: {lat: 95}")).problem(), "sun 'lat' must be in [-90, 90] deg, got 95 deg");
 }
 
 // Issue 37, item 7: a body of 1e14 m was drawn speckled and of 1e20 m grey.

@@ -165,8 +165,14 @@ const FrameOutput& Engine::render(int width, int height) { return renderFrame(wi
 
 const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
-  FrameState frame{&impl_->pipeline->body,         view(width, height), impl_->statistics.frame, impl_->date, still,
-                   viewAhead(width, height, still)};
+  const Pipeline& pipeline = *impl_->pipeline;
+  FrameState frame{.body = &pipeline.body,
+                   .view = view(width, height),
+                   .index = impl_->statistics.frame,
+                   .date = impl_->date,
+                   .sun = sceneSun(pipeline.body, impl_->date, pipeline.sun),
+                   .still = still,
+                   .ahead = viewAhead(width, height, still)};
   auto start = std::chrono::steady_clock::now();
   impl_->graph->prepare(frame, impl_->workers);
   impl_->statistics.prepareMs = millisecondsSince(start);

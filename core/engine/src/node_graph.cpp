@@ -72,8 +72,16 @@ void NodeGraph::make(const Pipeline& pipeline, const PluginRegistry& registry) {
   std::map<std::string, std::size_t> index;
   for (const NodeDescription& description : pipeline.nodes) {
     const NodeTypeDeclaration& type = *registry.find(description.type);
-    NodeSetup setup{description.id, description.where, description.parameters, {}, &pipeline.body, pipeline.directory,
-                    &registry,      pipeline.date,     pipeline.colour};
+    NodeSetup setup{description.id,
+                    description.where,
+                    description.parameters,
+                    {},
+                    &pipeline.body,
+                    pipeline.directory,
+                    &registry,
+                    pipeline.date,
+                    pipeline.colour,
+                    sceneSun(pipeline.body, pipeline.date, pipeline.sun)};
     int depth = 0;
     for (const auto& [port, ids] : description.inputs)
       for (const std::string& id : ids) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "named_body.hpp"
 #include "pipeline/parameter_parsing.hpp"
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
@@ -68,7 +69,7 @@ ParameterSet parseDeclared(const YAML::Node& value, const std::vector<ParameterD
 
 void readScene(const YAML::Node& root, const SourceMap& source, Pipeline& pipeline) {
   const std::filesystem::path& directory = pipeline.directory;
-  pipeline.body = bodyParameters().read(readSection(root, "body", source, directory));
+  pipeline.body = bodyOf(readSection(root, "body", source, directory));
   pipeline.camera = cameraOf(readSection(root, "camera", source, directory));
   pipeline.cache = cacheParameters().read(readSection(root, "cache", source, directory));
   pipeline.cache.where = root["cache"] ? source.at(root["cache"]) : SourceLocation{pipeline.name};
@@ -76,6 +77,11 @@ void readScene(const YAML::Node& root, const SourceMap& source, Pipeline& pipeli
   if (const YAML::Node colour = root["colour"])
     if (const YAML::Node config = colour["config"]) pipeline.colour.where = source.at(config);
   pipeline.date = dateParameters().read(readSection(root, "date", source, directory)).date;
+  if (root["sun"]) {
+    SubsolarPoint sun = sunParameters().read(readSection(root, "sun", source, directory));
+    sun.lon = wrapLongitude(sun.lon);
+    pipeline.sun = sun;
+  }
 }
 
 Camera cameraOf(const ParameterSet& parameters) {

@@ -1,4 +1,4 @@
-// The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:` and `date:` take, with
+// The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:`, `date:` and `sun:` take, with
 // each default's reason beside it in the settings structs (body.hpp, camera.hpp, page_cache_settings.hpp).
 #include <strata/host/scene_settings.hpp>
 
@@ -30,12 +30,15 @@ SceneSection sectionOf(std::string name, std::string doc, const std::vector<Para
 const ParameterBindings<Body>& bodyParameters() {
   static const auto bindings =
       ParameterBindings<Body>()
-          .add(&Body::name, {.name = "name", .doc = "what messages and the viewer call the body"})
+          .add(&Body::name, {.name = "name",
+                             .doc = "the body; one of the solar system's (Mars, Moon, Titan: strata/named_bodies.hpp) "
+                                    "takes its IAU mean radius"})
           .add(&Body::radius, {.name = "radius",
                                .minimum = kLeastRadius,
                                .maximum = kMostRadius,
                                .units = "m",
-                               .doc = "the body's mean radius: a sphere, which heights are measured above"});
+                               .doc = "the body's mean radius: a sphere, which heights are measured above; "
+                                      "unset: the named body's"});
   return bindings;
 }
 
@@ -112,7 +115,22 @@ const ParameterBindings<ColourSettings>& colourParameters() {
 const ParameterBindings<SceneDate>& dateParameters() {
   static const auto bindings = ParameterBindings<SceneDate>().add(
       &SceneDate::date,
-      {.name = "date", .type = ParameterType::Date, .doc = "the scene's date (UTC), which time series show"});
+      {.name = "date",
+       .type = ParameterType::Date,
+       .doc = "the scene's date and time (UTC): what time series show, and where the Earth's sun stands"});
+  return bindings;
+}
+
+const ParameterBindings<SubsolarPoint>& sunParameters() {
+  static const auto bindings =
+      ParameterBindings<SubsolarPoint>()
+          .add(&SubsolarPoint::lon,
+               {.name = "lon", .units = "deg", .doc = "longitude where the sun stands overhead, east positive"})
+          .add(&SubsolarPoint::lat, {.name = "lat",
+                                     .minimum = -90.0,
+                                     .maximum = 90.0,
+                                     .units = "deg",
+                                     .doc = "latitude where the sun stands overhead"});
   return bindings;
 }
 
@@ -121,7 +139,10 @@ const std::vector<SceneSection>& sceneSections() {
       sectionOf("body", "the planet or moon shown: a sphere", bodyParameters().declarations()),
       sectionOf("camera", "where the first frame is seen from", cameraParameters().declarations()),
       sectionOf("cache", "the GPU page cache (docs/data.md)", cacheParameters().declarations()),
-      sectionOf("date", "the scene's date, for time series", dateParameters().declarations(), true),
+      sectionOf("date", "the scene's date and time (UTC): what time series show, and the Earth's sun",
+                dateParameters().declarations(), true),
+      sectionOf("sun", "where the sun stands overhead, fixed; unset: from the date, for the Earth",
+                sunParameters().declarations()),
       sectionOf("colour", "how colours are managed (docs/colour.md)", colourParameters().declarations()),
   };
   return sections;

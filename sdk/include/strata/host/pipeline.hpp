@@ -13,6 +13,7 @@
 #include <strata/host/colour_settings.hpp>
 #include <strata/host/page_cache_settings.hpp>
 #include <strata/plugin/parameter.hpp>
+#include <strata/sun.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -40,6 +41,7 @@ struct Pipeline {
   PageCacheSettings cache;
   ColourSettings colour;
   std::optional<DayNumber> date;       // the scene's date (`date:`), which time series show; none: not given
+  std::optional<SubsolarPoint> sun;    // the scene's fixed sun (`sun:`); none: from the date (sceneSun)
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
 
   const NodeDescription* find(const std::string& id) const;

@@ -10,6 +10,7 @@
 #include <strata/host/colour_settings.hpp>
 #include <strata/host/page_cache_settings.hpp>
 #include <strata/plugin/parameter_bindings.hpp>
+#include <strata/sun.hpp>
 
 STRATA_EXPORTS_BEGIN
 namespace strata {
@@ -19,7 +20,7 @@ struct SceneDate {
   std::optional<DayNumber> date;  // none: not given
 };
 
-// One section of a pipeline's scene settings (body, camera, cache, date, colour), declared as node
+// One section of a pipeline's scene settings (body, camera, cache, date, sun, colour), declared as node
 // parameters are: validated by the same code, listed by `strata plugins --describe scene`, written into
 // docs/reference/ and shown by the viewer's scene panel.
 struct SceneSection {
@@ -40,6 +41,7 @@ const ParameterBindings<Camera>& cameraParameters();
 const ParameterBindings<PageCacheSettings>& cacheParameters();
 const ParameterBindings<ColourSettings>& colourParameters();
 const ParameterBindings<SceneDate>& dateParameters();
+const ParameterBindings<SubsolarPoint>& sunParameters();
 
 }  // namespace strata
 STRATA_EXPORTS_END

@@ -37,6 +37,7 @@ struct NodeSetup {
   const PluginRegistry* plugins = nullptr;  // node types and projections (see strata/crs.hpp)
   std::optional<DayNumber> date;  // the scene's date as the pipeline gives it (`date:`); frames carry the current one
   ColourSettings colour;          // the pipeline's `colour:` (its OpenColorIO config)
+  std::optional<SubsolarPoint> sun;  // the scene's sun at its date (sceneSun); frames carry the current one
 
   Node* input(const std::string& port) const;                          // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected
