@@ -22,7 +22,8 @@ packages=(
   zlib1g-dev                                    # geometry.bdam's face files: CRC-32 of each record
   xvfb xauth                                    # window tests without a display
   libxtst-dev                                   # window tests send keys and pointer events (XTest)
-  xplanet-images                                # the Earth image the demo drapes
+  xplanet-images                                # the Earth image the demo drapes, and the Earth at night
+  stellarium-data                               # the Moon's map and normal map (pipelines/moon.yaml)
   doxygen                                       # the SDK's API reference (target sdk-reference)
   clang-format-14                               # the format check (scripts/check-format.sh)
 )

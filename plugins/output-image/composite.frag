@@ -69,6 +69,17 @@ float lightOn(vec3 normal, vec3 sphereNormal) {
 
 STRATA_SURFACE_LAYERS_GLSL
 
+// The shading normal `normal` at `p` turned by the normal maps' blend `mapped` (value x weight in rgb, the
+// weight in alpha; 0 to 1 standing for -1 to 1): x along the east, y the north, z the normal itself.
+vec3 mappedNormal(vec3 normal, SurfacePoint p, vec4 mapped) {
+  if (mapped.a <= 0.0) return normal;
+  vec3 tangent = normalize(mapped.rgb / mapped.a * 2.0 - 1.0);
+  vec3 up = normalize(normal);
+  vec3 east = vec3(-sin(p.lonlat.x), cos(p.lonlat.x), 0.0);
+  east = normalize(east - up * dot(up, east));
+  return normalize(tangent.x * east + tangent.y * cross(up, east) + tangent.z * up);
+}
+
 // vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth): the translucent surfaces nearer than
 // `depth` at sample `s` laid over `colour` (plugins/output-image/translucent_surfaces.cpp).
 STRATA_TRANSLUCENT_GLSL
@@ -87,7 +98,10 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   accumulated = vec4(0.0);
   STRATA_NIGHT_LAYERS_ACCUMULATE
   vec3 night = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : vec3(0.0);
-  vec3 light = albedo * lightOn(shadingNormalOf(here, p.normal), p.normal) + night * (1.0 - daylight(p.normal));
+  accumulated = vec4(0.0);
+  STRATA_NORMAL_LAYERS_ACCUMULATE
+  vec3 normal = mappedNormal(shadingNormalOf(here, p.normal), p, accumulated);
+  vec3 light = albedo * lightOn(normal, p.normal) + night * (1.0 - daylight(p.normal));
   float depth = texelFetch(depthBuffer, pixel, s).r;
   return clamp(translucentOver(pixel, s, light, depth), 0.0, 1.0);
 }

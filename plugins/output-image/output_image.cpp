@@ -121,6 +121,7 @@ class ImageOutput : public Node, public FrameOutput {
         translucent_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
     for (Node* node : setup.inputList("night")) night_.push_back(node->layer());
+    for (Node* node : setup.inputList("normal")) normal_.push_back(node->layer());
     checkSun(setup);
     geometry_->requestSamples(settings_.samples);
     translucent_.requestSamples(settings_.samples);
@@ -131,6 +132,7 @@ class ImageOutput : public Node, public FrameOutput {
     std::string layersGlsl;
     for (const Layer* layer : surface_) layersGlsl += layer->glslOnce();
     for (const Layer* layer : night_) layersGlsl += layer->glslOnce();
+    for (const Layer* layer : normal_) layersGlsl += layer->glslOnce();
     program_ = ShaderProgram(
         {{GL_VERTEX_SHADER, "output-image/outline.vert", gpu.shaders->expand("output-image/outline.vert")},
          {GL_FRAGMENT_SHADER, "output-image/composite.frag",
@@ -141,7 +143,8 @@ class ImageOutput : public Node, public FrameOutput {
                                {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
                                {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
                                {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulation(surface_)},
-                               {"STRATA_NIGHT_LAYERS_ACCUMULATE", accumulation(night_)}})}});
+                               {"STRATA_NIGHT_LAYERS_ACCUMULATE", accumulation(night_)},
+                               {"STRATA_NORMAL_LAYERS_ACCUMULATE", accumulation(normal_)}})}});
     background_ =
         ShaderProgram({{GL_VERTEX_SHADER, "strata/fullscreen.vert", gpu.shaders->expand("strata/fullscreen.vert")},
                        {GL_FRAGMENT_SHADER, "output-image/background.frag",
@@ -178,6 +181,7 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (const Layer* layer : surface_) layer->bind(program_, units);
     for (const Layer* layer : night_) layer->bind(program_, units);
+    for (const Layer* layer : normal_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);
     fan_->draw(outline.fan);
   }
@@ -236,7 +240,7 @@ class ImageOutput : public Node, public FrameOutput {
     std::string accumulate;
     for (const Layer* layer : layers)
       accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
-                    (layer->kind() == LayerKind::Color ? "rgb" : "rrr") + " * v.a, v.a); }\n";
+                    (layer->kind() == LayerKind::Luminance ? "rrr" : "rgb") + " * v.a, v.a); }\n";
     return accumulate;
   }
 
@@ -273,6 +277,7 @@ class ImageOutput : public Node, public FrameOutput {
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
   std::vector<const Layer*> night_;
+  std::vector<const Layer*> normal_;
   bool sunKnown_ = false;  // whether the scene places the sun (NodeSetup::sun): shading: sun needs it
   TranslucentSurfaces translucent_;
   ShaderProgram program_;
@@ -303,6 +308,13 @@ NodeTypeDeclaration declaration() {
        .optional = true,
        .doc = "layers shown unlit where the sun has set (shading: sun), fading in through the twilight: city "
               "lights"},
+      {.name = "normal",
+       .type = PortType::Layer,
+       .kinds = {LayerKind::Normal},
+       .list = true,
+       .optional = true,
+       .doc = "normal maps turning the surface's shading normal, blended by coverage where they overlap: relief "
+              "finer than the geometry's heights"},
       {.name = "translucent",
        .type = PortType::Geometry,
        .list = true,

@@ -141,7 +141,9 @@ void checkNodata(GDALRasterBand& band, const SourceLocation& where) {
 
 }  // namespace
 
-PageFormat pageFormatOf(LayerKind kind) { return kind == LayerKind::Color ? PageFormat::Colour : PageFormat::Values; }
+PageFormat pageFormatOf(LayerKind kind) {
+  return kind == LayerKind::Color || kind == LayerKind::Normal ? PageFormat::Colour : PageFormat::Values;
+}
 
 void checkRaster(GDALDataset& dataset, LayerKind kind, const SourceLocation& where) {
   if (dataset.GetRasterCount() < 1 || dataset.GetRasterXSize() < 1 || dataset.GetRasterYSize() < 1)

@@ -14,6 +14,7 @@
 #include <strata/plugin/plugin.hpp>
 #include <strata/plugin/plugin_registry.hpp>
 
+#include "band_choice.hpp"
 #include "body_of_the_crs.hpp"
 #include "colour_encoding.hpp"
 #include "gdal_page_source.hpp"
@@ -43,11 +44,16 @@ class GdalSource : public Node {
 
   void open() override {
     const SourceLocation where = whereOf(&GdalSettings::path);
-    std::unique_ptr<GDALDataset> dataset = openDataset(where);
-    checkRaster(*dataset, settings_.kind, where);
+    std::unique_ptr<GDALDataset> file = openDataset(where);
+    checkRaster(*file, settings_.kind, where);
+    ChosenBand chosen = chooseBand(std::move(file), {settings_.kind, settings_.band, whereOf(&GdalSettings::kind),
+                                                     whereOf(&GdalSettings::band), settings_.greenSouth});
+    std::unique_ptr<GDALDataset> dataset = std::move(chosen.dataset);
+    if (chosen.file) memoryFile_ = std::move(chosen.file);
     reportAnotherBody(*dataset, settings_.projection, body_, where);
     std::optional<HealpixPyramidFile> healpix = healpixPyramidOf(*dataset, plugins_, where);
-    if (settings_.kind != LayerKind::Color) countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
+    if (pageFormatOf(settings_.kind) == PageFormat::Values)
+      countValues(*dataset, healpix ? healpix->ranges.get() : nullptr);
     if (settings_.kind == LayerKind::Height) refuseHeightsNoTerrainHas(where);
     if (healpix) {
       refusePlacement("a HEALPix pyramid");
@@ -64,7 +70,7 @@ class GdalSource : public Node {
                                    {settings_.projection, whereOf(&GdalSettings::projection), settings_.extent,
                                     whereOf(&GdalSettings::extent), where});
     warnWithoutOverviews(*dataset);
-    source_ = std::make_shared<GdalPageSource>(std::move(dataset), settings_.kind, encoding_, polygonMask_);
+    source_ = std::make_shared<GdalPageSource>(std::move(dataset), settings_.kind, encoding_, memoryFile_);
   }
 
   void createResources(GpuContext& gpu) override { layer_.attach(*gpu.pages, source_, georeference_); }
@@ -113,7 +119,7 @@ class GdalSource : public Node {
                   "remove `extent`");
     PolygonMask mask = rasterisePolygons(vector, {settings_.vectorLayer, whereOf(&GdalSettings::vectorLayer),
                                                   settings_.texels, !settings_.projection.empty(), where});
-    polygonMask_ = std::move(mask.file);
+    memoryFile_ = std::move(mask.file);
     return std::move(mask.raster);
   }
 
@@ -178,7 +184,9 @@ class GdalSource : public Node {
   Body body_;                               // the pipeline's, which the raster's CRS is checked against
   std::optional<ColourEncoding> encoding_;  // none: values, or colours already scene-linear
   PagedRasterLayer layer_;
-  std::shared_ptr<const MemoryFile> polygonMask_;  // where a vector file's polygons were rasterised
+  // The in-memory file the raster is read from, where it was made here: a vector file's polygons rasterised,
+  // or one band of a multi-band file (ChosenBand).
+  std::shared_ptr<const MemoryFile> memoryFile_;
   std::shared_ptr<GdalPageSource> source_;
   RasterGeoreference georeference_;
 };

@@ -11,13 +11,25 @@ const ParameterBindings<GdalSettings>& gdalParameters() {
                                       "the pipeline file"})
           .choice(&S::kind,
                   {.name = "kind",
-                   .doc = "what the values are: color (8/16-bit, see colorspace) or one-channel height, scalar, "
-                          "luminance, mask"},
+                   .doc = "what the values are: color (8/16-bit, see colorspace); normal, a tangent-space normal "
+                          "map (red east, green north, blue up, 0 to full scale for -1 to 1); or one-channel height, "
+                          "scalar, luminance, mask"},
                   {{"color", LayerKind::Color},
+                   {"normal", LayerKind::Normal},
                    {"height", LayerKind::Height},
                    {"scalar", LayerKind::Scalar},
                    {"luminance", LayerKind::Luminance},
                    {"mask", LayerKind::Mask}})
+          .add(&S::band, {.name = "band",
+                          .minimum = 0.0,
+                          .maximum = 65535.0,
+                          .doc = "one-channel kinds: the band read, 1 the first; 0: the file's only band (a "
+                                 "multi-band file is refused)"})
+          .choice(&S::greenSouth,
+                  {.name = "normal_green",
+                   .doc = "normal maps: where the green channel points, north (up the image: OpenGL's convention) "
+                          "or south (down it: DirectX's, and Stellarium's moon_normals.png)"},
+                  {{"north", false}, {"south", true}})
           .add(&S::colorspace,
                {.name = "colorspace",
                 .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's "

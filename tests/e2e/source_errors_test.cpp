@@ -194,6 +194,43 @@ fs::path fuzzRegression(const std::string& name) {
   return fs::path(STRATA_SOURCE_DIR) / "tests/fuzz/regressions/raster_page" / name;
 }
 
+// xplanet's Earth (an RGB JPEG) given as heights: read from its first band without a word before; now refused
+// with its bands named, and read as asked with `band`.
+TEST_F(SourceErrors, AMultiBandRasterAsAOneChannelKindAsksForItsBand) {
+  const std::string earth = "/usr/share/xplanet/images/earth.jpg";
+  const CommandResult refused = renderRaster(earth);
+  EXPECT_EQ(refused.exitCode, 1) << refused.err;
+  EXPECT_TRUE(contains(refused.err, "'" + earth + "' has 3 bands (red, green, blue); a height layer reads one"))
+      << refused.err;
+  EXPECT_TRUE(contains(refused.err, "p.yaml:3:")) << "at the source's kind: " << refused.err;
+  EXPECT_TRUE(contains(refused.err, "band: 1")) << refused.err;
+  EXPECT_EQ(renderRaster(earth, "height, band: 2").exitCode, 0);
+  const CommandResult beyond = renderRaster(earth, "height, band: 4");
+  EXPECT_EQ(beyond.exitCode, 1);
+  EXPECT_TRUE(contains(beyond.err, "no band 4")) << beyond.err;
+  const CommandResult colour = renderTiny(write("colour.yaml",
+                                                "strata: 1\nnodes:\n"
+                                                "  data: {type: source.gdal, path: " +
+                                                    earth +
+                                                    ", kind: color, band: 2}\n"
+                                                    "  globe: {type: geometry.icosahedral}\n"
+                                                    "  frame: {type: output.image, geometry: "
+                                                    "globe, surface: [data]}\n"));
+  EXPECT_EQ(colour.exitCode, 1);
+  EXPECT_TRUE(contains(colour.err, "a color layer reads red, green and blue")) << colour.err;
+  writeRasterFile(file("grey.tif"), {"EPSG:4326", kNearTheEquator, 60, 30, 1, GDT_Byte});
+  const CommandResult normal = renderTiny(write("normal.yaml",
+                                                "strata: 1\nnodes:\n"
+                                                "  data: {type: source.gdal, path: " +
+                                                    file("grey.tif").string() +
+                                                    ", kind: normal}\n"
+                                                    "  globe: {type: geometry.icosahedral}\n"
+                                                    "  frame: {type: output.image, geometry: globe, "
+                                                    "normal: [data]}\n"));
+  EXPECT_EQ(normal.exitCode, 1);
+  EXPECT_TRUE(contains(normal.err, "a normal layer reads three: east, north, up")) << normal.err;
+}
+
 TEST_F(SourceErrors, ARasterWhoseCoarsestPageWouldAverageBillionsOfTexelsIsRefused) {
   expectRefused(renderRaster(fuzzRegression("slow-100000-square-without-overviews.tif")),
                 {"100000x100000", "more than 2^30 texels", "strata tile", "gdaladdo"});

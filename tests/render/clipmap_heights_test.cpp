@@ -111,7 +111,8 @@ INSTANTIATE_TEST_SUITE_P(Moves, ClipmapHeights,
 TEST(ClipmapHeightsAsPagesArrive, TheyReplaceTheHeightsOfTheirStandIns) {
   TemporaryDirectory directory;
   const auto pipeline = clipmapPipeline(
-      directory, "  bands: {type: source.gdal, path: /usr/share/xplanet/images/earth.jpg, kind: height, scale: 400}\n",
+      directory,
+      "  bands: {type: source.gdal, path: /usr/share/xplanet/images/earth.jpg, kind: height, band: 1, scale: 400}\n",
       "bands");
   const Camera camera{.lon = -70, .lat = -15, .altitude = 5e5, .tilt = 45};
   auto loading = makeEngine();

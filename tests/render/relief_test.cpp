@@ -1,5 +1,5 @@
 // composite.relief (issue 8; [Kooima 2008, §1.1], relief shading): the shade of a synthetic cone against the
-// analytic Lambert shading of its exact normal.
+// analytic Lambert shading of its exact normal; and output.image's normal maps, of the same cone's normals.
 //
 // The cone: height H (1 - r / R) up to r = R about (0, 0) on Mars, H = 20 km, R = 1 degree (59.3 km), so its
 // flank rises at H / R = 0.337 (18.6 degrees); a Float32 raster of 1024 x 1024 texels over 2.4 x 2.4 degrees
@@ -169,18 +169,53 @@ TEST_F(Relief, NormalisedTheShadeIsOverFlatGrounds) {
 // Under the sun the light is the sun's direction in each point's own east/north/up frame: a sun over (-45, 10)
 // stands west and a little north of the cone, higher over its western flank, and the shade follows it point by
 // point. The same tolerance as for a fixed light.
+// The shade of the cone's exact normal at `o` under the sun over (-45, 10), as it stands over that point: its
+// azimuth and altitude in the ground's own east/north/up frame.
+double shadeUnderTheSun(Offset o) {
+  const glm::dvec3 sun = sunDirection({-45.0, 10.0});
+  const double lon = o.east / (kRadius * std::cos(o.north / kRadius)) / kDegree, lat = o.north / kRadius / kDegree;
+  const glm::dvec3 up = unitNormal(lon * kDegree, lat * kDegree);
+  const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)), north = glm::cross(up, east);
+  const double altitude = std::asin(glm::dot(sun, up)) / kDegree;
+  const double azimuth = std::atan2(glm::dot(sun, east), glm::dot(sun, north)) / kDegree;
+  return analyticShade(o, azimuth, altitude);
+}
+
 TEST_F(Relief, UnderTheSunEachPointIsLitAsTheSunStandsOverIt) {
   std::string text = pipeline(file("cone.tif"), ", light: sun");
   text.replace(text.find("camera:"), 0, "sun: {lon: -45, lat: 10}\n");
-  const glm::dvec3 sun = sunDirection({-45.0, 10.0});
-  const Agreement agreement = compare("sun", text, [&](Offset o) {
-    const double lon = o.east / (kRadius * std::cos(o.north / kRadius)) / kDegree, lat = o.north / kRadius / kDegree;
-    const glm::dvec3 up = unitNormal(lon * kDegree, lat * kDegree);
-    const glm::dvec3 east = glm::normalize(glm::cross(glm::dvec3(0.0, 0.0, 1.0), up)), north = glm::cross(up, east);
-    const double altitude = std::asin(glm::dot(sun, up)) / kDegree;
-    const double azimuth = std::atan2(glm::dot(sun, east), glm::dot(sun, north)) / kDegree;
-    return srgbLevel(analyticShade(o, azimuth, altitude));
+  const Agreement agreement = compare("sun", text, [](Offset o) { return srgbLevel(shadeUnderTheSun(o)); });
+  EXPECT_GT(agreement.judged, 10000);
+  EXPECT_LE(agreement.largest, 1.0);
+}
+
+// output.image's normal maps: a tangent-space map of the cone's exact normals (16-bit, of the cone's raster's
+// size and extent) over a white surface on the bare sphere, lit by the sun with no ambient light, shades as the
+// analytic normals do. Half-float pages keep a normal's components to 0.0005, and the mip levels' averaged
+// normals, renormalised, turn by under 1e-4 rad on the judged flank: the relief's tolerance holds.
+TEST_F(Relief, ANormalMapShadesAsItsAnalyticNormals) {
+  const double texel = 2.0 * kHalfExtent / kTexels;
+  const std::array<double, 4> extent{-kHalfExtent, -kHalfExtent, kHalfExtent, kHalfExtent};
+  writeColourRaster16(file("normals.tif"), kTexels, kTexels, extent, [&](int column, int row) {
+    const Offset o = offsetOf(-kHalfExtent + (column + 0.5) * texel, kHalfExtent - (row + 0.5) * texel);
+    const double r = o.length(), slope = r < kConeRadius ? kConeHeight / kConeRadius : 0.0;
+    const glm::dvec3 n = glm::normalize(glm::dvec3(slope * o.east / r, slope * o.north / r, 1.0));
+    const auto encoded = [](double c) { return std::uint16_t(std::lround((0.5 * c + 0.5) * 65535.0)); };
+    return Rgb16{encoded(n.x), encoded(n.y), encoded(n.z)};
   });
+  writeColourRaster(file("white.tif"), 8, 8, extent, [](int, int) { return Rgb8{255, 255, 255}; });
+  const std::string text =
+      "strata: 1\nbody: {name: Mars, radius: 3396190}\nsun: {lon: -45, lat: 10}\n"
+      "camera: {lon: 0, lat: 0, altitude: 1.6e5, fov: 45}\n"
+      "nodes:\n"
+      "  white: {type: source.gdal, path: " +
+      file("white.tif").string() +
+      ", kind: color}\n  normals: {type: source.gdal, path: " + file("normals.tif").string() +
+      ", kind: normal}\n"
+      "  globe: {type: geometry.icosahedral}\n"
+      "  frame: {type: output.image, geometry: globe, surface: [white], normal: [normals], "
+      "shading: sun, ambient: 0}\n";
+  const Agreement agreement = compare("normal map", text, [](Offset o) { return srgbLevel(shadeUnderTheSun(o)); });
   EXPECT_GT(agreement.judged, 10000);
   EXPECT_LE(agreement.largest, 1.0);
 }

@@ -2,6 +2,9 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <strata/date.hpp>
 #include <strata/host/page_cache.hpp>
 #include <strata/host/pipeline.hpp>
@@ -10,13 +13,20 @@ namespace strata::viewer {
 namespace {
 
 constexpr double kDaysEachWay = 366.0;  // a year either side: a seasonal series' whole cycle
+constexpr double kHoursInADay = 24.0;
 
+// The date a year either side of the pipeline's, and the time of day on its own slider: a day is too small a
+// part of two years for one slider to set hours by, and the hours move the Earth's sun.
 void drawDate(Engine& engine) {
   const std::optional<DayNumber>& given = engine.pipeline().date;
   std::optional<DayNumber>& date = engine.date();
   if (!given || !date) return;
   const double least = *given - kDaysEachWay, most = *given + kDaysEachWay;
   ImGui::SliderScalar("date", ImGuiDataType_Double, &*date, &least, &most, formatIsoDate(*date).c_str());
+  const double day = std::floor(*date), midnight = 0.0;
+  double hours = (*date - day) * kHoursInADay;
+  if (ImGui::SliderScalar("time (UTC)", ImGuiDataType_Double, &hours, &midnight, &kHoursInADay, "%.2f h"))
+    *date = std::clamp(day + hours / kHoursInADay, least, most);
 }
 
 void drawStatistics(const Engine& engine) {
