@@ -65,7 +65,7 @@ std::string ReliefLayer::tint() const {
 // unshaded where the height has none). The height and its slopes are sampled once (for procedural heights,
 // whose slopes cost four more samples, loops of noise that llvmpipe's compiler takes minutes over when
 // inlined twice more).
-std::string ReliefLayer::shaded() const {
+std::string ReliefLayer::shadingGlsl() const {
   const std::string& p = prefix_;
   const std::string shade =
       "  vec2 slopes = height.gb;\n"
@@ -131,7 +131,7 @@ std::string ReliefLayer::glsl() const {
          p + "_sunLit == 1 ? reliefLocalDirection(p, " + p + "_sun) : " + p +
          "_light;\n"
          "  vec4 height = " +
-         p + "_slopes(p);\n" + shaded() + "}\n";
+         p + "_slopes(p);\n" + shadingGlsl() + "}\n";
 }
 
 void ReliefLayer::bind(ShaderProgram& program, TextureUnits& units) const {

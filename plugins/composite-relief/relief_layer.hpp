@@ -51,6 +51,9 @@ class ReliefLayer : public Layer {
   void bind(ShaderProgram& program, TextureUnits& units) const override;
   void setPageDemand(PageDemand demand) const override;
   std::uint64_t revision() const override { return height_.revision() + (surface_ ? surface_->revision() : 0); }
+  // The shade is light: lit again by the output it would show twice. Normalised, it is relief over flat ground's
+  // own colour, which the output's light lights; the slope and the aspect are data.
+  bool shaded() const override { return lighting_.output == Output::Shade && !lighting_.normalised; }
   // New lighting for the next frame: its values are uniforms.
   void relight(Lighting lighting) { lighting_ = std::move(lighting); }
   // The planet-fixed unit vector toward the sun, for Lighting::sun, from the next frame on.
@@ -63,7 +66,7 @@ class ReliefLayer : public Layer {
   std::string value() const;
   std::string tint() const;
   void bindRamp(ShaderProgram& program) const;
-  std::string shaded() const;
+  std::string shadingGlsl() const;
 
   std::string prefix_;
   const Layer& height_;

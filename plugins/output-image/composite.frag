@@ -92,16 +92,18 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   if (!onSurface(here)) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
   SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s, here);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
-  vec4 accumulated = vec4(0.0);
+  vec4 accumulated = vec4(0.0), shaded = vec4(0.0);
   STRATA_SURFACE_LAYERS_ACCUMULATE
-  vec3 albedo = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : emptyColour;
+  float weight = accumulated.a + shaded.a;
+  vec3 albedo = weight > 0.0 ? accumulated.rgb / weight : emptyColour;
+  vec3 alreadyLit = weight > 0.0 ? shaded.rgb / weight : vec3(0.0);  // layers shaded already: not lit again
   accumulated = vec4(0.0);
   STRATA_NIGHT_LAYERS_ACCUMULATE
   vec3 night = accumulated.a > 0.0 ? accumulated.rgb / accumulated.a : vec3(0.0);
   accumulated = vec4(0.0);
   STRATA_NORMAL_LAYERS_ACCUMULATE
   vec3 normal = mappedNormal(shadingNormalOf(here, p.normal), p, accumulated);
-  vec3 light = albedo * lightOn(normal, p.normal) + night * (1.0 - daylight(p.normal));
+  vec3 light = albedo * lightOn(normal, p.normal) + alreadyLit + night * (1.0 - daylight(p.normal));
   float depth = texelFetch(depthBuffer, pixel, s).r;
   return clamp(translucentOver(pixel, s, light, depth), 0.0, 1.0);
 }

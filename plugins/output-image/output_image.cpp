@@ -130,7 +130,8 @@ class ImageOutput : public Node, public FrameOutput {
   void createResources(GpuContext& gpu) override {
     const int samples = checkedSamples();
     std::string layersGlsl;
-    for (const Layer* layer : surface_) layersGlsl += layer->glslOnce();
+    for (std::size_t i = 0; i < surface_.size(); ++i)
+      layersGlsl += surface_[i]->glslOnce() + "uniform int surfaceShaded" + std::to_string(i) + ";\n";
     for (const Layer* layer : night_) layersGlsl += layer->glslOnce();
     for (const Layer* layer : normal_) layersGlsl += layer->glslOnce();
     program_ = ShaderProgram(
@@ -142,7 +143,7 @@ class ImageOutput : public Node, public FrameOutput {
                                {"STRATA_DISPLAY_GLSL", displayGlsl_},
                                {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
                                {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
-                               {"STRATA_SURFACE_LAYERS_ACCUMULATE", accumulation(surface_)},
+                               {"STRATA_SURFACE_LAYERS_ACCUMULATE", surfaceAccumulation()},
                                {"STRATA_NIGHT_LAYERS_ACCUMULATE", accumulation(night_)},
                                {"STRATA_NORMAL_LAYERS_ACCUMULATE", accumulation(normal_)}})}});
     background_ =
@@ -179,7 +180,10 @@ class ImageOutput : public Node, public FrameOutput {
     TextureUnits units;
     units.bind(program_, "surfaceBuffer", geometry_->gbuffer().color(0).id());
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
-    for (const Layer* layer : surface_) layer->bind(program_, units);
+    for (std::size_t i = 0; i < surface_.size(); ++i) {
+      surface_[i]->bind(program_, units);
+      program_.set("surfaceShaded" + std::to_string(i), surface_[i]->shaded() ? 1 : 0);
+    }
     for (const Layer* layer : night_) layer->bind(program_, units);
     for (const Layer* layer : normal_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);
@@ -238,10 +242,24 @@ class ImageOutput : public Node, public FrameOutput {
   // [Kooima 2008, §4.1.2]: each layer's value x weight into rgb, the weight into alpha, for composite.frag.
   static std::string accumulation(const std::vector<const Layer*>& layers) {
     std::string accumulate;
-    for (const Layer* layer : layers)
-      accumulate += "{ vec4 v = " + layer->samplingFunction() + "(p); accumulated += vec4(v." +
-                    (layer->kind() == LayerKind::Luminance ? "rrr" : "rgb") + " * v.a, v.a); }\n";
+    for (const Layer* layer : layers) accumulate += "{ " + weighted(*layer) + " accumulated += c; }\n";
     return accumulate;
+  }
+
+  // The same for the surface layers, into `shaded` for those whose colours hold light already (Layer::shaded,
+  // uniform surfaceShaded<i>, as each frame finds it), which are not lit again.
+  std::string surfaceAccumulation() const {
+    std::string accumulate;
+    for (std::size_t i = 0; i < surface_.size(); ++i)
+      accumulate += "{ " + weighted(*surface_[i]) + " if (surfaceShaded" + std::to_string(i) +
+                    " == 1) shaded += c; else accumulated += c; }\n";
+    return accumulate;
+  }
+
+  // `c`, the layer's value x weight and its weight, at the sample's point `p`.
+  static std::string weighted(const Layer& layer) {
+    return "vec4 v = " + layer.samplingFunction() + "(p); vec4 c = vec4(v." +
+           (layer.kind() == LayerKind::Luminance ? "rrr" : "rgb") + " * v.a, v.a);";
   }
 
   // Throws strata::Error at `shading` where it asks for the sun and the scene places none, and at the node

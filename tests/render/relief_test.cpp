@@ -220,6 +220,17 @@ TEST_F(Relief, ANormalMapShadesAsItsAnalyticNormals) {
   EXPECT_LE(agreement.largest, 1.0);
 }
 
+// The shade is light already (Layer::shaded): output.image's own light (shading: lambert, from the upper left)
+// does not shade it a second time, so the frame is the analytic shade as with shading: none.
+TEST_F(Relief, TheOutputsLightDoesNotShadeTheReliefAgain) {
+  std::string text = pipeline(file("cone.tif"), "");
+  text.replace(text.find("shading: none"), 13, "shading: lambert");
+  const Agreement agreement =
+      compare("lit output", text, [](Offset o) { return srgbLevel(analyticShade(o, 315.0, 45.0)); });
+  EXPECT_GT(agreement.judged, 10000);
+  EXPECT_LE(agreement.largest, 1.0);
+}
+
 TEST_F(Relief, TheSunsLightNeedsTheScenesSun) {
   try {
     renderFrame(*engine_, directory_.write("relief.yaml", pipeline(file("cone.tif"), ", light: sun")), 16, 16);

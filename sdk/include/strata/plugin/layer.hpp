@@ -72,6 +72,10 @@ class Layer {
   // compositor's inputs changing. 0 for a layer whose values never change. Consumers that keep what they sampled
   // (geometry.clipmap's height clipmaps) sample again when it grows. Any thread, once the frame's prepare() is done.
   virtual std::uint64_t revision() const { return 0; }
+  // Whether the layer's colours hold light already, as a hillshade's do: an output composes them as they are,
+  // not lit a second time by its own light. False for the colours of the ground itself (imagery, data). It may
+  // change with the layer's live parameters; outputs ask every frame.
+  virtual bool shaded() const { return false; }
   // The capability `Capability` (strata/plugin/layer_capabilities.hpp: texels, a projection's aspect, values by
   // region, HEALPix faces) where this layer offers it, else nullptr.
   template <class Capability>
