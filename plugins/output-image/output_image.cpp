@@ -26,7 +26,7 @@
 namespace strata::image {
 namespace {
 
-// How the composed colours are lit.
+// How the composed colours are lit, in the order composite.frag's `shade` numbers them.
 enum class Shading { None, Lambert, Sun };
 
 // The node's settings as a pipeline writes them, each default's reason beside it.
@@ -75,7 +75,7 @@ const ParameterBindings<ImageSettings>& imageParameters() {
                              .minimum = 0.0,
                              .maximum = 1.0,
                              .doc = "share of light on surfaces facing away, so the night side keeps its imagery "
-                                    "readable",
+                                    "readable; under the sun (shading: sun), by day only",
                              .live = true})
           .add(&S::twilight, {.name = "twilight",
                               .minimum = 0.0,
