@@ -51,6 +51,14 @@ class SourceErrors : public StrataCommandTest {
                                 "  frame: {type: output.image, geometry: globe, surface: [laid]}\n"));
   }
 
+  // Renders the source `source` (its path and what follows it) as output.image's input `port`.
+  CommandResult renderLayer(const std::string& source, const std::string& port) const {
+    return renderTiny(write("layer.yaml", "strata: 1\nnodes:\n  data: {type: source.gdal, path: " + source +
+                                              "}\n  globe: {type: geometry.icosahedral}\n"
+                                              "  frame: {type: output.image, geometry: globe, " +
+                                              port + ": [data]}\n"));
+  }
+
   CommandResult renderRaster(const fs::path& raster, const std::string& kind = "height") const {
     return renderTiny(write("p.yaml",
                             "strata: 1\nnodes:\n"
@@ -208,25 +216,11 @@ TEST_F(SourceErrors, AMultiBandRasterAsAOneChannelKindAsksForItsBand) {
   const CommandResult beyond = renderRaster(earth, "height, band: 4");
   EXPECT_EQ(beyond.exitCode, 1);
   EXPECT_TRUE(contains(beyond.err, "no band 4")) << beyond.err;
-  const CommandResult colour = renderTiny(write("colour.yaml",
-                                                "strata: 1\nnodes:\n"
-                                                "  data: {type: source.gdal, path: " +
-                                                    earth +
-                                                    ", kind: color, band: 2}\n"
-                                                    "  globe: {type: geometry.icosahedral}\n"
-                                                    "  frame: {type: output.image, geometry: "
-                                                    "globe, surface: [data]}\n"));
+  const CommandResult colour = renderLayer(earth + ", kind: color, band: 2", "surface");
   EXPECT_EQ(colour.exitCode, 1);
   EXPECT_TRUE(contains(colour.err, "a color layer reads red, green and blue")) << colour.err;
   writeRasterFile(file("grey.tif"), {"EPSG:4326", kNearTheEquator, 60, 30, 1, GDT_Byte});
-  const CommandResult normal = renderTiny(write("normal.yaml",
-                                                "strata: 1\nnodes:\n"
-                                                "  data: {type: source.gdal, path: " +
-                                                    file("grey.tif").string() +
-                                                    ", kind: normal}\n"
-                                                    "  globe: {type: geometry.icosahedral}\n"
-                                                    "  frame: {type: output.image, geometry: globe, "
-                                                    "normal: [data]}\n"));
+  const CommandResult normal = renderLayer(file("grey.tif").string() + ", kind: normal", "normal");
   EXPECT_EQ(normal.exitCode, 1);
   EXPECT_TRUE(contains(normal.err, "a normal layer reads three: east, north, up")) << normal.err;
 }
