@@ -83,7 +83,7 @@ std::vector<BenchFrame> benchPipeline(const std::string& pipeline, const BenchOp
   Engine engine;
   engine.load(pipeline, options.overrides);
   files.refuse(pipelineInputFiles(engine.pipeline()));
-  const CameraPath path = readCameraPath(pathFile, engine.pipeline().body);
+  const CameraPath path = readCameraPath(pathFile, engine.cameraBody());
   // A tenth of the run at a time on stderr: 4800 frames take the better part of an hour on a CPU renderer.
   const auto progress = [&](int frame) {
     if ((frame + 1) % std::max(options.frames / 10, 1) == 0)

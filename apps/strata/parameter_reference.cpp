@@ -116,8 +116,8 @@ std::string scenePage(const std::vector<SceneSection>& sections) {
                      "# The scene\n\nA pipeline's own settings beside its nodes, each section optional and every key "
                      "in one too.\n";
   for (const SceneSection& section : sections) {
-    page += "\n## `" + section.name + "`\n\n" + sentence(section.doc) +
-            (section.scalar ? " (a value, not a map)" : "") + ".\n\n" + parameterTable(section.parameters);
+    page += "\n## `" + section.name + "`\n\n" + sentence(section.doc) + section.formNote() + ".\n\n" +
+            parameterTable(section.parameters);
   }
   return page;
 }

@@ -54,8 +54,7 @@ void describe(const NodeTypeDeclaration& type) {
 void describeScene() {
   std::printf("scene: the pipeline's own settings beside `nodes:`, each section and key optional\n");
   for (const SceneSection& section : sceneSections()) {
-    std::printf("\n%s%s: %s\n", section.name.c_str(), section.scalar ? " (a value, not a map)" : "",
-                section.doc.c_str());
+    std::printf("\n%s%s: %s\n", section.name.c_str(), section.formNote(), section.doc.c_str());
     describeParameters(section.parameters);
   }
 }

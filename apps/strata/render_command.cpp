@@ -96,7 +96,7 @@ void encodeFlight(const RenderOptions& options, const std::filesystem::path& ffm
 void renderFlight(Engine& engine, const RenderOptions& options, const std::filesystem::path& ffmpeg,
                   OutputFiles& files) {
   // A flight is measured over the pipeline's body, known once it loads.
-  const CameraPath path = readCameraPath(options.path, engine.pipeline().body);
+  const CameraPath path = readCameraPath(options.path, engine.cameraBody());
   const PathFrames frames = pathFrames(path, options.frames);
   const std::string pattern =
       ffmpeg.empty() ? sequencePattern(options) : videoFramePattern(files.scratchFor(options.output).path());

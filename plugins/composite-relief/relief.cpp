@@ -124,10 +124,7 @@ ReliefLayer::Ramp tintOf(const ReliefSettings& settings, const ParameterSet& par
 void checkSun(const ReliefSettings& settings, const ParameterSet& parameters, bool sunKnown) {
   if (!settings.sun) return;
   const SourceLocation& where = reliefParameters().where(parameters, &ReliefSettings::sun);
-  if (!sunKnown)
-    throw Error(where, "light: sun, but the scene does not say where the sun is",
-                "give the scene a date and time (date: 2024-03-20T12:00; the sun follows it on the Earth), or the "
-                "point the sun stands over (sun: {lon: 0, lat: 0})");
+  if (!sunKnown) throw sunUnknown(where, "light: sun");
   if (settings.multidirectional)
     throw Error(where, "light: sun has one light, the sun; mode: multidirectional has four of its own",
                 "set mode: single, or light: azimuth");

@@ -10,12 +10,9 @@ float reliefLambert(vec2 slopes, float exaggeration, vec3 light) {
 
 // `direction` (planet-fixed, unit) in the east/north/up frame of the ground at `p`: the sun as it stands
 // over that point's horizon.
-vec3 reliefLocalDirection(SurfacePoint p, vec3 direction) {
-  float lon = p.lonlat.x, lat = p.lonlat.y;
-  vec3 east = vec3(-sin(lon), cos(lon), 0.0);
-  vec3 north = vec3(-sin(lat) * cos(lon), -sin(lat) * sin(lon), cos(lat));
-  return vec3(dot(direction, east), dot(direction, north), dot(direction, p.normal));
-}
+#include "strata/local_frame.glsl"
+
+vec3 reliefLocalDirection(SurfacePoint p, vec3 direction) { return direction * eastNorthUp(p.lonlat.x, p.normal); }
 
 // The sines and cosines of the azimuths of multidirectional, oblique-weighted shading's four lights (Mark 1992,
 // USGS Open-File Report 92-422): 225, 270, 315 and 360 degrees clockwise from north.

@@ -6,6 +6,7 @@
 #include "strata/surface_point.glsl"
 #include "strata/surface_buffer.glsl"
 #include "strata/constants.glsl"
+#include "strata/local_frame.glsl"
 
 // vec4 strataDisplay(vec4): scene-linear to the display's encoding, OpenColorIO's code (docs/colour.md).
 STRATA_DISPLAY_GLSL
@@ -27,6 +28,9 @@ uniform vec3 background;      // where there is no body (linear)
 uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred buffer's lonlat is measured
 uniform vec4 referenceTrig;   // its longitude's and latitude's sines and cosines (sphereNormalFromReference)
 uniform ivec2 frameSize;      // pixels, of the frame and the deferred buffers
+// 1: the frame is laid over other bodies' (FrameState::transparentBackground): alpha is the share of the pixel's
+// samples on the body, its colour their light alone; 0: opaque, the background's samples in it.
+uniform int transparentBackground;
 
 out vec4 colour;
 
@@ -74,10 +78,7 @@ STRATA_SURFACE_LAYERS_GLSL
 vec3 mappedNormal(vec3 normal, SurfacePoint p, vec4 mapped) {
   if (mapped.a <= 0.0) return normal;
   vec3 tangent = normalize(mapped.rgb / mapped.a * 2.0 - 1.0);
-  vec3 up = normalize(normal);
-  vec3 east = vec3(-sin(p.lonlat.x), cos(p.lonlat.x), 0.0);
-  east = normalize(east - up * dot(up, east));
-  return normalize(tangent.x * east + tangent.y * cross(up, east) + tangent.z * up);
+  return normalize(eastNorthUp(p.lonlat.x, normalize(normal)) * tangent);
 }
 
 // vec3 translucentOver(ivec2 pixel, int s, vec3 colour, float depth): the translucent surfaces nearer than
@@ -143,15 +144,24 @@ int samplesLike(ivec2 pixel, int s, float reach, int done) {
 void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   const int every = (1 << kSamples) - 1;
-  vec3 sum = vec3(0.0);
-  int done = 0;
+  vec3 sum = vec3(0.0), onBody = vec3(0.0);
+  int done = 0, covered = 0;
   do {
     int s = findLSB(~done & every);
     float reach;
     vec3 light = lightAt(pixel, s, reach);
     int like = samplesLike(pixel, s, kSameSurface * reach, done);
     sum += float(bitCount(like)) * light;
+    if (onSurface(texelFetch(surfaceBuffer, pixel, s))) {
+      onBody += float(bitCount(like)) * light;
+      covered += bitCount(like);
+    }
     done |= like;
   } while (done != every);
-  colour = vec4(strataDisplay(vec4(sum / float(kSamples), 1.0)).rgb, 1.0);
+  if (transparentBackground == 0)
+    colour = vec4(strataDisplay(vec4(sum / float(kSamples), 1.0)).rgb, 1.0);
+  else if (covered == 0)
+    colour = vec4(0.0);
+  else
+    colour = vec4(strataDisplay(vec4(onBody / float(covered), 1.0)).rgb, float(covered) / float(kSamples));
 }

@@ -106,11 +106,6 @@ const ParameterBindings<ImageSettings>& imageParameters() {
 
 const glm::vec3 kBackground(0.0f);  // where there is no body: black, as space
 
-const char* const kNoSun = "shading: sun, but the scene does not say where the sun is";
-const char* const kNoSunFix =
-    "give the scene a date and time (date: 2024-03-20T12:00; the sun follows it on the Earth), or the point the "
-    "sun stands over (sun: {lon: 0, lat: 0})";
-
 class ImageOutput : public Node, public FrameOutput {
  public:
   explicit ImageOutput(const NodeSetup& setup)
@@ -162,11 +157,7 @@ class ImageOutput : public Node, public FrameOutput {
     frame_.bind();
     const double highest = std::max({geometry_->heights().highest, translucent_.highest(), 0.0});
     const BodyOutline outline = bodyOutline(frame.view, frame.body->radius + highest);
-    if (!outline.wholeFrame) {
-      background_.use();
-      background_.set("background", kBackground);
-      triangle_->draw();
-    }
+    if (!outline.wholeFrame) paintBackground(frame.transparentBackground);
     program_.use();
     program_.set("lightDirection", lightDirection(frame));
     program_.set("ambient", float(settings_.ambient));
@@ -174,6 +165,7 @@ class ImageOutput : public Node, public FrameOutput {
     program_.set("twilightSine", float(std::sin(glm::radians(settings_.twilight))));
     program_.set("emptyColour", glm::vec3(0.18f));  // mid grey in linear light: clearly "no data", not black
     program_.set("background", kBackground);
+    program_.set("transparentBackground", frame.transparentBackground ? 1 : 0);
     program_.set("referenceLonlat", glm::vec2(frame.view.reference));
     program_.set("referenceTrig", sinesAndCosines(frame.view.reference));
     program_.set("frameSize", glm::ivec2(frame.view.width, frame.view.height));
@@ -193,7 +185,7 @@ class ImageOutput : public Node, public FrameOutput {
   void update(const ParameterSet& parameters) override {
     const ImageSettings settings = imageParameters().read(parameters);
     if (settings.shading == Shading::Sun && !sunKnown_)
-      throw Error(imageParameters().where(parameters, &ImageSettings::shading), kNoSun, kNoSunFix);
+      throw sunUnknown(imageParameters().where(parameters, &ImageSettings::shading), "shading: sun");
     settings_ = settings;
   }
 
@@ -205,6 +197,18 @@ class ImageOutput : public Node, public FrameOutput {
   }
 
  private:
+  // Around the body's outline: space, or nothing where the frame is laid over other bodies'.
+  void paintBackground(bool transparent) {
+    if (transparent) {
+      glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+      glClear(GL_COLOR_BUFFER_BIT);
+      return;
+    }
+    background_.use();
+    background_.set("background", kBackground);
+    triangle_->draw();
+  }
+
   // The frame leaves scene-linear light through OpenColorIO's display and view (docs/colour.md): the
   // pipeline's `colour: {config}`, else the config $OCIO names, else Strata's own, whose default is the sRGB
   // display's Standard view.
@@ -267,7 +271,7 @@ class ImageOutput : public Node, public FrameOutput {
   void checkSun(const NodeSetup& setup) {
     sunKnown_ = setup.sun.has_value();
     const SourceLocation shadingWhere = imageParameters().where(setup.parameters, &ImageSettings::shading);
-    if (settings_.shading == Shading::Sun && !sunKnown_) throw Error(shadingWhere, kNoSun, kNoSunFix);
+    if (settings_.shading == Shading::Sun && !sunKnown_) throw sunUnknown(shadingWhere, "shading: sun");
     if (!night_.empty() && settings_.shading != Shading::Sun)
       throw Error(shadingWhere, "night layers are given, but only the sun's shading has a night to show them in",
                   "set shading: sun, or leave out the night input");

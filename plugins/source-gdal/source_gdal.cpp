@@ -21,6 +21,7 @@
 #include "georeferencing.hpp"
 #include "healpix_page_source.hpp"
 #include "healpix_pyramid_file.hpp"
+#include "object_space_normals.hpp"
 #include "polygon_mask.hpp"
 #include "quiet_gdal_errors.hpp"
 #include "raster_reading.hpp"
@@ -38,8 +39,14 @@ class GdalSource : public Node {
         plugins_(*setup.plugins),
         body_(*setup.body),
         encoding_(colourEncodingOf(setup, settings_)),
-        layer_(setup.id, settings_.kind) {
+        layer_(setup.id, settings_.kind),
+        objectSpaceNormals_(layer_, setup.id) {
     layer_.setValueTransform(settings_.scale, settings_.offset);
+    if (settings_.objectSpace && settings_.greenSouth)
+      throw Error(whereOf(&GdalSettings::greenSouth),
+                  "normal_green: south is a tangent-space map's convention; an object-space map's green is the "
+                  "planet-fixed y axis",
+                  "leave out normal_green, or set normal_space: tangent");
   }
 
   void open() override {
@@ -79,7 +86,10 @@ class GdalSource : public Node {
   // anywhere on the body (ProjectedRasterLayer::setReference).
   void prepare(const FrameState& frame) override { layer_.setReference(frame.view.reference); }
 
-  Layer* layer() override { return &layer_; }
+  Layer* layer() override {
+    if (settings_.kind == LayerKind::Normal && settings_.objectSpace) return &objectSpaceNormals_;
+    return &layer_;
+  }
 
  private:
   // Where the pipeline gives the setting held in `member` (the node's location for a default).
@@ -184,6 +194,7 @@ class GdalSource : public Node {
   Body body_;                               // the pipeline's, which the raster's CRS is checked against
   std::optional<ColourEncoding> encoding_;  // none: values, or colours already scene-linear
   PagedRasterLayer layer_;
+  ObjectSpaceNormals objectSpaceNormals_;  // layer_ seen in tangent space, where normal_space: object
   // The in-memory file the raster is read from, where it was made here: a vector file's polygons rasterised,
   // or one band of a multi-band file (ChosenBand).
   std::shared_ptr<const MemoryFile> memoryFile_;

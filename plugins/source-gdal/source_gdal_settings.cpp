@@ -11,9 +11,8 @@ const ParameterBindings<GdalSettings>& gdalParameters() {
                                       "the pipeline file"})
           .choice(&S::kind,
                   {.name = "kind",
-                   .doc = "what the values are: color (8/16-bit, see colorspace); normal, a tangent-space normal "
-                          "map (red east, green north, blue up, 0 to full scale for -1 to 1); or one-channel height, "
-                          "scalar, luminance, mask"},
+                   .doc = "what the values are: color (8/16-bit, see colorspace); normal, a normal map (0 to full "
+                          "scale for -1 to 1, see normal_space); or one-channel height, scalar, luminance, mask"},
                   {{"color", LayerKind::Color},
                    {"normal", LayerKind::Normal},
                    {"height", LayerKind::Height},
@@ -30,6 +29,11 @@ const ParameterBindings<GdalSettings>& gdalParameters() {
                    .doc = "normal maps: where the green channel points, north (up the image: OpenGL's convention) "
                           "or south (down it: DirectX's, and Stellarium's moon_normals.png)"},
                   {{"north", false}, {"south", true}})
+          .choice(&S::objectSpace,
+                  {.name = "normal_space",
+                   .doc = "normal maps: tangent, each normal in the ground's east/north/up frame; object, in the "
+                          "body's planet-fixed axes (red toward longitude 0 on the equator, blue north)"},
+                  {{"tangent", false}, {"object", true}})
           .add(&S::colorspace,
                {.name = "colorspace",
                 .doc = "color: the colour space the raster's values are encoded in, one of the pipeline's "

@@ -14,6 +14,7 @@ struct GdalSettings {
   LayerKind kind = LayerKind::Color;
   int band = 0;                     // none: a one-channel kind reads the file's only band, and is refused several
   bool greenSouth = false;          // OpenGL's convention for normal maps: green up the image, north
+  bool objectSpace = false;         // most normal maps (Stellarium's, games', baked ones) are tangent-space
   std::string colorspace = "srgb";  // 8-bit imagery (cameras, the web, map tiles) is almost always sRGB-encoded
   double scale = 1.0;
   double offset = 0.0;

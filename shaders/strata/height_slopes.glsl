@@ -5,10 +5,11 @@
 // The point `step` (rad of longitude, latitude) from `p`, with the same footprint. Its normal is turned
 // from p's along the local east and north rather than rebuilt from lonlat, which float resolves to about a
 // metre on Earth.
+#include "strata/local_frame.glsl"
+
 SurfacePoint slopeNeighbour(SurfacePoint p, vec2 step) {
-  vec3 east = vec3(-sin(p.lonlat.x), cos(p.lonlat.x), 0.0);
-  vec3 north = cross(p.normal, east);
-  p.normal = normalize(p.normal + east * (step.x * cos(p.lonlat.y)) + north * step.y);
+  mat3 local = eastNorthUp(p.lonlat.x, p.normal);
+  p.normal = normalize(p.normal + local[0] * (step.x * cos(p.lonlat.y)) + local[1] * step.y);
   p.lonlat += step;
   p.fromReference += step;
   return p;

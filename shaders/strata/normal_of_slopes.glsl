@@ -1,8 +1,9 @@
 // The displaced surface's normal at height `h` from its slopes east and north (rise per rad along the ground), at
 // `lonlat` where the sphere's normal is `normal`. The including program declares `float radius` (m, the body's).
+#include "strata/local_frame.glsl"
+
 vec3 normalOfSlopes(float h, vec2 lonlat, vec3 normal, vec2 slopes) {
-  vec3 east = vec3(-sin(lonlat.x), cos(lonlat.x), 0.0);
-  vec3 north = cross(normal, east);
+  mat3 local = eastNorthUp(lonlat.x, normal);
   slopes /= radius + h;
-  return normalize(normal - slopes.x * east - slopes.y * north);
+  return normalize(normal - slopes.x * local[0] - slopes.y * local[1]);
 }

@@ -223,6 +223,10 @@ TEST_F(SourceErrors, AMultiBandRasterAsAOneChannelKindAsksForItsBand) {
   const CommandResult normal = renderLayer(file("grey.tif").string() + ", kind: normal", "normal");
   EXPECT_EQ(normal.exitCode, 1);
   EXPECT_TRUE(contains(normal.err, "a normal layer reads three: east, north, up")) << normal.err;
+  const CommandResult objectSouth =
+      renderLayer(earth + ", kind: normal, normal_space: object, normal_green: south", "normal");
+  EXPECT_EQ(objectSouth.exitCode, 1);
+  EXPECT_TRUE(contains(objectSouth.err, "normal_green: south is a tangent-space map's convention")) << objectSouth.err;
 }
 
 TEST_F(SourceErrors, ARasterWhoseCoarsestPageWouldAverageBillionsOfTexelsIsRefused) {

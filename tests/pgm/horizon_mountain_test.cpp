@@ -91,7 +91,7 @@ class PgmHorizonMountain : public ::testing::Test {
     return top;
   }
 
-  static constexpr Camera kCamera{
+  static inline const Camera kCamera{
       .lon = 0.0, .lat = 0.0, .altitude = 1000.0, .heading = 90.0, .tilt = 89.0, .fov = 30.0};
   TemporaryDirectory directory_;
   std::unique_ptr<Engine> engine_ = makeEngine();

@@ -46,7 +46,7 @@ namespace {
 
 constexpr double kRadius = 6371000.0;  // m: Earth's, as the pipelines say
 // 12000 km above 20N 10E: the whole disc, most of its cells seen nearly head-on.
-constexpr Camera kGlobeCamera{.lon = 10, .lat = 20, .altitude = 1.2e7, .fov = 45};
+const Camera kGlobeCamera{.lon = 10, .lat = 20, .altitude = 1.2e7, .fov = 45};
 
 double linearToSrgb(double linear) {
   return linear <= 0.0031308 ? linear * 12.92 : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
@@ -185,7 +185,7 @@ Image renderStripes(TemporaryDirectory& directory, const Camera& camera) {
 
 TEST(LayerColourSpace, FilteringMixesLinearLight) {
   TemporaryDirectory directory;
-  constexpr Camera camera{.lon = 0, .lat = 0, .altitude = 100000, .fov = 45};
+  const Camera camera{.lon = 0, .lat = 0, .altitude = 100000, .fov = 45};
   const Image image = renderStripes(directory, camera);
   const View view = makeView(Body{"Earth", kRadius}, camera, image.width, image.height);
   double worst = 0.0;

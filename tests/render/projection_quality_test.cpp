@@ -185,7 +185,7 @@ TEST(ProjectionQualityHeights, DisplaceTheGeometryAsWellAsTheBestObservation) {
   for (const std::string method : {"isotropy", "latitude"})
     observed += "  " + method +
                 ": {type: composite.projection_quality, layers: [global, north, south], method: " + method + "}\n";
-  for (const Camera camera : {Camera{.lon = 0, .lat = 88, .altitude = 1.5e6}}) {
+  for (const Camera& camera : {Camera{.lon = 0, .lat = 88, .altitude = 1.5e6}}) {
     const auto render = [&](const std::string& nodes, const std::string& relief) {
       return renderFrame(*engine, directory.write("heights.yaml", pipeline(nodes, relief, camera)), kSize, kSize);
     };

@@ -119,7 +119,7 @@ TEST_F(SceneTest, FieldOfViewKeepsWithinWhatFloatDraws) {
 TEST_F(SceneTest, UnknownCameraKeySuggestsTheNearest) {
   const Error error = parseError(withSection("camera: {altitude: 5000, tlit: 30}"));
   EXPECT_EQ(error.problem(), "unknown key 'tlit' in camera; did you mean 'tilt'?");
-  EXPECT_EQ(error.fix(), "the keys of camera are 'lon', 'lat', 'altitude', 'heading', 'tilt', 'fov'");
+  EXPECT_EQ(error.fix(), "the keys of camera are 'lon', 'lat', 'altitude', 'heading', 'tilt', 'fov', 'body'");
   EXPECT_EQ(error.where().line, 2);
   EXPECT_EQ(error.where().column, 26);
 }

@@ -25,12 +25,16 @@ std::string isoDates(const std::vector<double>& days) {
 
 constexpr const char* kCamera = "camera";
 
+// The camera's body has its selector in the scene panel, among the scene's bodies' ids.
+constexpr const char* kCameraBody = "body";
+
 // A control for each parameter `set` holds (an optional parameter left unset has no value to show).
 void addControls(std::vector<ParameterControl>& controls, const std::string& node, const std::string& type,
                  const std::string& path, const std::vector<ParameterDeclaration>& declarations,
                  const ParameterSet& set) {
   for (const ParameterDeclaration& parameter : declarations)
-    if (set.has(parameter.name)) controls.push_back({node, type, path, &parameter, set.value(parameter.name)});
+    if (set.has(parameter.name) && !(path == kCamera && parameter.name == kCameraBody))
+      controls.push_back({node, type, path, &parameter, set.value(parameter.name)});
 }
 
 // The sections that are maps; the date has its slider in the scene panel.

@@ -29,6 +29,18 @@ void drawDate(Engine& engine) {
     *date = std::clamp(day + hours / kHoursInADay, least, most);
 }
 
+// In a scene of several bodies: the body the camera is placed over, framed as the one before it was.
+void drawCameraBody(Engine& engine) {
+  const std::vector<SceneBody>& bodies = engine.pipeline().bodies;
+  if (bodies.empty()) return;
+  Camera& camera = engine.camera();
+  if (!ImGui::BeginCombo("camera over", camera.body.c_str())) return;
+  for (const SceneBody& body : bodies)
+    if (ImGui::Selectable(body.id.c_str(), body.id == camera.body) && body.id != camera.body)
+      camera = cameraOverBody(camera, engine.cameraBody(), body.pipeline.body, body.id);
+  ImGui::EndCombo();
+}
+
 void drawStatistics(const Engine& engine) {
   const FrameStatistics& frame = engine.statistics();
   const GeometryStatistics geometry = engine.geometryStatistics();
@@ -47,12 +59,20 @@ void drawStatistics(const Engine& engine) {
 
 }  // namespace
 
+Camera cameraOverBody(const Camera& camera, const Body& from, const Body& to, const std::string& id) {
+  Camera over = camera;
+  over.body = id;
+  over.altitude = (camera.altitude + from.radius) / from.radius * to.radius - to.radius;
+  return over;
+}
+
 void drawScenePanel(Engine& engine) {
   // Out of the way at first, folded at the top left: the frame is what a viewer opens to see.
   ImGui::SetNextWindowPos(ImVec2(0.0f, 24.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene");
   drawDate(engine);
+  drawCameraBody(engine);
   drawStatistics(engine);
   ImGui::End();
 }

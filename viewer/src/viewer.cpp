@@ -18,7 +18,7 @@ Viewer::Viewer(GlfwWindow& window, Engine& engine)
 
 // The controls are made per event: a change in the panel may load the pipeline again, and with it the body.
 void Viewer::navigate() {
-  const auto controls = [this] { return OrbitControls(engine_.pipeline().body, engine_.camera()); };
+  const auto controls = [this] { return OrbitControls(engine_.cameraBody(), engine_.camera()); };
   window_.setPointerInput({[this, controls](double dx, double dy, int button) {
                              if (!overlay_.wantsPointer()) controls().drag(dx, dy, button, height_);
                            },

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <set>
@@ -16,9 +17,21 @@
 #include "host_gl_state.hpp"
 #include "live_parameter.hpp"
 #include "node_graph.hpp"
+#include "pipeline/scene_placement.hpp"
+#include "scene_frame.hpp"
 #include "worker_pool.hpp"
 
 namespace strata {
+
+// One body's nodes and what feeds them: a pipeline of one body has one, a scene of several bodies one per body.
+struct Engine::BodyGraph {
+  const Pipeline* pipeline = nullptr;  // the body's own: the engine's pipeline, or one of its scene's bodies'
+  const SceneBody* placed = nullptr;   // its entry in the scene; nullptr in a pipeline of one body
+  std::unique_ptr<PageCache> pages;
+  std::unique_ptr<NodeGraph> graph;      // declared after the cache its layers attach to: destroyed first
+  HeightRange terrain;                   // the graph's geometries' heights, settled when their nodes opened
+  std::set<std::string> sourcesAdvised;  // the files whose page failures have been given the fix
+};
 
 struct Engine::Impl {
   explicit Impl(const EngineOptions& options)
@@ -30,16 +43,25 @@ struct Engine::Impl {
   std::unique_ptr<Pipeline> pipeline;
   std::optional<PipelineBuilder> builder;  // the pipeline's when it was built in code; none: read from its file
   std::vector<std::string> overrides;      // the pipeline's, as load() and set() were given them
-  std::unique_ptr<PageCache> pages;
-  std::unique_ptr<NodeGraph> graph;  // declared after what it points into: destroyed first
-  HeightRange terrain;               // the graph's geometries' heights, settled when their nodes opened
+  std::vector<BodyGraph> bodies;           // declared after the pipeline they point into: destroyed first
+  std::unique_ptr<SceneFrame> sceneFrame;  // a scene of several bodies' frame, made with its first
   Camera camera;
   // The camera of the last frame and when it began, which the view ahead is extrapolated from.
   std::optional<std::pair<Camera, std::chrono::steady_clock::time_point>> lastCamera;
   std::optional<double> framesAhead;  // setLookAhead
   std::optional<DayNumber> date;
   FrameStatistics statistics;
-  std::set<std::string> sourcesAdvised;  // the files whose page failures have been given the fix
+  PageCacheStatistics cacheStatistics;  // the bodies' caches' together, as pageCacheStatistics() last summed them
+
+  // Makes the nodes of `drawn`, one body's pipeline, and the page cache that feeds them.
+  BodyGraph graphOf(const Pipeline& drawn, const SceneBody* placed) {
+    BodyGraph body{.pipeline = &drawn, .placed = placed, .pages = std::make_unique<PageCache>(drawn.cache)};
+    GpuContext gpu{&shaders, body.pages.get()};
+    body.graph = std::make_unique<NodeGraph>(drawn, registry, workers, gpu);
+    body.pages->allocate();
+    body.terrain = body.graph->terrainHeights();
+    return body;
+  }
 };
 
 namespace {
@@ -58,6 +80,22 @@ void reportPageFailure(const PageFailure& failure, std::set<std::string>& source
       sourcesAdvised.insert(failure.source).second
           ? "check that the file is complete and readable: gdalinfo -checksum '" + failure.source + "'"
           : "");
+}
+
+void addStatistics(PageCacheStatistics& sum, const PageCacheStatistics& one) {
+  sum.capacity += one.capacity;
+  sum.resident += one.resident;
+  sum.pinned += one.pinned;
+  sum.wanted += one.wanted;
+  sum.ahead += one.ahead;
+  sum.missing += one.missing;
+  sum.loading += one.loading;
+  sum.uploaded += one.uploaded;
+  sum.evicted += one.evicted;
+  sum.failed += one.failed;
+  sum.gpuBytes += one.gpuBytes;
+  sum.stagingBytes += one.stagingBytes;
+  sum.reservedBytes += one.reservedBytes;
 }
 
 NodeDescription* findNode(Pipeline& pipeline, const std::string& id) {
@@ -87,26 +125,21 @@ void Engine::load(const PipelineBuilder& pipeline, const std::vector<std::string
   impl_->builder = pipeline;
 }
 
-// Makes the pipeline's nodes and their resources, then puts them in place of the loaded ones: whatever
-// throws leaves the engine as it was.
+// Makes the pipeline's nodes and their resources, a graph per body, then puts them in place of the loaded
+// ones: whatever throws leaves the engine as it was.
 void Engine::install(Pipeline loaded, const std::vector<std::string>& overrides) {
   auto pipeline = std::make_unique<Pipeline>(std::move(loaded));
   impl_->shaders.addPluginSources(impl_->registry);
-  auto pages = std::make_unique<PageCache>(pipeline->cache);
-  GpuContext gpu{&impl_->shaders, pages.get()};
-  auto graph = std::make_unique<NodeGraph>(*pipeline, impl_->registry, impl_->workers, gpu);
-  pages->allocate();
-  impl_->graph.reset();  // before the cache its layers attached to
-  impl_->pages = std::move(pages);
-  impl_->graph = std::move(graph);
-  impl_->terrain = impl_->graph->terrainHeights();
+  std::vector<BodyGraph> bodies;
+  if (pipeline->bodies.empty()) bodies.push_back(impl_->graphOf(*pipeline, nullptr));
+  for (const SceneBody& body : pipeline->bodies) bodies.push_back(impl_->graphOf(body.pipeline, &body));
+  impl_->bodies = std::move(bodies);
   impl_->pipeline = std::move(pipeline);
   impl_->lastCamera.reset();
   impl_->camera = impl_->pipeline->camera;
   impl_->date = impl_->pipeline->date;
   impl_->overrides = overrides;
   impl_->statistics = {};
-  impl_->sourcesAdvised.clear();
 }
 
 // The loaded pipeline read again from where it came from, its file or its builder, with `overrides`.
@@ -118,7 +151,7 @@ Pipeline Engine::read(const std::vector<std::string>& overrides) const {
 bool Engine::set(const std::string& override) {
   if (!impl_->pipeline) throw std::logic_error("Engine::set() before a pipeline was loaded");
   if (const std::optional<LiveChange> change = liveChange(override, *impl_->pipeline, impl_->registry)) {
-    impl_->graph->update(change->node, change->parameters);
+    impl_->bodies.front().graph->update(change->node, change->parameters);
     findNode(*impl_->pipeline, change->node)->parameters = change->parameters;
     impl_->overrides.push_back(override);
     return true;
@@ -145,7 +178,7 @@ void Engine::reloadWith(Pipeline changed, const std::vector<std::string>& overri
   if (keepDate) impl_->date = date;
 }
 
-bool Engine::loaded() const { return impl_->graph != nullptr; }
+bool Engine::loaded() const { return !impl_->bodies.empty(); }
 
 const Pipeline& Engine::pipeline() const {
   if (!impl_->pipeline) throw std::logic_error("Engine::pipeline() before a pipeline was loaded");
@@ -154,9 +187,20 @@ const Pipeline& Engine::pipeline() const {
 
 Camera& Engine::camera() { return impl_->camera; }
 
+const Engine::BodyGraph& Engine::cameraGraph() const {
+  if (impl_->bodies.empty()) throw std::logic_error("the engine's camera asked for before a pipeline was loaded");
+  for (const BodyGraph& body : impl_->bodies)
+    if (!body.placed || body.placed->id == impl_->camera.body) return body;
+  throw Error(SourceLocation{impl_->pipeline->name},
+              "the camera is placed over '" + impl_->camera.body + "', which is not a body of the scene",
+              "set Camera::body to the id of one of the scene's bodies");
+}
+
+const Body& Engine::cameraBody() const { return cameraGraph().pipeline->body; }
+
 View Engine::view(int width, int height) const {
-  if (!impl_->graph) throw std::logic_error("Engine::view() before a pipeline was loaded");
-  return makeView(impl_->pipeline->body, impl_->camera, width, height, impl_->terrain);
+  const BodyGraph& body = cameraGraph();
+  return makeView(body.pipeline->body, impl_->camera, width, height, body.terrain);
 }
 
 std::optional<DayNumber>& Engine::date() { return impl_->date; }
@@ -164,27 +208,88 @@ std::optional<DayNumber>& Engine::date() { return impl_->date; }
 const FrameOutput& Engine::render(int width, int height) { return renderFrame(width, height, false); }
 
 const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
-  if (!impl_->graph) throw std::logic_error("Engine::render() before a pipeline was loaded");
-  const Pipeline& pipeline = *impl_->pipeline;
-  FrameState frame{.body = &pipeline.body,
-                   .view = view(width, height),
-                   .index = impl_->statistics.frame,
-                   .date = impl_->date,
-                   .sun = sceneSun(pipeline.body, impl_->date, pipeline.sun),
-                   .still = still,
-                   .ahead = viewAhead(width, height, still)};
-  auto start = std::chrono::steady_clock::now();
-  impl_->graph->prepare(frame, impl_->workers);
-  impl_->statistics.prepareMs = millisecondsSince(start);
-  start = std::chrono::steady_clock::now();
-  const HostGlState hostState;  // put back when the frame is done, or a node throws
-  impl_->pages->update(*frame.body, frame.view, impl_->terrain, frame.index, frame.ahead);
-  for (const PageFailure& failure : impl_->pages->takeFailures()) reportPageFailure(failure, impl_->sourcesAdvised);
+  const View seen = view(width, height);
+  const std::optional<View> ahead = viewAhead(width, height, still);
+  impl_->statistics.prepareMs = impl_->statistics.renderMs = 0.0;
+  const HostGlState hostState;                   // put back when the frame is done, or a node throws
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);  // reversed depth needs [0, 1] window depth (camera.hpp)
-  impl_->graph->render(frame);
-  impl_->statistics.renderMs = millisecondsSince(start);
+  const FrameOutput& output = impl_->pipeline->bodies.empty() ? renderBody(impl_->bodies.front(), seen, ahead, still)
+                                                              : renderScene(seen, ahead, still);
   ++impl_->statistics.frame;
-  return impl_->graph->output();
+  return output;
+}
+
+// What the nodes of `body` see of this frame, from `view` in the body's axes.
+FrameState Engine::frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead,
+                           bool still) const {
+  return {.body = &body.pipeline->body,
+          .view = view,
+          .index = impl_->statistics.frame,
+          .date = impl_->date,
+          .sun = sunOf(body),
+          .still = still,
+          .ahead = ahead,
+          .transparentBackground = body.placed != nullptr};
+}
+
+// Step 1 of a frame for one body: its nodes' CPU work, on the workers.
+void Engine::prepareBody(BodyGraph& body, const FrameState& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  body.graph->prepare(frame, impl_->workers);
+  impl_->statistics.prepareMs += millisecondsSince(start);
+}
+
+// Steps 2 to 5 for one body: its pages updated, its nodes rendered.
+const FrameOutput& Engine::drawBody(BodyGraph& body, const FrameState& frame) {
+  const auto start = std::chrono::steady_clock::now();
+  body.pages->update(*frame.body, frame.view, body.terrain, frame.index, frame.ahead);
+  for (const PageFailure& failure : body.pages->takeFailures()) reportPageFailure(failure, body.sourcesAdvised);
+  body.graph->render(frame);
+  impl_->statistics.renderMs += millisecondsSince(start);
+  return body.graph->output();
+}
+
+const FrameOutput& Engine::renderBody(BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still) {
+  const FrameState frame = frameOf(body, view, ahead, still);
+  prepareBody(body, frame);
+  return drawBody(body, frame);
+}
+
+// Where the sun stands over `body` this frame: the scene's sun at the engine's date, seen from where the body
+// stands in a scene of several; else the body's own fixed sun.
+std::optional<SubsolarPoint> Engine::sunOf(const BodyGraph& body) const {
+  if (!body.placed) return sceneSun(body.pipeline->body, impl_->date, body.pipeline->sun);
+  const Pipeline& scene = *impl_->pipeline;
+  const std::optional<SubsolarPoint> sun = sceneSun(scene.bodies.front().pipeline.body, impl_->date, scene.sun);
+  if (!sun) return body.pipeline->sun;
+  return sunOver(*sun, placementOf(*body.placed, impl_->date));
+}
+
+// Every body's frame from the camera's view, each in the body's own axes with its own near plane, laid
+// farthest first over space (SceneFrame). As [Kooima 2008, §3.1] interleaves the bodies, every body's CPU
+// work comes before any body's drawing.
+const FrameOutput& Engine::renderScene(const View& seen, const std::optional<View>& ahead, bool still) {
+  const BodyPlacement from = placementOf(*cameraGraph().placed, impl_->date);
+  const glm::dvec3 eye = from.centre + from.axes * seen.eye;
+  std::vector<FrameState> frames;
+  std::vector<std::pair<double, const Framebuffer*>> drawn;  // each body's power distance and frame
+  for (BodyGraph& body : impl_->bodies) {
+    const BodyPlacement to = placementOf(*body.placed, impl_->date);
+    const auto placed = [&](const View& view) { return viewOfBody(view, from, to, body.pipeline->body, body.terrain); };
+    frames.push_back(frameOf(body, placed(seen), ahead ? std::optional<View>(placed(*ahead)) : std::nullopt, still));
+    prepareBody(body, frames.back());
+    const double reach = body.pipeline->body.radius + std::max(body.terrain.highest, 0.0);
+    const glm::dvec3 toCentre = to.centre - eye;
+    drawn.emplace_back(glm::dot(toCentre, toCentre) - reach * reach, nullptr);
+  }
+  for (std::size_t i = 0; i < impl_->bodies.size(); ++i)
+    drawn[i].second = &drawBody(impl_->bodies[i], frames[i]).frame();
+  std::sort(drawn.begin(), drawn.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<const Framebuffer*> farthestFirst;
+  for (const auto& [power, frame] : drawn) farthestFirst.push_back(frame);
+  if (!impl_->sceneFrame) impl_->sceneFrame = std::make_unique<SceneFrame>(impl_->shaders);
+  impl_->sceneFrame->compose(seen.width, seen.height, farthestFirst);
+  return *impl_->sceneFrame;
 }
 
 // The camera moved on as it moved since the last frame, for half a second at the rate frames come (or as
@@ -196,8 +301,9 @@ std::optional<View> Engine::viewAhead(int width, int height, bool still) {
   if (still || !last || last->first == impl_->camera) return std::nullopt;
   const double seconds = std::max(1e-3, std::chrono::duration<double>(now - last->second).count());
   const double frames = impl_->framesAhead.value_or(kLookAheadSeconds / seconds);
-  return makeView(impl_->pipeline->body, cameraAhead(impl_->pipeline->body, last->first, impl_->camera, frames), width,
-                  height, impl_->terrain);
+  const BodyGraph& body = cameraGraph();
+  return makeView(body.pipeline->body, cameraAhead(body.pipeline->body, last->first, impl_->camera, frames), width,
+                  height, body.terrain);
 }
 
 void Engine::setLookAhead(std::optional<double> frames) { impl_->framesAhead = frames; }
@@ -206,8 +312,13 @@ const FrameOutput& Engine::renderComplete(int width, int height) { return render
 
 const FrameOutput& Engine::renderLoaded(int width, int height, bool still) {
   const FrameOutput* frame = &renderFrame(width, height, still);
-  while (impl_->pages->loading()) {
-    impl_->pages->waitForLoads();
+  const auto loading = [this] {
+    return std::any_of(impl_->bodies.begin(), impl_->bodies.end(),
+                       [](const BodyGraph& b) { return b.pages->loading(); });
+  };
+  while (loading()) {
+    for (BodyGraph& body : impl_->bodies)
+      if (body.pages->loading()) body.pages->waitForLoads();
     frame = &renderFrame(width, height, still);
   }
   return *frame;
@@ -229,28 +340,39 @@ const FrameOutput& Engine::renderSettled(int width, int height) {
 }
 
 GeometryStatistics Engine::geometryStatistics() const {
-  if (!impl_->graph) throw std::logic_error("Engine::geometryStatistics() before a pipeline was loaded");
+  if (impl_->bodies.empty()) throw std::logic_error("Engine::geometryStatistics() before a pipeline was loaded");
   GeometryStatistics sum;
-  for (const SurfaceGeometry* geometry : impl_->graph->geometries()) {
-    const GeometryStatistics one = geometry->statistics();
-    sum.patches += one.patches;
-    sum.vertices += one.vertices;
-    sum.triangles += one.triangles;
-    sum.visibilityMs += one.visibilityMs;
-    sum.subdivisionMs += one.subdivisionMs;
-    sum.rasterisationMs += one.rasterisationMs;
-  }
+  for (const BodyGraph& body : impl_->bodies)
+    for (const SurfaceGeometry* geometry : body.graph->geometries()) {
+      const GeometryStatistics one = geometry->statistics();
+      sum.patches += one.patches;
+      sum.vertices += one.vertices;
+      sum.triangles += one.triangles;
+      sum.visibilityMs += one.visibilityMs;
+      sum.subdivisionMs += one.subdivisionMs;
+      sum.rasterisationMs += one.rasterisationMs;
+    }
   return sum;
 }
 
 std::vector<PassTime> Engine::passTimes() const {
-  if (!impl_->graph) throw std::logic_error("Engine::passTimes() before a pipeline was loaded");
-  return impl_->graph->passTimes();
+  if (impl_->bodies.empty()) throw std::logic_error("Engine::passTimes() before a pipeline was loaded");
+  std::vector<PassTime> times;
+  for (const BodyGraph& body : impl_->bodies)
+    for (PassTime pass : body.graph->passTimes()) {
+      if (body.placed) pass.node = body.placed->id + "." + pass.node;
+      times.push_back(std::move(pass));
+    }
+  return times;
 }
 
 const PageCacheStatistics& Engine::pageCacheStatistics() const {
-  if (!impl_->pages) throw std::logic_error("Engine::pageCacheStatistics() before a pipeline was loaded");
-  return impl_->pages->statistics();
+  if (impl_->bodies.empty()) throw std::logic_error("Engine::pageCacheStatistics() before a pipeline was loaded");
+  if (impl_->bodies.size() == 1) return impl_->bodies.front().pages->statistics();
+  PageCacheStatistics& sum = impl_->cacheStatistics;
+  sum = {};
+  for (const BodyGraph& body : impl_->bodies) addStatistics(sum, body.pages->statistics());
+  return sum;
 }
 
 const FrameStatistics& Engine::statistics() const { return impl_->statistics; }

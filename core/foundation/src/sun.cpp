@@ -7,16 +7,10 @@
 #include <strata/camera.hpp>
 #include <strata/named_bodies.hpp>
 
+#include "earth_rotation.hpp"
+
 namespace strata {
 namespace {
-
-// J2000.0 (2000-01-01T12:00) on the day count of strata/date.hpp, which starts at midnight.
-constexpr double kJ2000 = 0.5;
-
-double wrapDegrees(double angle) {
-  const double wrapped = std::fmod(angle + 180.0, 360.0);
-  return (wrapped < 0.0 ? wrapped + 360.0 : wrapped) - 180.0;
-}
 
 bool isEarth(const Body& body) { return findNamedBody(body.name) == findNamedBody("Earth"); }
 
@@ -32,12 +26,11 @@ SubsolarPoint earthSubsolarPoint(DayNumber utc) {
   const double meanAnomaly = glm::radians(357.528 + 0.9856003 * n);
   const double eclipticLongitude =
       glm::radians(meanLongitude + 1.915 * std::sin(meanAnomaly) + 0.020 * std::sin(2.0 * meanAnomaly));
-  const double obliquity = glm::radians(23.439 - 0.0000004 * n);
+  const double obliquity = glm::radians(eclipticObliquity(n));
   const double rightAscension =
       std::atan2(std::cos(obliquity) * std::sin(eclipticLongitude), std::cos(eclipticLongitude));
   const double declination = std::asin(std::sin(obliquity) * std::sin(eclipticLongitude));
-  const double siderealHours = 18.697374558 + 24.06570982441908 * n;
-  return {wrapDegrees(glm::degrees(rightAscension) - 15.0 * siderealHours), glm::degrees(declination)};
+  return {wrapDegrees(glm::degrees(rightAscension) - greenwichSiderealAngle(n)), glm::degrees(declination)};
 }
 
 std::optional<SubsolarPoint> sceneSun(const Body& body, const std::optional<DayNumber>& date,
@@ -45,6 +38,12 @@ std::optional<SubsolarPoint> sceneSun(const Body& body, const std::optional<DayN
   if (fixed) return fixed;
   if (date && isEarth(body)) return earthSubsolarPoint(*date);
   return std::nullopt;
+}
+
+Error sunUnknown(const SourceLocation& where, const std::string& asked) {
+  return Error(where, asked + ", but the scene does not say where the sun is",
+               "give the scene a date and time (date: 2024-03-20T12:00; the sun follows it on the Earth and the Moon "
+               "in a scene of both), or the point the sun stands over (sun: {lon: 0, lat: 0})");
 }
 
 glm::dvec3 sunDirection(const SubsolarPoint& sun) { return unitNormal(glm::radians(sun.lon), glm::radians(sun.lat)); }

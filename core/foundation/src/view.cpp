@@ -44,6 +44,13 @@ glm::mat4 reversedInfiniteProjection(double verticalFov, double aspect, double n
   return glm::mat4(p);
 }
 
+// A thousandth of the way to the nearest ground the terrain may hold keeps it in front of the near plane;
+// 1 cm is the closest anyone needs. Reversed float depth keeps its relative precision at any distance
+// whatever the near plane (ReversedDepth), so a near plane this close costs no depth resolution.
+double nearPlane(double altitude, const HeightRange& terrain) {
+  return std::max(0.01, std::abs(altitude - groundLevelNear(terrain, altitude)) * 1e-3);
+}
+
 }  // namespace
 
 Camera cameraAhead(const Body& body, const Camera& before, const Camera& now, double frames) {
@@ -77,12 +84,21 @@ View makeView(const Body& body, const Camera& camera, int width, int height, con
   view.eye = up * (body.radius + camera.altitude);
   view.reference = {lon, lat};
   view.planetToEye = glm::transpose(glm::dmat3(right, cameraUp, -forward));
-  // A thousandth of the way to the nearest ground the terrain may hold keeps it in front of the near plane;
-  // 1 cm is the closest anyone needs. Reversed float depth keeps its relative precision at any distance
-  // whatever the near plane (ReversedDepth), so a near plane this close costs no depth resolution.
-  view.near = std::max(0.01, std::abs(camera.altitude - groundLevelNear(terrain, camera.altitude)) * 1e-3);
+  view.near = nearPlane(camera.altitude, terrain);
   view.verticalFov = glm::radians(camera.fov);
   view.projection = reversedInfiniteProjection(view.verticalFov, double(width) / double(height), view.near);
+  return view;
+}
+
+View viewOfBody(const View& seen, const BodyPlacement& from, const BodyPlacement& to, const Body& body,
+                const HeightRange& terrain) {
+  View view = seen;
+  view.eye = glm::transpose(to.axes) * (from.centre + from.axes * seen.eye - to.centre);
+  view.planetToEye = seen.planetToEye * glm::transpose(from.axes) * to.axes;
+  const double distance = glm::length(view.eye);
+  view.reference = {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / distance, -1.0, 1.0))};
+  view.near = nearPlane(distance - body.radius, terrain);
+  view.projection = reversedInfiniteProjection(view.verticalFov, double(view.width) / double(view.height), view.near);
   return view;
 }
 

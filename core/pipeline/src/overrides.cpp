@@ -65,7 +65,7 @@ std::vector<std::string> keysOf(const YAML::Node& map) {
 // out may be set key by key, `--set body.radius=3389500`, as if it were written empty.
 bool isSceneSection(const std::string& key) {
   const SceneSection* section = findSceneSection(key);
-  return section && !section->scalar;
+  return section && section->form != SceneSection::Form::Value;
 }
 
 // The map that holds the last key of the override's path.

@@ -46,6 +46,10 @@ std::vector<fs::path> pipelineInputFiles(const Pipeline& pipeline) {
       files.emplace_back(*text);
       addFilesGdalReads(*text, files);
     }
+  for (const SceneBody& body : pipeline.bodies) {
+    const std::vector<fs::path> read = pipelineInputFiles(body.pipeline);
+    files.insert(files.end(), read.begin(), read.end());
+  }
   return files;
 }
 

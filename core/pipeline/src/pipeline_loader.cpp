@@ -11,10 +11,15 @@
 //     terrain: {type: geometry.icosahedral, height: relief}
 //     frame:   {type: output.image, geometry: terrain, surface: [relief]}
 //
+// or, for a scene of several bodies, `bodies:` in place of `body:` and `nodes:` (scene_bodies.hpp):
+//   bodies:
+//     earth: {pipeline: day_night.yaml}
+//     moon:  {pipeline: moon.yaml, orbit: moon}
+//
 // Steps, each of which may throw strata::Error with the file, line and column and a fix: parse the YAML;
 // apply the --set overrides to the tree (overrides.hpp); check the top-level keys; read the version,
-// body and camera; read each node on its own; check how the nodes connect and order them
-// (graph_checks.hpp). In every map a key may appear only once, and an unknown key gets a did-you-mean.
+// body and camera; read the scene's bodies' pipelines, or each node on its own; check how the nodes connect and order
+// them (graph_checks.hpp). In every map a key may appear only once, and an unknown key gets a did-you-mean.
 #include <utility>
 
 #include <strata/host/pipeline.hpp>
@@ -27,6 +32,7 @@
 #include "pipeline/value_reading.hpp"
 #include "pipeline/yaml_maps.hpp"
 #include "pipeline_document.hpp"
+#include "scene_bodies.hpp"
 
 namespace strata {
 namespace {
@@ -88,7 +94,8 @@ Pipeline readDocument(const YAML::Node& root, const SourceMap& source, const loa
   pipeline.directory = origin.directory;
   pipeline.version = parseVersion(root, source);
   loader::readScene(root, source, pipeline);
-  pipeline.nodes = parseNodes(root, {source, registry, origin.directory});
+  loader::readSceneBodies(root, source, registry, pipeline);
+  if (pipeline.bodies.empty()) pipeline.nodes = parseNodes(root, {source, registry, origin.directory});
   return pipeline;
 }
 

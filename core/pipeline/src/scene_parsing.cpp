@@ -34,7 +34,8 @@ ParameterSet readSection(const YAML::Node& root, const std::string& name, const 
   const SceneSection& section = *findSceneSection(name);
   const YAML::Node value = root[section.name];
   if (!value) return {};
-  if (!section.scalar) return parseSection(value, section.parameters, section.name, source, directory);
+  if (section.form == SceneSection::Form::Map)
+    return parseSection(value, section.parameters, section.name, source, directory);
   const ParameterDeclaration& parameter = section.parameters.front();
   ParameterSet set;
   set.set(parameter.name,

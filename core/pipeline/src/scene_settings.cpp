@@ -21,8 +21,8 @@ constexpr double kLeastRadius = 1.0, kMostRadius = 1.0e9;
 constexpr int kMebibyte = 20;  // bits to shift a MiB count into bytes
 
 SceneSection sectionOf(std::string name, std::string doc, const std::vector<ParameterDeclaration>& parameters,
-                       bool scalar = false) {
-  return {std::move(name), std::move(doc), scalar, parameters};
+                       SceneSection::Form form = SceneSection::Form::Map) {
+  return {std::move(name), std::move(doc), form, parameters};
 }
 
 }  // namespace
@@ -70,7 +70,10 @@ const ParameterBindings<Camera>& cameraParameters() {
                               .minimum = kLeastFieldOfView,
                               .maximum = kMostFieldOfView,
                               .units = "deg",
-                              .doc = "vertical field of view"});
+                              .doc = "vertical field of view"})
+          .add(&Camera::body, {.name = "body",
+                               .doc = "in a scene of several bodies (bodies:), the id of the one the eye is placed "
+                                      "over; unset: the first"});
   return bindings;
 }
 
@@ -134,18 +137,51 @@ const ParameterBindings<SubsolarPoint>& sunParameters() {
   return bindings;
 }
 
+const ParameterBindings<SceneBodySettings>& sceneBodyParameters() {
+  using S = SceneBodySettings;
+  static const auto bindings =
+      ParameterBindings<S>()
+          .required(&S::pipeline, {.name = "pipeline",
+                                   .doc = "the pipeline file that draws the body: its body and nodes; the scene's "
+                                          "camera, date and sun stand for its own"})
+          .choice(&S::orbit,
+                  {.name = "orbit",
+                   .doc = "fixed: at position, its axes the first body's; moon: the Moon about the Earth at the "
+                          "scene's date, its near side toward the Earth (strata/moon_orbit.hpp)"},
+                  {{"fixed", BodyOrbit::Fixed}, {"moon", BodyOrbit::Moon}})
+          .add(&S::position, {.name = "position",
+                              .units = "m",
+                              .doc = "the body's centre [x, y, z] in the first body's planet-fixed axes (orbit: "
+                                     "fixed); the first body stands at the origin",
+                              .count = 3});
+  return bindings;
+}
+
 const std::vector<SceneSection>& sceneSections() {
   static const std::vector<SceneSection> sections{
       sectionOf("body", "the planet or moon shown: a sphere", bodyParameters().declarations()),
       sectionOf("camera", "where the first frame is seen from", cameraParameters().declarations()),
       sectionOf("cache", "the GPU page cache (docs/data.md)", cacheParameters().declarations()),
       sectionOf("date", "the scene's date and time (UTC): what time series show, and the Earth's sun",
-                dateParameters().declarations(), true),
+                dateParameters().declarations(), SceneSection::Form::Value),
       sectionOf("sun", "where the sun stands overhead, fixed; unset: from the date, for the Earth",
                 sunParameters().declarations()),
       sectionOf("colour", "how colours are managed (docs/colour.md)", colourParameters().declarations()),
+      sectionOf("bodies",
+                "several bodies in one scene, each drawn by its own pipeline, in place of `body` and `nodes` "
+                "(docs/pipelines.md)",
+                sceneBodyParameters().declarations(), SceneSection::Form::Entries),
   };
   return sections;
+}
+
+const char* SceneSection::formNote() const {
+  switch (form) {
+    case Form::Map: return "";
+    case Form::Value: return " (a value, not a map)";
+    case Form::Entries: return " (a map from ids to maps)";
+  }
+  return "";
 }
 
 const SceneSection* findSceneSection(const std::string& name) {

@@ -1,5 +1,6 @@
 #pragma once
 #include <algorithm>
+#include <glm/glm.hpp>
 #include <strata/export.hpp>
 #include <string>
 
@@ -12,6 +13,13 @@ namespace strata {
 struct Body {
   std::string name = "Earth";
   double radius = 6371000.0;  // m; the IUGG mean Earth radius
+};
+
+// Where a body stands in a scene of several (`bodies:`): its centre and its planet-fixed axes, both in the scene's
+// axes, which are the first body's planet-fixed ones.
+struct BodyPlacement {
+  glm::dvec3 centre{0.0};  // m
+  glm::dmat3 axes{1.0};    // columns: the body's x, y and z axes
 };
 
 // Heights above the body's radius (m) that a surface keeps within: culling and reference spheres trust

@@ -1,6 +1,7 @@
 #pragma once
 #include <glm/glm.hpp>
 #include <strata/export.hpp>
+#include <string>
 
 #include <strata/body.hpp>
 
@@ -15,6 +16,8 @@ struct Camera {
   double heading = 0.0;     // deg clockwise from north: the direction the view faces
   double tilt = 0.0;        // deg: 0 looks straight down, 90 at the horizon
   double fov = 45.0;        // deg, vertical field of view
+  // In a scene of several bodies (`bodies:`): the id of the body the eye is placed over; empty: the first.
+  std::string body;
 
   bool operator==(const Camera&) const = default;
 };
@@ -46,6 +49,12 @@ struct View {
 // surfaces keep within, which place the near plane a thousandth of the way to the ground nearest the eye
 // (groundLevelNear), so that a view 2 m above a plateau 3 km high does not clip the plateau.
 View makeView(const Body& body, const Camera& camera, int width, int height, const HeightRange& terrain = {});
+
+// The view `seen`, resolved over a body placed at `from` in a scene of several bodies (`bodies:`), as it sees the
+// body placed at `to`: the same eye and axes in that body's planet-fixed axes, measured from the point below the
+// eye on it, and the near plane fitted to its `terrain` as makeView fits it.
+View viewOfBody(const View& seen, const BodyPlacement& from, const BodyPlacement& to, const Body& body,
+                const HeightRange& terrain = {});
 
 // The camera `frames` frames on: its eye moved on in a straight line as it moved from `before` to `now`, looking as
 // `now` does [Cignoni et al. 2003, §4.4: "linear extrapolation of the camera position"]. The eye stays at least a

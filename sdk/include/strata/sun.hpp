@@ -3,6 +3,7 @@
 #include <optional>
 #include <strata/body.hpp>
 #include <strata/date.hpp>
+#include <strata/error.hpp>
 #include <strata/export.hpp>
 
 STRATA_EXPORTS_BEGIN
@@ -23,6 +24,10 @@ SubsolarPoint earthSubsolarPoint(DayNumber utc);
 // known (the Earth's); none otherwise.
 std::optional<SubsolarPoint> sceneSun(const Body& body, const std::optional<DayNumber>& date,
                                       const std::optional<SubsolarPoint>& fixed);
+
+// The refusal of a setting that asks for the sun (`asked`: "shading: sun") where the scene places none, at
+// `where`, with the fix: a date, or a fixed sun.
+Error sunUnknown(const SourceLocation& where, const std::string& asked);
 
 // The planet-fixed unit vector toward the sun from the body's centre (docs/architecture.md, "Conventions").
 glm::dvec3 sunDirection(const SubsolarPoint& sun);

@@ -70,7 +70,10 @@ class Engine {
   const Pipeline& pipeline() const;
 
   Camera& camera();  // starts as the pipeline's camera; change it between frames
-  // The view render() draws the camera from at width x height, over the loaded pipeline's terrain: for
+  // The body the camera is placed over: the pipeline's, or in a scene of several bodies (`bodies:`) the one
+  // Camera::body names. Throws strata::Error where the camera names no body of the scene.
+  const Body& cameraBody() const;
+  // The view render() draws the camera from at width x height, over the terrain of the camera's body: for
   // picking, and for comparing a frame with a reference computed from its rays.
   View view(int width, int height) const;
   // The scene's date, which time series show (composite.temporal_blend): starts as the pipeline's `date:`;
@@ -101,7 +104,15 @@ class Engine {
   const PageCacheStatistics& pageCacheStatistics() const;
 
  private:
+  struct BodyGraph;
+  const BodyGraph& cameraGraph() const;
+  std::optional<SubsolarPoint> sunOf(const BodyGraph& body) const;
   const FrameOutput& renderFrame(int width, int height, bool still);
+  FrameState frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still) const;
+  void prepareBody(BodyGraph& body, const FrameState& frame);
+  const FrameOutput& drawBody(BodyGraph& body, const FrameState& frame);
+  const FrameOutput& renderBody(BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still);
+  const FrameOutput& renderScene(const View& seen, const std::optional<View>& ahead, bool still);
   const FrameOutput& renderLoaded(int width, int height, bool still);
   std::optional<View> viewAhead(int width, int height, bool still);
   void install(Pipeline pipeline, const std::vector<std::string>& overrides);

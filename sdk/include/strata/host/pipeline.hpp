@@ -30,7 +30,10 @@ struct NodeDescription {
   std::map<std::string, std::vector<SourceLocation>> inputLocations;  // where each of those ids is written
 };
 
-// A validated pipeline: a body, a camera and an acyclic graph of nodes whose types are registered.
+struct SceneBody;
+
+// A validated pipeline: a body, a camera and an acyclic graph of nodes whose types are registered; or a scene
+// of several bodies, each drawn by a pipeline of its own (`bodies:`), seen by one camera.
 struct Pipeline {
   std::filesystem::path file;       // the file it was read from; empty when built in code (PipelineBuilder)
   std::string name;                 // what messages call it: the file's path as given, or the builder's name
@@ -43,8 +46,28 @@ struct Pipeline {
   std::optional<DayNumber> date;       // the scene's date (`date:`), which time series show; none: not given
   std::optional<SubsolarPoint> sun;    // the scene's fixed sun (`sun:`); none: from the date (sceneSun)
   std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
+  // The scene's bodies, in the order written, when it has several; empty: the one `body` and its `nodes`. A
+  // scene's own `body` is then the camera's body's (Camera::body), which hosts measure the camera over.
+  std::vector<SceneBody> bodies;
 
   const NodeDescription* find(const std::string& id) const;
+};
+
+// How a body of a scene moves.
+enum class BodyOrbit {
+  Fixed,  // at SceneBody::position, its axes the scene's
+  Moon,   // the Moon about the Earth at the scene's date (strata/moon_orbit.hpp)
+};
+
+// One body of a scene of several (`bodies:`, docs/pipelines.md).
+struct SceneBody {
+  std::string id;        // the key under `bodies:`, which Camera::body names
+  SourceLocation where;  // that key
+  // The body's own pipeline, read from its file with the entry's `set:` overrides; its date and sun are the
+  // scene's (the sun turned into the body's axes where it is placed by an orbit), its camera unused.
+  Pipeline pipeline;
+  BodyOrbit orbit = BodyOrbit::Fixed;
+  glm::dvec3 position{0.0};  // m, in the first body's planet-fixed axes (orbit: fixed)
 };
 
 // Reads, validates and orders a pipeline file. `overrides` are "PATH=VALUE" strings as given to --set
