@@ -125,8 +125,11 @@ class ImageOutput : public Node, public FrameOutput {
   void createResources(GpuContext& gpu) override {
     const int samples = checkedSamples();
     std::string layersGlsl;
-    for (std::size_t i = 0; i < surface_.size(); ++i)
-      layersGlsl += surface_[i]->glslOnce() + "uniform int surfaceShaded" + std::to_string(i) + ";\n";
+    shadedUniforms_.clear();
+    for (std::size_t i = 0; i < surface_.size(); ++i) {
+      shadedUniforms_.push_back("surfaceShaded" + std::to_string(i));
+      layersGlsl += surface_[i]->glslOnce() + "uniform int " + shadedUniforms_.back() + ";\n";
+    }
     for (const Layer* layer : night_) layersGlsl += layer->glslOnce();
     for (const Layer* layer : normal_) layersGlsl += layer->glslOnce();
     program_ = ShaderProgram(
@@ -174,7 +177,7 @@ class ImageOutput : public Node, public FrameOutput {
     units.bind(program_, "depthBuffer", geometry_->gbuffer().depth().id());
     for (std::size_t i = 0; i < surface_.size(); ++i) {
       surface_[i]->bind(program_, units);
-      program_.set("surfaceShaded" + std::to_string(i), surface_[i]->shaded() ? 1 : 0);
+      program_.set(shadedUniforms_[i], surface_[i]->shaded() ? 1 : 0);
     }
     for (const Layer* layer : night_) layer->bind(program_, units);
     for (const Layer* layer : normal_) layer->bind(program_, units);
@@ -255,7 +258,7 @@ class ImageOutput : public Node, public FrameOutput {
   std::string surfaceAccumulation() const {
     std::string accumulate;
     for (std::size_t i = 0; i < surface_.size(); ++i)
-      accumulate += "{ " + weighted(*surface_[i]) + " if (surfaceShaded" + std::to_string(i) +
+      accumulate += "{ " + weighted(*surface_[i]) + " if (" + shadedUniforms_[i] +
                     " == 1) shaded += c; else accumulated += c; }\n";
     return accumulate;
   }
@@ -298,6 +301,7 @@ class ImageOutput : public Node, public FrameOutput {
   SourceLocation samplesWhere_;  // the node's `antialiasing`, for errors about it
   std::string displayGlsl_;
   std::vector<const Layer*> surface_;
+  std::vector<std::string> shadedUniforms_;  // each surface layer's uniform saying whether it is shaded already
   std::vector<const Layer*> night_;
   std::vector<const Layer*> normal_;
   bool sunKnown_ = false;  // whether the scene places the sun (NodeSetup::sun): shading: sun needs it

@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include <strata/log.hpp>
+
 #include "pipeline/scene_placement.hpp"
 #include "pipeline_test_fixtures.hpp"
 
@@ -67,6 +69,18 @@ TEST_F(BodiesTest, AtALunarEclipseTheSunStandsOverTheMoonsNearSide) {
   EXPECT_NEAR(std::hypot(sun.lon, sun.lat), 0.0, 0.7);
 }
 
+// Bodies whose spheres meet are drawn, with a warning that their order may not hold where both show.
+TEST_F(BodiesTest, BodiesThatMeetAreWarnedOf) {
+  std::vector<LogMessage> warnings;
+  const LogSink previous = setLogSink([&warnings](const LogMessage& message) { warnings.push_back(message); });
+  parse(earthAndMoon("", "{pipeline: moon.yaml, position: [7.0e6, 0, 0]}"));
+  parse(earthAndMoon("", "{pipeline: moon.yaml, position: [9.0e6, 0, 0]}"));
+  setLogSink(previous);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].text.find("the bodies 'earth' and 'moon' meet"), std::string::npos) << warnings[0].text;
+  EXPECT_NE(warnings[0].text.find("pipeline.yaml:4"), std::string::npos) << warnings[0].text;
+}
+
 TEST_F(BodiesTest, AnOrbitNeedsTheScenesDate) {
   const Error error = parseError(earthAndMoon("", "{pipeline: moon.yaml, orbit: moon}"));
   EXPECT_NE(error.problem().find("orbit: moon"), std::string::npos) << error.problem();
@@ -111,6 +125,18 @@ TEST_F(BodiesTest, ABodysPipelineDrawsOneBody) {
   directory_.write("scene.yaml", earthAndMoon(""));
   const Error error =
       parseError("strata: 1\nbodies:\n  earth: {pipeline: earth.yaml}\n  both: {pipeline: scene.yaml}\n");
+  EXPECT_NE(error.problem().find("a scene of several bodies itself"), std::string::npos) << error.problem();
+  EXPECT_EQ(error.where().line, 4);
+}
+
+// A scene that names itself as a body is refused, not read without end.
+TEST_F(BodiesTest, ASceneThatNamesItselfIsRefused) {
+  const Error error = errorFrom([&] {
+    loadPipeline(directory_.write("self.yaml",
+                                  "strata: 1\nbodies:\n  earth: {pipeline: earth.yaml}\n  again: "
+                                  "{pipeline: self.yaml}\n"),
+                 {}, registry_);
+  });
   EXPECT_NE(error.problem().find("a scene of several bodies itself"), std::string::npos) << error.problem();
   EXPECT_EQ(error.where().line, 4);
 }

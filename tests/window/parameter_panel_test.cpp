@@ -87,13 +87,28 @@ TEST_F(ParameterPanelTest, TheScenesSettingsAreControlsToo) {
 TEST(PipelineWatcher, SaysWhenTheFileWasEdited) {
   TemporaryDirectory directory;
   const auto file = directory.write("p.yaml", kRelief);
-  viewer::PipelineWatcher watcher(file);
+  viewer::PipelineWatcher watcher(std::vector<std::filesystem::path>{file});
   EXPECT_FALSE(watcher.changed());
   std::filesystem::last_write_time(file, std::filesystem::last_write_time(file) + std::chrono::seconds(1));
   EXPECT_TRUE(watcher.changed());
   EXPECT_FALSE(watcher.changed()) << "once";
   std::filesystem::remove(file);
   EXPECT_FALSE(watcher.changed()) << "a file being rewritten is looked at again later";
+}
+
+// A scene of several bodies is loaded again when one of its bodies' files is edited.
+TEST(PipelineWatcher, WatchesTheBodiesFilesOfAScene) {
+  TemporaryDirectory directory;
+  Pipeline scene;
+  scene.file = directory.write("scene.yaml", "strata: 1\n");
+  scene.bodies.push_back({.id = "moon"});
+  scene.bodies.back().pipeline.file = directory.write("moon.yaml", kRelief);
+  viewer::PipelineWatcher watcher(scene);
+  EXPECT_FALSE(watcher.changed());
+  const auto moon = scene.bodies.back().pipeline.file;
+  std::filesystem::last_write_time(moon, std::filesystem::last_write_time(moon) + std::chrono::seconds(1));
+  EXPECT_TRUE(watcher.changed());
+  EXPECT_FALSE(watcher.changed()) << "once";
 }
 
 TEST_F(ParameterPanelTest, DrawsOverTheFrameInTheWindow) {

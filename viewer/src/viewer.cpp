@@ -12,7 +12,7 @@
 namespace strata::viewer {
 
 Viewer::Viewer(GlfwWindow& window, Engine& engine)
-    : window_(window), engine_(engine), overlay_(window), watcher_(engine.pipeline().file) {
+    : window_(window), engine_(engine), overlay_(window), watcher_(engine.pipeline()) {
   navigate();
 }
 
@@ -38,6 +38,7 @@ void Viewer::navigate() {
 void Viewer::reload() {
   try {
     engine_.reload();
+    watcher_ = PipelineWatcher(engine_.pipeline());  // a scene's bodies may be other files now
     failed_ = false;
     panel_.report({});
   } catch (const Error& error) {

@@ -1,11 +1,14 @@
 // A scene of several bodies: `bodies:`, each entry a body's own pipeline file and where the body stands.
 #include "scene_bodies.hpp"
 
+#include <glm/geometric.hpp>
+#include <strata/log.hpp>
 #include <strata/named_bodies.hpp>
 
 #include "pipeline/scene_parsing.hpp"
 #include "pipeline/scene_placement.hpp"
 #include "pipeline/suggestions.hpp"
+#include "pipeline/text_file.hpp"
 #include "pipeline/yaml_maps.hpp"
 
 namespace strata::loader {
@@ -32,11 +35,13 @@ SceneBody readBody(const YAML::Node& key, const YAML::Node& value, const SourceM
     throw source.error(key, {}, "the body '" + body.id + "' names no pipeline to draw it",
                        "add `pipeline: earth.yaml`: a pipeline file with the body and its nodes");
   const SceneBodySettings settings = sceneBodyParameters().read(parameters);
-  body.pipeline = loadPipeline(settings.pipeline, {}, registry);
-  if (!body.pipeline.bodies.empty())
+  // Looked at before it is read as a pipeline: a scene that named itself would be read without end.
+  const std::string text = readTextFile(settings.pipeline, "pipeline", "pipelines/ holds ready-made pipelines");
+  if (const YAML::Node root = parseYamlText(text, settings.pipeline.string()); root.IsMap() && root["bodies"])
     throw Error(parameters.where("pipeline"),
                 "'" + settings.pipeline.string() + "' is a scene of several bodies itself",
                 "name a pipeline that draws one body, with body: and nodes:");
+  body.pipeline = parsePipeline(text, settings.pipeline, {}, registry);
   body.orbit = settings.orbit;
   body.position = {settings.position[0], settings.position[1], settings.position[2]};
   return body;
@@ -63,6 +68,22 @@ void checkPlacements(const std::vector<SceneBody>& bodies, const YAML::Node& ent
           "orbit: moon is the Moon's orbit about the Earth, and the first body is '" + first.pipeline.body.name + "'",
           "list the Earth's pipeline first under bodies:");
   }
+}
+
+// Bodies are laid over one another by the order their spheres give (SceneFrame), which holds only while the
+// spheres stay apart: where two meet at the scene's date, say so.
+void warnOfMeetingBodies(const Pipeline& scene) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+    for (std::size_t j = i + 1; j < scene.bodies.size(); ++j) {
+      const SceneBody &a = scene.bodies[i], &b = scene.bodies[j];
+      const double apart = glm::length(placementOf(a, scene.date).centre - placementOf(b, scene.date).centre);
+      if (apart < a.pipeline.body.radius + b.pipeline.body.radius)
+        logWarning(b.where.str() + ": the bodies '" + a.id + "' and '" + b.id + "' meet (their centres lie " +
+                       formatValue(ParameterValue(apart)) +
+                       " m apart); where both show, the nearer centre's may not "
+                       "hide the other as it should",
+                   "place them farther apart than their radii together");
+    }
 }
 
 // The camera's body is one of the scene's; the scene's own body becomes that one's, which hosts measure the
@@ -113,6 +134,7 @@ void readSceneBodies(const YAML::Node& root, const SourceMap& source, const Plug
     for (const auto& entry : entries)
       scene.bodies.push_back(readBody(entry.first, entry.second, source, registry, scene));
     checkPlacements(scene.bodies, entries, source, scene);
+    warnOfMeetingBodies(scene);
     giveSceneSun(scene);
   }
   resolveCameraBody(root, source, scene);
