@@ -63,8 +63,8 @@ enum class BodyOrbit {
 struct SceneBody {
   std::string id;        // the key under `bodies:`, which Camera::body names
   SourceLocation where;  // that key
-  // The body's own pipeline, read from its file with the entry's `set:` overrides; its date and sun are the
-  // scene's (the sun turned into the body's axes where it is placed by an orbit), its camera unused.
+  // The body's own pipeline, read from its file; its date is the scene's, and its sun the scene's seen from where
+  // the body stands, in its axes (where the scene places none, the body's own); its camera is unused.
   Pipeline pipeline;
   BodyOrbit orbit = BodyOrbit::Fixed;
   glm::dvec3 position{0.0};  // m, in the first body's planet-fixed axes (orbit: fixed)

@@ -17,8 +17,8 @@ struct FrameState {
   View view;
   std::uint64_t index = 0;        // frames since the pipeline loaded
   std::optional<DayNumber> date;  // the scene's date (Engine::date()); none where the pipeline gives none
-  // Where the sun stands overhead: the pipeline's `sun:`, else the date's for the Earth (sceneSun); none
-  // where neither is known.
+  // Where the sun stands overhead: the pipeline's `sun:`, else the date's for the Earth (sceneSun), and in a
+  // scene of several bodies the scene's sun as the body sees it, in its axes; none where neither is known.
   std::optional<SubsolarPoint> sun;
   // A frame drawn to be kept (Engine::renderSettled): generators whose detail follows a moving view over
   // several frames settle it at once, as they do on a pipeline's first frame, whatever that costs.
