@@ -219,14 +219,14 @@ const FrameOutput& Engine::renderFrame(int width, int height, bool still) {
   return output;
 }
 
-// What the nodes of `body` see of this frame, from `view` in the body's axes.
-FrameState Engine::frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead,
-                           bool still) const {
+// What the nodes of `body` see of this frame, from `view` in the body's axes, with the sun over `sun`.
+FrameState Engine::frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still,
+                           const std::optional<SubsolarPoint>& sun) const {
   return {.body = &body.pipeline->body,
           .view = view,
           .index = impl_->statistics.frame,
           .date = impl_->date,
-          .sun = sunOf(body),
+          .sun = sun,
           .still = still,
           .ahead = ahead,
           .transparentBackground = body.placed != nullptr};
@@ -249,41 +249,36 @@ const FrameOutput& Engine::drawBody(BodyGraph& body, const FrameState& frame) {
   return body.graph->output();
 }
 
+// The frame of a pipeline of one body, lit by its sun.
 const FrameOutput& Engine::renderBody(BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still) {
-  const FrameState frame = frameOf(body, view, ahead, still);
+  const FrameState frame =
+      frameOf(body, view, ahead, still, sceneSun(body.pipeline->body, impl_->date, body.pipeline->sun));
   prepareBody(body, frame);
   return drawBody(body, frame);
 }
 
-// Where the sun stands over `body` this frame: the scene's sun at the engine's date, seen from where the body
-// stands in a scene of several; else the body's own fixed sun.
-std::optional<SubsolarPoint> Engine::sunOf(const BodyGraph& body) const {
-  if (!body.placed) return sceneSun(body.pipeline->body, impl_->date, body.pipeline->sun);
+// Every body's frame from the camera's view, each in the body's own axes with its own near plane and lit by
+// the scene's sun as seen from where it stands (else its own), laid farthest first over space (SceneFrame). As
+// [Kooima 2008, §3.1] interleaves the bodies, every body's CPU work comes before any body's drawing.
+const FrameOutput& Engine::renderScene(const View& seen, const std::optional<View>& ahead, bool still) {
   const Pipeline& scene = *impl_->pipeline;
   const std::optional<SubsolarPoint> sun = sceneSun(scene.bodies.front().pipeline.body, impl_->date, scene.sun);
-  if (!sun) return body.pipeline->sun;
-  return sunOver(*sun, placementOf(*body.placed, impl_->date));
-}
-
-// Every body's frame from the camera's view, each in the body's own axes with its own near plane, laid
-// farthest first over space (SceneFrame). As [Kooima 2008, §3.1] interleaves the bodies, every body's CPU
-// work comes before any body's drawing.
-const FrameOutput& Engine::renderScene(const View& seen, const std::optional<View>& ahead, bool still) {
   const BodyPlacement from = placementOf(*cameraGraph().placed, impl_->date);
   const glm::dvec3 eye = from.centre + from.axes * seen.eye;
   std::vector<FrameState> frames;
-  std::vector<std::pair<double, const Framebuffer*>> drawn;  // each body's power distance and frame
+  std::vector<double> powers;  // of the eye with respect to each body's sphere of its highest ground
   for (BodyGraph& body : impl_->bodies) {
     const BodyPlacement to = placementOf(*body.placed, impl_->date);
     const auto placed = [&](const View& view) { return viewOfBody(view, from, to, body.pipeline->body, body.terrain); };
-    frames.push_back(frameOf(body, placed(seen), ahead ? std::optional<View>(placed(*ahead)) : std::nullopt, still));
+    frames.push_back(frameOf(body, placed(seen), ahead ? std::optional<View>(placed(*ahead)) : std::nullopt, still,
+                             sun ? std::optional<SubsolarPoint>(sunOver(*sun, to)) : body.pipeline->sun));
     prepareBody(body, frames.back());
     const double reach = body.pipeline->body.radius + std::max(body.terrain.highest, 0.0);
-    const glm::dvec3 toCentre = to.centre - eye;
-    drawn.emplace_back(glm::dot(toCentre, toCentre) - reach * reach, nullptr);
+    powers.push_back(glm::dot(to.centre - eye, to.centre - eye) - reach * reach);
   }
+  std::vector<std::pair<double, const Framebuffer*>> drawn;
   for (std::size_t i = 0; i < impl_->bodies.size(); ++i)
-    drawn[i].second = &drawBody(impl_->bodies[i], frames[i]).frame();
+    drawn.emplace_back(powers[i], &drawBody(impl_->bodies[i], frames[i]).frame());
   std::sort(drawn.begin(), drawn.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<const Framebuffer*> farthestFirst;
   for (const auto& [power, frame] : drawn) farthestFirst.push_back(frame);

@@ -2,7 +2,9 @@
 #include <strata/moon_orbit.hpp>
 
 #include <cmath>
+#include <span>
 
+#include <glm/gtc/constants.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "earth_rotation.hpp"
@@ -18,33 +20,12 @@ struct Term {
   double amplitude, phase, rate;
 };
 
-double sineSeries(const Term* terms, int count, double centuries) {
+// The sum of `terms` at `centuries`; `quarter`: of cosines (each argument a quarter turn on), else of sines.
+double periodicSum(std::span<const Term> terms, double centuries, bool quarter = false) {
   double sum = 0.0;
-  for (int i = 0; i < count; ++i)
-    sum += terms[i].amplitude * std::sin(glm::radians(terms[i].phase + terms[i].rate * centuries));
+  for (const Term& term : terms)
+    sum += term.amplitude * std::sin(glm::radians(term.phase + term.rate * centuries + (quarter ? 90.0 : 0.0)));
   return sum;
-}
-
-double cosineSeries(const Term* terms, int count, double centuries) {
-  double sum = 0.0;
-  for (int i = 0; i < count; ++i)
-    sum += terms[i].amplitude * std::cos(glm::radians(terms[i].phase + terms[i].rate * centuries));
-  return sum;
-}
-
-// A direction given in the equator and equinox of the date turned into the Earth's planet-fixed axes `days`
-// after J2000.0: about the pole by the sidereal angle.
-glm::dvec3 earthFixed(const glm::dvec3& equatorial, double days) {
-  const double angle = glm::radians(greenwichSiderealAngle(days));
-  const double c = std::cos(angle), s = std::sin(angle);
-  return {c * equatorial.x + s * equatorial.y, -s * equatorial.x + c * equatorial.y, equatorial.z};
-}
-
-// Ecliptic longitude and latitude (rad) as a unit vector in the equator and equinox of the date.
-glm::dvec3 equatorialOfEcliptic(double lon, double lat, double obliquity) {
-  const double ce = std::cos(obliquity), se = std::sin(obliquity);
-  return {std::cos(lat) * std::cos(lon), ce * std::cos(lat) * std::sin(lon) - se * std::sin(lat),
-          se * std::cos(lat) * std::sin(lon) + ce * std::sin(lat)};
 }
 
 }  // namespace
@@ -61,19 +42,17 @@ MoonPosition moonPosition(DayNumber utc) {
   static constexpr Term kParallax[] = {
       {0.0518, 135.0, 477198.87}, {0.0095, 259.3, -413335.36}, {0.0078, 235.7, 890534.22}, {0.0028, 269.9, 954397.74}};
   const double centuries = (utc - kJ2000) / 36525.0;
-  const double lon = 218.32 + 481267.881 * centuries + sineSeries(kLongitude, 6, centuries);
-  const double lat = sineSeries(kLatitude, 4, centuries);
-  const double parallax = 0.9508 + cosineSeries(kParallax, 4, centuries);
+  const double lon = 218.32 + 481267.881 * centuries + periodicSum(kLongitude, centuries);
+  const double lat = periodicSum(kLatitude, centuries);
+  const double parallax = 0.9508 + periodicSum(kParallax, centuries, true);
   return {wrapDegrees(lon), lat, kEarthEquatorialRadius / std::sin(glm::radians(parallax))};
 }
 
 BodyPlacement moonPlacement(DayNumber utc) {
   const double days = utc - kJ2000;
-  const double obliquity = glm::radians(eclipticObliquity(days));
   const MoonPosition moon = moonPosition(utc);
-  const glm::dvec3 centre =
-      earthFixed(equatorialOfEcliptic(glm::radians(moon.lon), glm::radians(moon.lat), obliquity), days) * moon.distance;
-  const glm::dvec3 eclipticPole = earthFixed(glm::dvec3(0.0, -std::sin(obliquity), std::cos(obliquity)), days);
+  const glm::dvec3 centre = earthFixedOfEcliptic(glm::radians(moon.lon), glm::radians(moon.lat), days) * moon.distance;
+  const glm::dvec3 eclipticPole = earthFixedOfEcliptic(0.0, glm::half_pi<double>(), days);
   const glm::dvec3 x = -glm::normalize(centre);
   const glm::dvec3 z = glm::normalize(eclipticPole - x * glm::dot(eclipticPole, x));
   return {centre, glm::dmat3(x, glm::cross(z, x), z)};

@@ -16,21 +16,18 @@ bool isEarth(const Body& body) { return findNamedBody(body.name) == findNamedBod
 
 }  // namespace
 
-// [Almanac 2024, §C5]: the Sun's mean longitude L and mean anomaly g, its ecliptic longitude lambda, the
-// obliquity epsilon, then right ascension and declination. UT stands for TT: the minute between them moves
-// the Sun 0.0007 degrees. The subsolar longitude is the right ascension less Greenwich mean sidereal time
-// [USNO GMST]; the equation of the equinoxes (at most 0.005 degrees) is left out.
+// [Almanac 2024, §C5]: the Sun's mean longitude L and mean anomaly g, its ecliptic longitude lambda, turned by
+// the obliquity and Greenwich mean sidereal time [USNO GMST] into the Earth's axes (earthFixedOfEcliptic). UT
+// stands for TT: the minute between them moves the Sun 0.0007 degrees. The equation of the equinoxes (at most
+// 0.005 degrees) is left out.
 SubsolarPoint earthSubsolarPoint(DayNumber utc) {
   const double n = utc - kJ2000;
   const double meanLongitude = 280.460 + 0.9856474 * n;
   const double meanAnomaly = glm::radians(357.528 + 0.9856003 * n);
   const double eclipticLongitude =
       glm::radians(meanLongitude + 1.915 * std::sin(meanAnomaly) + 0.020 * std::sin(2.0 * meanAnomaly));
-  const double obliquity = glm::radians(eclipticObliquity(n));
-  const double rightAscension =
-      std::atan2(std::cos(obliquity) * std::sin(eclipticLongitude), std::cos(eclipticLongitude));
-  const double declination = std::asin(std::sin(obliquity) * std::sin(eclipticLongitude));
-  return {wrapDegrees(glm::degrees(rightAscension) - greenwichSiderealAngle(n)), glm::degrees(declination)};
+  const glm::dvec2 overhead = lonLatOf(earthFixedOfEcliptic(eclipticLongitude, 0.0, n));
+  return {wrapDegrees(glm::degrees(overhead.x)), glm::degrees(overhead.y)};
 }
 
 std::optional<SubsolarPoint> sceneSun(const Body& body, const std::optional<DayNumber>& date,

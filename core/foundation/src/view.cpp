@@ -5,6 +5,8 @@
 
 #include <strata/camera.hpp>
 
+#include "earth_rotation.hpp"
+
 namespace strata {
 
 glm::dvec3 unitNormal(double lonRad, double latRad) {
@@ -61,8 +63,9 @@ Camera cameraAhead(const Body& body, const Camera& before, const Camera& now, do
   const double distance = glm::length(eye);
   if (!(distance > 0.0) || !std::isfinite(distance)) return now;
   Camera ahead = now;
-  ahead.lon = glm::degrees(std::atan2(eye.y, eye.x));
-  ahead.lat = glm::degrees(std::asin(std::clamp(eye.z / distance, -1.0, 1.0)));
+  const glm::dvec2 below = lonLatOf(eye);
+  ahead.lon = glm::degrees(below.x);
+  ahead.lat = glm::degrees(below.y);
   ahead.altitude = std::max(distance - body.radius, 0.1 * now.altitude);
   return ahead;
 }
@@ -96,7 +99,7 @@ View viewOfBody(const View& seen, const BodyPlacement& from, const BodyPlacement
   view.eye = glm::transpose(to.axes) * (from.centre + from.axes * seen.eye - to.centre);
   view.planetToEye = seen.planetToEye * glm::transpose(from.axes) * to.axes;
   const double distance = glm::length(view.eye);
-  view.reference = {std::atan2(view.eye.y, view.eye.x), std::asin(std::clamp(view.eye.z / distance, -1.0, 1.0))};
+  view.reference = lonLatOf(view.eye);
   view.near = nearPlane(distance - body.radius, terrain);
   view.projection = reversedInfiniteProjection(view.verticalFov, double(view.width) / double(view.height), view.near);
   return view;

@@ -106,9 +106,9 @@ class Engine {
  private:
   struct BodyGraph;
   const BodyGraph& cameraGraph() const;
-  std::optional<SubsolarPoint> sunOf(const BodyGraph& body) const;
   const FrameOutput& renderFrame(int width, int height, bool still);
-  FrameState frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still) const;
+  FrameState frameOf(const BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still,
+                     const std::optional<SubsolarPoint>& sun) const;
   void prepareBody(BodyGraph& body, const FrameState& frame);
   const FrameOutput& drawBody(BodyGraph& body, const FrameState& frame);
   const FrameOutput& renderBody(BodyGraph& body, const View& view, const std::optional<View>& ahead, bool still);
