@@ -2,7 +2,8 @@
 // Per-pixel composition of the surface layers over the deferred texturing buffer ([Kooima 2008, §3.4.3]): each
 // layer adds value x weight to rgb and its weight to alpha; the sum is normalised at the end
 // ([Kooima 2008, §4.1.2]), so overlapping layers blend by coverage and weights need not sum to one. Translucent
-// surfaces (each a geometry of its own) are then laid over it, farthest first, where they lie nearer.
+// surfaces (each a geometry of its own) are then laid over it, farthest first, where they lie nearer, and the
+// body's air, where it has one, over all.
 #include "strata/surface_point.glsl"
 #include "strata/surface_buffer.glsl"
 #include "strata/constants.glsl"
@@ -73,6 +74,32 @@ float lightOn(vec3 normal, vec3 sphereNormal) {
 
 STRATA_SURFACE_LAYERS_GLSL
 
+// The body's air (output.image's AirOverSurface): 1 where the body has an atmosphere, else 0.
+#if STRATA_ATMOSPHERE
+#include "strata/atmosphere.glsl"
+uniform vec3 airSun;         // planet-fixed, unit, toward the sun, which lights the air whatever `shade` is
+uniform vec3 eyePosition;    // planet-fixed, m (View::eye)
+uniform mat3 eyeToPlanet;    // from the eye's axes into planet-fixed ones
+uniform vec2 frameTangents;  // View::halfFrameTangents: the frame's edges at unit distance ahead
+uniform float nearPlane;     // m: window depth is nearPlane / the distance along the view's axis
+
+// `light` leaving what sample depth `depth` of `pixel` shows (0: nothing, the ray runs on through the air), as it
+// reaches the eye: dimmed by the air between, and the air's own light added. The sun's irradiance is 1 as
+// Lambert's law takes it, so radiance is pi times the air's [Hillaire 2020, "Rendering the sky"].
+vec3 throughAir(ivec2 pixel, vec3 light, float depth) {
+  vec3 inEye = vec3(((vec2(pixel) + 0.5) / vec2(frameSize) * 2.0 - 1.0) * frameTangents, -1.0);
+  float reach = depth > 0.0 ? nearPlane / depth * length(inEye) : 3.0e38;
+  AirLight air = airLightAlong(eyePosition, normalize(eyeToPlanet * inEye), reach, airSun);
+  return light * air.transmittance + PI * air.inscattered;
+}
+
+// The share of the sun's light that reaches ground of sphere normal `up` (shade 2): reddened low in the sky.
+vec3 sunlightThroughAir(vec3 up) { return shade == 2 ? airSunlightOnGround(up, airSun) : vec3(1.0); }
+#else
+vec3 throughAir(ivec2 pixel, vec3 light, float depth) { return light; }
+vec3 sunlightThroughAir(vec3 up) { return vec3(1.0); }
+#endif
+
 // The shading normal `normal` at `p` turned by the normal maps' blend `mapped` (value x weight in rgb, the
 // weight in alpha; 0 to 1 standing for -1 to 1): x along the east, y the north, z the normal itself.
 vec3 mappedNormal(vec3 normal, SurfacePoint p, vec4 mapped) {
@@ -90,7 +117,7 @@ STRATA_TRANSLUCENT_GLSL
 vec3 lightAt(ivec2 pixel, int s, out float reach) {
   vec4 here = texelFetch(surfaceBuffer, pixel, s);
   reach = 0.0;
-  if (!onSurface(here)) return clamp(translucentOver(pixel, s, background, 0.0), 0.0, 1.0);
+  if (!onSurface(here)) return clamp(throughAir(pixel, translucentOver(pixel, s, background, 0.0), 0.0), 0.0, 1.0);
   SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s, here);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
   vec4 accumulated = vec4(0.0), shaded = vec4(0.0);
@@ -104,9 +131,10 @@ vec3 lightAt(ivec2 pixel, int s, out float reach) {
   accumulated = vec4(0.0);
   STRATA_NORMAL_LAYERS_ACCUMULATE
   vec3 normal = mappedNormal(shadingNormalOf(here, p.normal), p, accumulated);
-  vec3 light = albedo * lightOn(normal, p.normal) + alreadyLit + night * (1.0 - daylight(p.normal));
+  vec3 light = albedo * lightOn(normal, p.normal) * sunlightThroughAir(p.normal) + alreadyLit +
+               night * (1.0 - daylight(p.normal));
   float depth = texelFetch(depthBuffer, pixel, s).r;
-  return clamp(translucentOver(pixel, s, light, depth), 0.0, 1.0);
+  return clamp(throughAir(pixel, translucentOver(pixel, s, light, depth), depth), 0.0, 1.0);
 }
 
 // Samples of one surface lie within a pixel's footprint of each other: each holds its triangle's values at

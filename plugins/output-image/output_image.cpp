@@ -18,6 +18,7 @@
 #include <strata/plugin/plugin.hpp>
 #include <strata/sun.hpp>
 
+#include "air_over_surface.hpp"
 #include "body_outline.hpp"
 #include "outline_fan.hpp"
 #include "plugin_shaders.hpp"
@@ -113,7 +114,8 @@ class ImageOutput : public Node, public FrameOutput {
         settings_(imageParameters().read(setup.parameters)),
         samplesWhere_(imageParameters().where(setup.parameters, &ImageSettings::samples)),
         displayGlsl_(displayGlsl(setup)),
-        translucent_(setup) {
+        translucent_(setup),
+        air_(setup) {
     for (Node* node : setup.inputList("surface")) surface_.push_back(node->layer());
     for (Node* node : setup.inputList("night")) night_.push_back(node->layer());
     for (Node* node : setup.inputList("normal")) normal_.push_back(node->layer());
@@ -124,6 +126,7 @@ class ImageOutput : public Node, public FrameOutput {
 
   void createResources(GpuContext& gpu) override {
     const int samples = checkedSamples();
+    air_.createResources();
     std::string layersGlsl;
     shadedUniforms_.clear();
     for (std::size_t i = 0; i < surface_.size(); ++i) {
@@ -138,6 +141,7 @@ class ImageOutput : public Node, public FrameOutput {
           gpu.shaders->expand("output-image/composite.frag",
                               {{"STRATA_DEFERRED_SAMPLER", glslSamplerFor(samples)},
                                {"STRATA_SAMPLES", std::to_string(samples)},
+                               {"STRATA_ATMOSPHERE", air_ ? "1" : "0"},
                                {"STRATA_DISPLAY_GLSL", displayGlsl_},
                                {"STRATA_SURFACE_LAYERS_GLSL", layersGlsl},
                                {"STRATA_TRANSLUCENT_GLSL", translucent_.glsl()},
@@ -152,13 +156,13 @@ class ImageOutput : public Node, public FrameOutput {
     fan_ = std::make_unique<OutlineFan>();
   }
 
-  // The layers are composed within the body's outline; around it, where no surface can show, the frame is
-  // the background.
+  // The layers are composed within the body's outline, and its air's; around it, where neither can show, the
+  // frame is the background.
   void render(const FrameState& frame) override {
     if (frame_.width() != frame.view.width || frame_.height() != frame.view.height)
       frame_ = Framebuffer(frame.view.width, frame.view.height, {GL_RGBA8});
     frame_.bind();
-    const double highest = std::max({geometry_->heights().highest, translucent_.highest(), 0.0});
+    const double highest = std::max({geometry_->heights().highest, translucent_.highest(), air_.thickness(), 0.0});
     const BodyOutline outline = bodyOutline(frame.view, frame.body->radius + highest);
     if (!outline.wholeFrame) paintBackground(frame.transparentBackground);
     program_.use();
@@ -182,6 +186,7 @@ class ImageOutput : public Node, public FrameOutput {
     for (const Layer* layer : night_) layer->bind(program_, units);
     for (const Layer* layer : normal_) layer->bind(program_, units);
     translucent_.bind(program_, units, settings_.opacity);
+    air_.bind(program_, units, frame);
     fan_->draw(outline.fan);
   }
 
@@ -306,6 +311,7 @@ class ImageOutput : public Node, public FrameOutput {
   std::vector<const Layer*> normal_;
   bool sunKnown_ = false;  // whether the scene places the sun (NodeSetup::sun): shading: sun needs it
   TranslucentSurfaces translucent_;
+  AirOverSurface air_;
   ShaderProgram program_;
   ShaderProgram background_;
   std::unique_ptr<FullscreenTriangle> triangle_;  // made with the GL resources, not at construction

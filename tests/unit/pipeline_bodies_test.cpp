@@ -121,6 +121,25 @@ TEST_F(BodiesTest, ASceneOfBodiesHasNoNodesOfItsOwn) {
   EXPECT_EQ(error.where().line, 3);
 }
 
+// Each body's air is its own file's: an atmosphere beside `bodies:` would be no body's.
+TEST_F(BodiesTest, ASceneOfBodiesHasNoAtmosphereOfItsOwn) {
+  const Error error = parseError(earthAndMoon("atmosphere: {}\n"));
+  EXPECT_NE(error.problem().find("its own 'atmosphere'"), std::string::npos) << error.problem();
+  EXPECT_EQ(error.where().line, 2);
+}
+
+// A body's own file gives it air, which it keeps in the scene.
+TEST_F(BodiesTest, EachBodyKeepsItsOwnAtmosphere) {
+  directory_.write("earth.yaml",
+                   "strata: 1\nbody: {name: Earth}\natmosphere: {mie_scattering: 2.0e-5, "
+                   "mie_extinction: 2.2e-5}\nnodes:\n" +
+                       kFrameNodes);
+  const Pipeline scene = parse(earthAndMoon(""));
+  ASSERT_TRUE(scene.bodies[0].pipeline.atmosphere.has_value());
+  EXPECT_DOUBLE_EQ(scene.bodies[0].pipeline.atmosphere->mieScattering, 2.0e-5);
+  EXPECT_FALSE(scene.bodies[1].pipeline.atmosphere.has_value());
+}
+
 TEST_F(BodiesTest, ABodysPipelineDrawsOneBody) {
   directory_.write("scene.yaml", earthAndMoon(""));
   const Error error =

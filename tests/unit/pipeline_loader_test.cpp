@@ -195,8 +195,9 @@ TEST_F(LoaderTest, UnknownTopLevelKeySuggestsTheNearestKey) {
   const Error error = parseError(withNodes(kFrameNodes) + "camara: {altitude: 5000}\n");
   EXPECT_NE(error.problem().find("unknown key 'camara'"), std::string::npos) << error.what();
   EXPECT_NE(error.problem().find("did you mean 'camera'?"), std::string::npos) << error.what();
-  EXPECT_NE(error.fix().find("'strata', 'body', 'camera', 'cache', 'date', 'sun', 'colour', 'bodies', 'nodes'"),
-            std::string::npos)
+  EXPECT_NE(
+      error.fix().find("'strata', 'body', 'camera', 'cache', 'date', 'sun', 'colour', 'atmosphere', 'bodies', 'nodes'"),
+      std::string::npos)
       << error.fix();
   EXPECT_EQ(error.where().line, 6);
   EXPECT_EQ(error.where().column, 1);

@@ -1,4 +1,4 @@
-// The body:, camera:, date:, sun: and colour: sections.
+// The body:, camera:, date:, sun:, atmosphere: and colour: sections.
 #include "pipeline_test_fixtures.hpp"
 
 #include <strata/log.hpp>
@@ -190,6 +190,30 @@ TEST_F(SceneTest, SunIsAFixedSubsolarPoint) {
   EXPECT_DOUBLE_EQ(pipeline.sun->lat, -20.0);
   EXPECT_FALSE(parse(withSection("camera: {}")).sun);
   EXPECT_EQ(parseError(withSection("sun: {lat: 95}")).problem(), "sun 'lat' must be in [-90, 90] deg, got 95 deg");
+}
+
+// `atmosphere: {}` is the Earth's air [Bruneton 2008]; each coefficient may be given, the three channels' as a
+// list; none without the section.
+TEST_F(SceneTest, AtmosphereDefaultsToTheEarthsAir) {
+  const Pipeline pipeline = parse(withSection("atmosphere: {}"));
+  ASSERT_TRUE(pipeline.atmosphere);
+  EXPECT_EQ(pipeline.atmosphere->rayleighScattering, glm::dvec3(5.8e-6, 13.5e-6, 33.1e-6));
+  EXPECT_DOUBLE_EQ(pipeline.atmosphere->mieScaleHeight, 1200.0);
+  EXPECT_EQ(pipeline.atmosphere->where.line, 2);
+  const Pipeline hazy =
+      parse(withSection("atmosphere: {rayleigh_scattering: [1.0e-5, 2.0e-5, 3.0e-5], thickness: 1.0e5}"));
+  EXPECT_EQ(hazy.atmosphere->rayleighScattering, glm::dvec3(1.0e-5, 2.0e-5, 3.0e-5));
+  EXPECT_DOUBLE_EQ(hazy.atmosphere->thickness, 1.0e5);
+  EXPECT_FALSE(parse(withSection("camera: {}")).atmosphere);
+}
+
+// Aerosols scatter part of what they take from the light: extinction below scattering is refused with the fix.
+TEST_F(SceneTest, AtmosphereExtinctionIsAtLeastItsScattering) {
+  const Error error = parseError(withSection("atmosphere: {mie_scattering: 2.0e-5, mie_extinction: 1.0e-5}"));
+  EXPECT_NE(error.problem().find("less than their scattering"), std::string::npos) << error.problem();
+  EXPECT_NE(error.fix().find("mie_scattering / 0.9"), std::string::npos) << error.fix();
+  EXPECT_EQ(error.where().line, 2);
+  EXPECT_NE(parseError(withSection("atmosphere: {thickness: 0}")).problem().find("thickness"), std::string::npos);
 }
 
 // Issue 37, item 7: a body of 1e14 m was drawn speckled and of 1e20 m grey.

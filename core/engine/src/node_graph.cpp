@@ -81,7 +81,8 @@ void NodeGraph::make(const Pipeline& pipeline, const PluginRegistry& registry) {
                     &registry,
                     pipeline.date,
                     pipeline.colour,
-                    sceneSun(pipeline.body, pipeline.date, pipeline.sun)};
+                    sceneSun(pipeline.body, pipeline.date, pipeline.sun),
+                    pipeline.atmosphere};
     int depth = 0;
     for (const auto& [port, ids] : description.inputs)
       for (const std::string& id : ids) {

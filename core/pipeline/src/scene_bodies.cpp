@@ -14,10 +14,10 @@
 namespace strata::loader {
 namespace {
 
-// A scene of several bodies draws every surface through its bodies' pipelines: a `body:` or `nodes:` of its
-// own would belong to none of them.
+// A scene of several bodies draws every surface through its bodies' pipelines: a `body:`, `nodes:` or
+// `atmosphere:` of its own would belong to none of them.
 void refuseOwnSurface(const YAML::Node& root, const SourceMap& source) {
-  for (const char* key : {"body", "nodes"})
+  for (const char* key : {"body", "nodes", "atmosphere"})
     if (const YAML::Node value = root[key])
       throw source.error(
           value, {},

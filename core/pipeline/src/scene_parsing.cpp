@@ -44,6 +44,17 @@ ParameterSet readSection(const YAML::Node& root, const std::string& name, const 
   return set;
 }
 
+// The scene's `atmosphere:`. Throws strata::Error at it where its aerosols would scatter more than they take
+// from the light: extinction is scattering plus absorption.
+Atmosphere atmosphereOf(const YAML::Node& root, const SourceMap& source, const std::filesystem::path& directory) {
+  Atmosphere air = atmosphereParameters().read(readSection(root, "atmosphere", source, directory));
+  air.where = source.at(root["atmosphere"]);
+  if (air.mieExtinction < air.mieScattering)
+    throw Error(air.where, "the aerosols' extinction (mie_extinction) is less than their scattering",
+                "give mie_extinction at least mie_scattering: the Earth's haze absorbs a tenth, mie_scattering / 0.9");
+  return air;
+}
+
 double wrapLongitude(double lon) {
   const double wrapped = std::fmod(lon + 180.0, 360.0);
   return (wrapped < 0.0 ? wrapped + 360.0 : wrapped) - 180.0;
@@ -83,6 +94,7 @@ void readScene(const YAML::Node& root, const SourceMap& source, Pipeline& pipeli
     sun.lon = wrapLongitude(sun.lon);
     pipeline.sun = sun;
   }
+  if (root["atmosphere"]) pipeline.atmosphere = atmosphereOf(root, source, directory);
 }
 
 Camera cameraOf(const ParameterSet& parameters) {

@@ -1,5 +1,6 @@
-// The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:`, `date:` and `sun:` take, with
-// each default's reason beside it in the settings structs (body.hpp, camera.hpp, page_cache_settings.hpp).
+// The scene's settings, declared once: what `body:`, `camera:`, `cache:`, `colour:`, `date:`, `sun:` and
+// `atmosphere:` take, with each default's reason beside it in the settings structs (body.hpp, camera.hpp,
+// page_cache_settings.hpp, atmosphere.hpp).
 #include <strata/host/scene_settings.hpp>
 
 #include <cstdint>
@@ -19,6 +20,9 @@ constexpr double kLeastFieldOfView = 0.001, kMostFieldOfView = 179.0;
 constexpr double kLeastRadius = 1.0, kMostRadius = 1.0e9;
 
 constexpr int kMebibyte = 20;  // bits to shift a MiB count into bytes
+
+// The three channels' coefficients, red, green and blue (680, 550 and 440 nm), as a pipeline writes them.
+std::vector<double> channelsOf(const glm::dvec3& rgb) { return {rgb.r, rgb.g, rgb.b}; }
 
 SceneSection sectionOf(std::string name, std::string doc, const std::vector<ParameterDeclaration>& parameters,
                        SceneSection::Form form = SceneSection::Form::Map) {
@@ -137,6 +141,53 @@ const ParameterBindings<SubsolarPoint>& sunParameters() {
   return bindings;
 }
 
+const ParameterBindings<Atmosphere>& atmosphereParameters() {
+  using A = Atmosphere;
+  static const auto bindings =
+      ParameterBindings<A>()
+          .add(&A::thickness, {.name = "thickness",
+                               .minimum = 0.0,
+                               .units = "m",
+                               .doc = "height above the body's radius where the air ends",
+                               .exclusiveMinimum = true})
+          .convert<std::vector<double>>(
+              {.name = "rayleigh_scattering",
+               .minimum = 0.0,
+               .units = "1/m",
+               .doc = "the molecules' scattering at the ground, [red, green, blue] at 680, 550 and 440 nm",
+               .count = 3},
+              [](const A& air) { return channelsOf(air.rayleighScattering); },
+              [](A& air, std::vector<double> rgb) { air.rayleighScattering = glm::dvec3(rgb[0], rgb[1], rgb[2]); })
+          .add(&A::rayleighScaleHeight, {.name = "rayleigh_scale_height",
+                                         .minimum = 0.0,
+                                         .units = "m",
+                                         .doc = "height over which the molecules' density falls by e",
+                                         .exclusiveMinimum = true})
+          .add(&A::mieScattering, {.name = "mie_scattering",
+                                   .minimum = 0.0,
+                                   .units = "1/m",
+                                   .doc = "the aerosols' scattering at the ground"})
+          .add(&A::mieExtinction, {.name = "mie_extinction",
+                                   .minimum = 0.0,
+                                   .units = "1/m",
+                                   .doc = "the aerosols' extinction at the ground: their scattering and absorption"})
+          .add(&A::mieScaleHeight, {.name = "mie_scale_height",
+                                    .minimum = 0.0,
+                                    .units = "m",
+                                    .doc = "height over which the aerosols' density falls by e",
+                                    .exclusiveMinimum = true})
+          .add(&A::mieAsymmetry, {.name = "mie_asymmetry",
+                                  .minimum = -0.99,
+                                  .maximum = 0.99,
+                                  .doc = "the aerosols' mean cosine of scattering (Cornette-Shanks g): near 1, "
+                                         "forward, a glare about the sun"})
+          .add(&A::groundAlbedo, {.name = "ground_albedo",
+                                  .minimum = 0.0,
+                                  .maximum = 1.0,
+                                  .doc = "the ground's mean reflectance, which lights the air from below"});
+  return bindings;
+}
+
 const ParameterBindings<SceneBodySettings>& sceneBodyParameters() {
   using S = SceneBodySettings;
   static const auto bindings =
@@ -167,6 +218,10 @@ const std::vector<SceneSection>& sceneSections() {
       sectionOf("sun", "where the sun stands overhead, fixed; unset: from the date, for the Earth",
                 sunParameters().declarations()),
       sectionOf("colour", "how colours are managed (docs/colour.md)", colourParameters().declarations()),
+      sectionOf("atmosphere",
+                "the body's air, lit by the sun: the sky, and the haze over distant ground (docs/atmosphere.md); "
+                "its defaults are the Earth's",
+                atmosphereParameters().declarations()),
       sectionOf("bodies",
                 "several bodies in one scene, each drawn by its own pipeline, in place of `body` and `nodes` "
                 "(docs/pipelines.md)",

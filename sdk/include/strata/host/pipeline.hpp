@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <strata/atmosphere.hpp>
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 #include <strata/date.hpp>
@@ -43,9 +44,10 @@ struct Pipeline {
   Camera camera;
   PageCacheSettings cache;
   ColourSettings colour;
-  std::optional<DayNumber> date;       // the scene's date (`date:`), which time series show; none: not given
-  std::optional<SubsolarPoint> sun;    // the scene's fixed sun (`sun:`); none: from the date (sceneSun)
-  std::vector<NodeDescription> nodes;  // in dependency order: every node after its inputs
+  std::optional<DayNumber> date;         // the scene's date (`date:`), which time series show; none: not given
+  std::optional<SubsolarPoint> sun;      // the scene's fixed sun (`sun:`); none: from the date (sceneSun)
+  std::optional<Atmosphere> atmosphere;  // the body's air (`atmosphere:`); none: airless
+  std::vector<NodeDescription> nodes;    // in dependency order: every node after its inputs
   // The scene's bodies, in the order written, when it has several; empty: the one `body` and its `nodes`. A
   // scene's own `body` is then the camera's body's (Camera::body), which hosts measure the camera over.
   std::vector<SceneBody> bodies;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <strata/atmosphere.hpp>
 #include <strata/body.hpp>
 #include <strata/camera.hpp>
 #include <strata/date.hpp>
@@ -58,6 +59,7 @@ const ParameterBindings<PageCacheSettings>& cacheParameters();
 const ParameterBindings<ColourSettings>& colourParameters();
 const ParameterBindings<SceneDate>& dateParameters();
 const ParameterBindings<SubsolarPoint>& sunParameters();
+const ParameterBindings<Atmosphere>& atmosphereParameters();
 const ParameterBindings<SceneBodySettings>& sceneBodyParameters();
 
 }  // namespace strata

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <strata/atmosphere.hpp>
 #include <strata/body.hpp>
 #include <strata/date.hpp>
 #include <strata/error.hpp>
@@ -37,7 +38,8 @@ struct NodeSetup {
   const PluginRegistry* plugins = nullptr;  // node types and projections (see strata/crs.hpp)
   std::optional<DayNumber> date;  // the scene's date as the pipeline gives it (`date:`); frames carry the current one
   ColourSettings colour;          // the pipeline's `colour:` (its OpenColorIO config)
-  std::optional<SubsolarPoint> sun;  // the scene's sun at its date (sceneSun); frames carry the current one
+  std::optional<SubsolarPoint> sun;      // the scene's sun at its date (sceneSun); frames carry the current one
+  std::optional<Atmosphere> atmosphere;  // the body's air (`atmosphere:`); none: airless
 
   Node* input(const std::string& port) const;                          // the single node on a port, or nullptr
   const std::vector<Node*>& inputList(const std::string& port) const;  // empty when unconnected
