@@ -30,7 +30,8 @@ uniform vec2 referenceLonlat; // rad: View::reference, from which the deferred b
 uniform vec4 referenceTrig;   // its longitude's and latitude's sines and cosines (sphereNormalFromReference)
 uniform ivec2 frameSize;      // pixels, of the frame and the deferred buffers
 // 1: the frame is laid over other bodies' (FrameState::transparentBackground): alpha is the share of the pixel's
-// samples on the body, its colour their light alone; 0: opaque, the background's samples in it.
+// samples on the body, its colour their light times that share, plus the air's light beyond the body's edge
+// (premultiplied); 0: opaque, the background's samples in it.
 uniform int transparentBackground;
 
 out vec4 colour;
@@ -164,6 +165,10 @@ int samplesLike(ivec2 pixel, int s, float reach, int done) {
   return like;
 }
 
+// What the pixel's samples off the body add over the bodies behind, `light` being their light times their share
+// of the pixel: the air's glow beyond the limb, in the display's encoding, and nothing where there is none.
+vec3 offBody(vec3 light) { return any(greaterThan(light, vec3(0.0))) ? strataDisplay(vec4(light, 1.0)).rgb : vec3(0.0); }
+
 // Multisample antialiasing in a deferred frame: the first sample not yet accounted for is composed, and counts
 // for every sample showing its surface (within its own footprint); until none is left. The pixel is the mean of
 // its samples' light (a box filter in scene-linear light). Inside a surface that is one composition; only
@@ -186,10 +191,11 @@ void main() {
     }
     done |= like;
   } while (done != every);
-  if (transparentBackground == 0)
+  if (transparentBackground == 0) {
     colour = vec4(strataDisplay(vec4(sum / float(kSamples), 1.0)).rgb, 1.0);
-  else if (covered == 0)
-    colour = vec4(0.0);
-  else
-    colour = vec4(strataDisplay(vec4(onBody / float(covered), 1.0)).rgb, float(covered) / float(kSamples));
+    return;
+  }
+  float coverage = float(covered) / float(kSamples);
+  vec3 body = covered == 0 ? vec3(0.0) : strataDisplay(vec4(onBody / float(covered), 1.0)).rgb * coverage;
+  colour = vec4(body + offBody((sum - onBody) / float(kSamples)), coverage);
 }

@@ -100,6 +100,30 @@ TEST_F(AtmosphereRendering, TheLimbFromOrbit) {
   EXPECT_GE(glowing, 3);
 }
 
+// The same view in a scene of several bodies (the Moon far out of view): the Earth's frame laid over space shows
+// the air's glow beyond its limb as its own pipeline alone does, within a level.
+TEST_F(AtmosphereRendering, TheLimbGlowsInASceneOfSeveralBodies) {
+  const std::string camera = "{lon: 0, lat: 0, altitude: 4.0e5, heading: 90, tilt: 72, fov: 30}";
+  auto engine = makeEngine();
+  const Image alone = renderFrame(*engine, directory_.write("earth.yaml", airyEarth(45.0, camera)), kSize, kSize);
+  directory_.write("moon.yaml",
+                   "strata: 1\nbody: {name: Moon}\nnodes:\n  terrain: {type: geometry.icosahedral}\n"
+                   "  frame: {type: output.image, geometry: terrain, antialiasing: none, view: Raw}\n");
+  const Image scene =
+      renderFrame(*makeEngine(),
+                  directory_.write("scene.yaml", "strata: 1\nsun: {lon: 45, lat: 0}\ncamera: " + camera +
+                                                     "\nbodies:\n  earth: {pipeline: earth.yaml}\n"
+                                                     "  moon: {pipeline: moon.yaml, position: [0, 0, "
+                                                     "-3.844e8]}\n"),
+                  kSize, kSize);
+  int glowing = 0;
+  for (int y = 0; y < kSize; ++y) {
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(scene.at(kSize / 2, y)[c], alone.at(kSize / 2, y)[c], 1) << "row " << y;
+    if (alone.at(kSize / 2, y)[2] > 10 && !raycastSphere(engine->view(kSize, kSize), kRadius, kSize / 2, y)) ++glowing;
+  }
+  EXPECT_GE(glowing, 3);
+}
+
 // An atmosphere with neither a date nor a sun: refused at the section, with the fix.
 TEST_F(AtmosphereRendering, AnAirNoSunLightsIsRefused) {
   auto engine = makeEngine();

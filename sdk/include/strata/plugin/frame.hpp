@@ -27,8 +27,9 @@ struct FrameState {
   // and geometry.bdam read ahead for [Cignoni et al. 2003, §4.4]. None on a still frame, when the camera has not
   // moved, and on a pipeline's first frame.
   std::optional<View> ahead;
-  // The frame is laid over other bodies' (a scene's `bodies:`, docs/pipelines.md): outputs leave it transparent
-  // where no surface shows (alpha 0), and give a pixel across the body's edge the share of it the body covers.
+  // The frame is laid over other bodies' (a scene's `bodies:`, docs/pipelines.md) with premultiplied alpha:
+  // outputs give a pixel the share of it the body covers in alpha and their colour times that share, leave it
+  // transparent where no surface shows (alpha 0), and may add light there (a body's air glowing beyond its limb).
   bool transparentBackground = false;
 };
 
