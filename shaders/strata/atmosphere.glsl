@@ -74,10 +74,10 @@ bool airWithinSphere(vec3 origin, vec3 direction, float radius, out vec2 span) {
   return discriminant >= 0.0 && span.y > 0.0;
 }
 
-// (1 - T) / extinction per channel: the light scattered within a segment, dimmed within it as well [Hillaire
-// 2020, "Rendering the sky"].
-vec3 airScatteredOverSegment(vec3 extinction, float segment) {
-  return mix((1.0 - exp(-extinction * segment)) / max(extinction, vec3(1e-30)), vec3(segment),
+// (1 - T) / extinction per channel, T the segment's transmittance: the light scattered within a segment `segment`
+// m long, dimmed within it as well [Hillaire 2020, "Rendering the sky"].
+vec3 airScatteredOverSegment(vec3 extinction, vec3 transmittance, float segment) {
+  return mix((1.0 - transmittance) / max(extinction, vec3(1e-30)), vec3(segment),
              lessThan(extinction * segment, vec3(1e-6)));
 }
 
@@ -100,9 +100,9 @@ AirLight airLightAlong(vec3 origin, vec3 direction, float reach, vec3 sun) {
     float aerosolDensity = exp(-altitude / airScaleHeights.y), aerosols = airMie.x * aerosolDensity;
     vec3 source = (molecules * rayleigh + aerosols * mie) * airTransmittanceToTop(r, muSun) +
                   (molecules + aerosols) * airMultipleScatteringAt(r, muSun);
-    vec3 extinction = molecules + airMie.y * aerosolDensity;
-    light.inscattered += light.transmittance * source * airScatteredOverSegment(extinction, step);
-    light.transmittance *= exp(-extinction * step);
+    vec3 extinction = molecules + airMie.y * aerosolDensity, segment = exp(-extinction * step);
+    light.inscattered += light.transmittance * source * airScatteredOverSegment(extinction, segment, step);
+    light.transmittance *= segment;
   }
   return light;
 }
