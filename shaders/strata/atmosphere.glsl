@@ -15,6 +15,12 @@ uniform vec3 airRayleigh;                 // 1/m: the molecules' scattering at t
 uniform vec3 airMie;                      // the aerosols' scattering and extinction at the ground (1/m), and g
 uniform vec2 airScaleHeights;             // m: the molecules' and the aerosols'
 
+// Farther than 300 radii of the top of the air (the body 0.2 degrees across) float fails the ray's geometry: the
+// discriminant b^2 - c errs by about 6e-8 (distance / radius)^2 of itself, half a per cent at 300 radii and growing
+// as the square, and sample points lie 6e-8 of the distance astray (120 m for the Earth). The air is not drawn
+// from there (docs/atmosphere.md).
+const float kAirFarthest = 300.0;
+
 const int kAirSteps = 32;  // segments along a ray: within 2.2 8-bit levels of 500 in double in the tests
 
 struct AirLight {
@@ -86,7 +92,7 @@ vec3 airScatteredOverSegment(vec3 extinction, vec3 transmittance, float segment)
 AirLight airLightAlong(vec3 origin, vec3 direction, float reach, vec3 sun) {
   AirLight light = AirLight(vec3(0.0), vec3(1.0));
   vec2 air, ground;
-  if (!airWithinSphere(origin, direction, airRadii.y, air)) return light;
+  if (length(origin) > kAirFarthest * airRadii.y || !airWithinSphere(origin, direction, airRadii.y, air)) return light;
   if (airWithinSphere(origin, direction, airRadii.x, ground) && ground.x > 0.0) air.y = min(air.y, ground.x);
   float start = max(air.x, 0.0), end = min(air.y, reach);
   if (end <= start) return light;

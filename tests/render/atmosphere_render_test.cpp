@@ -124,6 +124,18 @@ TEST_F(AtmosphereRendering, TheLimbGlowsInASceneOfSeveralBodies) {
   EXPECT_GE(glowing, 3);
 }
 
+// From 2.6 million km (400 radii of the air's top), where float would draw the air wrong, the body is drawn
+// airless (docs/atmosphere.md, "Limits"): the frame is the one without `atmosphere:`.
+TEST_F(AtmosphereRendering, FromFarBeyondTheAirTheBodyIsDrawnAirless) {
+  const std::string camera = "{lon: 0, lat: 0, altitude: 2.6e9, fov: 0.5}";
+  std::string airless = airyEarth(45.0, camera);
+  airless.erase(airless.find("atmosphere: {}\n"), std::string("atmosphere: {}\n").size());
+  const Image far = renderFrame(*makeEngine(), directory_.write("far.yaml", airyEarth(45.0, camera)), kSize, kSize);
+  const Image without = renderFrame(*makeEngine(), directory_.write("airless.yaml", airless), kSize, kSize);
+  EXPECT_EQ(far.rgba, without.rgba);
+  EXPECT_TRUE(covered(far, kSize / 2, kSize / 2));
+}
+
 // An atmosphere with neither a date nor a sun: refused at the section, with the fix.
 TEST_F(AtmosphereRendering, AnAirNoSunLightsIsRefused) {
   auto engine = makeEngine();
