@@ -108,5 +108,24 @@ TEST(Atmosphere, MultipleScatteringLightsTheTwilight) {
   }
 }
 
+// The multiple-scattering table against its definition summed 64 times finer (64 x 64 directions, 100 steps along
+// each), from the ground to 30 km, between the table's points. By day (the sun 17 degrees up and more) within 7%:
+// the table's 128 directions leave up to 6%. Around the terminator Psi_ms falls a hundredfold within 0.1 of the
+// sun's cosine and bilinear reading misses it by a share of itself but not of the day's light: within 1.5% of
+// Psi_ms under an overhead sun (1.3% at worst).
+TEST(Atmosphere, MultipleScatteringTableHoldsItsDefinition) {
+  for (double altitude : {0.0, 5000.0, 30000.0}) {
+    const double r = kGround + altitude;
+    const glm::dvec3 overhead = multipleScatteringFor(earth(), earthTables(), r, 1.0, {64, 64, 100});
+    for (double muSun : {-0.1, 0.0, 0.3, 0.7, 1.0}) {
+      const glm::dvec3 fine = multipleScatteringFor(earth(), earthTables(), r, muSun, {64, 64, 100});
+      const glm::dvec3 read = earthTables().multipleScatteringAt(earth(), r, muSun);
+      for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(read[c], fine[c], muSun >= 0.3 ? 0.07 * fine[c] : 0.015 * overhead[c])
+            << "altitude " << altitude << ", sun's cosine " << muSun << ", channel " << c;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace strata

@@ -16,10 +16,6 @@ namespace {
 // Light scattered twice and more is taken as isotropic [Hillaire 2020, "Multiple scattering LUT"].
 const double kIsotropicPhase = 1.0 / (4.0 * glm::pi<double>());
 
-// The directions Psi_ms integrates over: equal areas of the sphere, 8 bands of cosine by 16 of azimuth. The
-// paper takes 64; twice that costs nothing here (the table is made once, on the CPU).
-constexpr int kCosineBands = 8, kAzimuths = 16;
-constexpr int kStepsPerDirection = 20;    // [Hillaire 2020]: 20 samples along each direction
 constexpr int kTransmittanceSteps = 500;  // [Bruneton 2008, §6]: the transmittance integral's 500 samples
 
 // The square root of r^2 - b^2, as (r - b)(r + b) for precision near b.
@@ -33,12 +29,12 @@ struct SecondOrder {
 };
 
 SecondOrder secondOrderAlong(const AtmosphereModel& model, const AtmosphereTables& tables, const glm::dvec3& origin,
-                             const glm::dvec3& direction, const glm::dvec3& sun) {
+                             const glm::dvec3& direction, const glm::dvec3& sun, int steps) {
   const double r = glm::length(origin), mu = glm::dot(origin, direction) / r;
-  const double length = model.distanceToBoundary(r, mu), step = length / kStepsPerDirection;
+  const double length = model.distanceToBoundary(r, mu), step = length / steps;
   SecondOrder along;
   glm::dvec3 transmittance(1.0);
-  for (int i = 0; i < kStepsPerDirection; ++i) {
+  for (int i = 0; i < steps; ++i) {
     const glm::dvec3 point = origin + (i + 0.5) * step * direction;
     const double radius = glm::length(point);
     const glm::dvec3 extinction = model.extinctionAt(radius);
@@ -57,25 +53,6 @@ SecondOrder secondOrderAlong(const AtmosphereModel& model, const AtmosphereTable
   return along;
 }
 
-// Psi_ms at radius r under a sun of zenith cosine muSun: the second order of scattering from every direction
-// times 1 / (1 - f_ms), the sum of the orders beyond as a geometric series [Hillaire 2020, "Multiple scattering
-// LUT"].
-glm::dvec3 multipleScatteringFor(const AtmosphereModel& model, const AtmosphereTables& tables, double r, double muSun) {
-  const glm::dvec3 origin(0.0, 0.0, r), sun(std::sqrt(std::max(0.0, 1.0 - muSun * muSun)), 0.0, muSun);
-  const double solidAngle = 4.0 * glm::pi<double>() / (kCosineBands * kAzimuths);
-  glm::dvec3 light(0.0), transfer(0.0);
-  for (int band = 0; band < kCosineBands; ++band)
-    for (int a = 0; a < kAzimuths; ++a) {
-      const double cosine = -1.0 + (band + 0.5) * 2.0 / kCosineBands, sine = std::sqrt(1.0 - cosine * cosine);
-      const double azimuth = (a + 0.5) * 2.0 * glm::pi<double>() / kAzimuths;
-      const SecondOrder along = secondOrderAlong(
-          model, tables, origin, glm::dvec3(sine * std::cos(azimuth), sine * std::sin(azimuth), cosine), sun);
-      light += along.light * kIsotropicPhase * solidAngle;
-      transfer += along.transfer * kIsotropicPhase * solidAngle;
-    }
-  return light / (1.0 - transfer);
-}
-
 // A table of `width` x `height` values, `value` of each point's coordinates in [0, 1]^2.
 template <class Value>
 AtmosphereTable tableOf(int width, int height, Value value) {
@@ -88,6 +65,34 @@ AtmosphereTable tableOf(int width, int height, Value value) {
 }
 
 }  // namespace
+
+// The second order of scattering from every direction times 1 / (1 - f_ms), the sum of the orders beyond as a
+// geometric series [Hillaire 2020, "Multiple scattering LUT"]. Half the bands of cosine look toward the ground and
+// half toward the sky, each half's bands narrowing quadratically toward the horizon: just above it rays cross the
+// most air and the light peaks, just below it they meet the ground, and bands even over the sphere converged slowly
+// there (tests/unit/atmosphere_test.cpp).
+glm::dvec3 multipleScatteringFor(const AtmosphereModel& model, const AtmosphereTables& tables, double r, double muSun,
+                                 const SphereQuadrature& quadrature) {
+  const glm::dvec3 origin(0.0, 0.0, r), sun(std::sqrt(std::max(0.0, 1.0 - muSun * muSun)), 0.0, muSun);
+  const double horizon = -rootOfDifference(r, model.bottom()) / r;
+  const int half = std::max(1, quadrature.cosineBands / 2), azimuths = quadrature.azimuths;
+  glm::dvec3 light(0.0), transfer(0.0);
+  for (int band = 0; band < 2 * half; ++band) {
+    // s from 0 at the horizon to 1 at the nadir or the zenith; the cosine moves as s^2.
+    const double far = band < half ? -1.0 : 1.0, s0 = double(band % half) / half, s1 = double(band % half + 1) / half;
+    const double c0 = horizon + (far - horizon) * s0 * s0, c1 = horizon + (far - horizon) * s1 * s1;
+    const double cosine = 0.5 * (c0 + c1), sine = std::sqrt(1.0 - cosine * cosine);
+    const double solidAngle = 2.0 * glm::pi<double>() * std::abs(c1 - c0) / azimuths;
+    for (int a = 0; a < azimuths; ++a) {
+      const double azimuth = (a + 0.5) * 2.0 * glm::pi<double>() / azimuths;
+      const glm::dvec3 direction(sine * std::cos(azimuth), sine * std::sin(azimuth), cosine);
+      const SecondOrder along = secondOrderAlong(model, tables, origin, direction, sun, quadrature.steps);
+      light += along.light * kIsotropicPhase * solidAngle;
+      transfer += along.transfer * kIsotropicPhase * solidAngle;
+    }
+  }
+  return light / (1.0 - transfer);
+}
 
 glm::dvec3 AtmosphereTable::at(glm::dvec2 unit) const {
   const double x = std::clamp(unit.x, 0.0, 1.0) * (width - 1), y = std::clamp(unit.y, 0.0, 1.0) * (height - 1);
@@ -131,11 +136,11 @@ AtmosphereTables makeAtmosphereTables(const AtmosphereModel& model) {
         const glm::dvec2 ray = rayOfTransmittanceCoordinates(model, unit);
         return model.transmittanceToTop(ray.x, ray.y, kTransmittanceSteps);
       });
-  const int n = AtmosphereTables::kMultipleScatteringSize;
-  tables.multipleScattering = tableOf(n, n, [&](glm::dvec2 unit) {
-    return multipleScatteringFor(model, tables, model.bottom() + unit.y * (model.top() - model.bottom()),
-                                 2.0 * unit.x - 1.0);
-  });
+  tables.multipleScattering = tableOf(
+      AtmosphereTables::kMultipleScatteringSuns, AtmosphereTables::kMultipleScatteringAltitudes, [&](glm::dvec2 unit) {
+        return multipleScatteringFor(model, tables, model.bottom() + unit.y * (model.top() - model.bottom()),
+                                     2.0 * unit.x - 1.0);
+      });
   return tables;
 }
 
