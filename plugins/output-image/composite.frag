@@ -86,7 +86,8 @@ uniform float nearPlane;     // m: window depth is nearPlane / the distance alon
 
 // `light` leaving what sample depth `depth` of `pixel` shows (0: nothing, the ray runs on through the air), as it
 // reaches the eye: dimmed by the air between, and the air's own light added. The sun's irradiance is 1 as
-// Lambert's law takes it, so radiance is pi times the air's [Hillaire 2020, "Rendering the sky"].
+// Lambert's law takes it here (a white surface under an overhead sun shows 1, pi times its radiance), so the air's
+// radiance is shown times pi as well: ground and sky in their true proportion.
 vec3 throughAir(ivec2 pixel, vec3 light, float depth) {
   vec3 inEye = vec3(((vec2(pixel) + 0.5) / vec2(frameSize) * 2.0 - 1.0) * frameTangents, -1.0);
   float reach = depth > 0.0 ? nearPlane / depth * length(inEye) : 3.0e38;

@@ -7,8 +7,7 @@ namespace strata {
 
 // The in-scattered light's integral over a segment `length` m long through air of extinction `extinction` (1/m)
 // per unit source: (1 - T) / extinction, T the segment's transmittance, so that light scattered in the segment
-// is also dimmed within it and no step size adds energy [Hillaire 2020, "Rendering the sky", the energy-conserving
-// integration of Hillaire 2015].
+// is also dimmed within it and no step size adds energy [Hillaire 2020, "Rendering the sky"].
 inline glm::dvec3 scatteredOverSegment(const glm::dvec3& extinction, double length) {
   glm::dvec3 integral;
   for (int c = 0; c < 3; ++c)

@@ -16,7 +16,7 @@ namespace {
 // Light scattered twice and more is taken as isotropic [Hillaire 2020, "Multiple scattering LUT"].
 const double kIsotropicPhase = 1.0 / (4.0 * glm::pi<double>());
 
-constexpr int kTransmittanceSteps = 500;  // [Bruneton 2008, §6]: the transmittance integral's 500 samples
+constexpr int kTransmittanceSteps = 500;  // [Bruneton 2008]'s published implementation's 500 samples
 
 // The square root of r^2 - b^2, as (r - b)(r + b) for precision near b.
 double rootOfDifference(double r, double b) { return std::sqrt(std::max(0.0, (r - b) * (r + b))); }
