@@ -21,7 +21,7 @@ uniform vec2 airScaleHeights;             // m: the molecules' and the aerosols'
 // from there (docs/atmosphere.md).
 const float kAirFarthest = 300.0;
 
-const int kAirSteps = 32;  // segments along a ray: within 2.2 8-bit levels of 500 in double in the tests
+const int kAirSteps = 32;  // segments along a ray: within 1.7 8-bit levels of 500 in double in the tests
 
 struct AirLight {
   vec3 inscattered;    // radiance per unit of the sun's irradiance
@@ -87,6 +87,18 @@ vec3 airScatteredOverSegment(vec3 extinction, vec3 transmittance, float segment)
              lessThan(extinction * segment, vec3(1e-6)));
 }
 
+// The span of segment `i` of the march from `start` to `end` (m along the ray): the segments narrow quadratically
+// toward `lowest`, where the ray passes nearest the ground and the air is densest, each side of it taking a share
+// of them by its length. Even segments missed the haze: looking 17 degrees up from the ground, the first of 32
+// spans the aerosols' 1.2 km scale height, and the sky near the sun came out 4 levels dark.
+vec2 airSegment(int i, float start, float lowest, float end) {
+  int before = int(round(float(kAirSteps) * (lowest - start) / (end - start)));
+  bool near = i < before;
+  float count = float(near ? before : kAirSteps - before), k = float(near ? i : i - before);
+  vec2 u = vec2(k, k + 1.0) / count;
+  return near ? lowest - (lowest - start) * (1.0 - u) * (1.0 - u) : lowest + (end - lowest) * u * u;
+}
+
 // The air's light along the first `reach` m of the ray from `origin` along the unit `direction`, lit by a sun
 // in the unit direction `sun`, up to where the ray leaves the air or meets the ground.
 AirLight airLightAlong(vec3 origin, vec3 direction, float reach, vec3 sun) {
@@ -96,10 +108,12 @@ AirLight airLightAlong(vec3 origin, vec3 direction, float reach, vec3 sun) {
   if (airWithinSphere(origin, direction, airRadii.x, ground) && ground.x > 0.0) air.y = min(air.y, ground.x);
   float start = max(air.x, 0.0), end = min(air.y, reach);
   if (end <= start) return light;
-  float nu = dot(direction, sun), step = (end - start) / float(kAirSteps);
+  float nu = dot(direction, sun), lowest = clamp(-dot(origin, direction), start, end);
   float rayleigh = airRayleighPhase(nu), mie = airMiePhase(nu, airMie.z);
   for (int i = 0; i < kAirSteps; ++i) {
-    vec3 point = origin + (start + (float(i) + 0.5) * step) * direction;
+    vec2 span = airSegment(i, start, lowest, end);
+    float step = span.y - span.x;
+    vec3 point = origin + 0.5 * (span.x + span.y) * direction;
     float r = length(point), muSun = dot(point, sun) / r;
     float altitude = r - airRadii.x;
     vec3 molecules = airRayleigh * exp(-altitude / airScaleHeights.x);

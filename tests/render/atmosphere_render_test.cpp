@@ -24,12 +24,13 @@ constexpr double kRadius = 6371000.0;
 constexpr double kGrey = 0.18;  // output.image's colour where no layer has data, unlit (shading: none)
 
 // 8-bit levels between the frame and the model in double: half a level of quantisation, and what 32 segments
-// along a ray, the tables' bilinear reading and float leave (2.2 levels at worst in these frames).
-constexpr double kLevels = 3.0;
+// along a ray, the tables' bilinear reading and float leave (1.7 levels at worst in these frames).
+constexpr double kLevels = 2.5;
 
-// The grey bare Earth under the sun over (`sunLon`, 0), with the Earth's air, seen by `camera`; linear light.
-std::string airyEarth(double sunLon, const std::string& camera) {
-  return "strata: 1\nsun: {lon: " + std::to_string(sunLon) + ", lat: 0}\natmosphere: {}\ncamera: " + camera +
+// The grey bare Earth under the sun over (`sunLon`, `sunLat`), with the Earth's air, seen by `camera`; linear light.
+std::string airyEarth(double sunLon, const std::string& camera, double sunLat = 0.0) {
+  return "strata: 1\nsun: {lon: " + std::to_string(sunLon) + ", lat: " + std::to_string(sunLat) +
+         "}\natmosphere: {}\ncamera: " + camera +
          "\nnodes:\n  terrain: {type: geometry.icosahedral}\n"
          "  frame: {type: output.image, geometry: terrain, shading: none, antialiasing: none, view: Raw}\n";
 }
@@ -38,12 +39,13 @@ class AtmosphereRendering : public ::testing::Test {
  protected:
   // Renders the scene and compares every 8th pixel with the model: grey ground dimmed by the air before it, and
   // the air's light, pi times its radiance for a sun of 1 (composite.frag's throughAir). Returns the frame.
-  Image renderAndJudge(double sunLon, const std::string& camera) {
+  Image renderAndJudge(double sunLon, const std::string& camera, double sunLat = 0.0) {
     auto engine = makeEngine();
-    const Image image = renderFrame(*engine, directory_.write("air.yaml", airyEarth(sunLon, camera)), kSize, kSize);
+    const Image image =
+        renderFrame(*engine, directory_.write("air.yaml", airyEarth(sunLon, camera, sunLat)), kSize, kSize);
     view_ = engine->view(kSize, kSize);
     const View& view = view_;
-    const glm::dvec3 sun = sunDirection({sunLon, 0.0});
+    const glm::dvec3 sun = sunDirection({sunLon, sunLat});
     for (int y = 4; y < kSize; y += 8)
       for (int x = 4; x < kSize; x += 8) {
         const glm::dvec3 expected = 255.0 * modelled(view, sun, x, y);
@@ -98,6 +100,17 @@ TEST_F(AtmosphereRendering, TheLimbFromOrbit) {
     if (!raycastSphere(view_, kRadius, kSize / 2, y) && pixel[2] > 10 && pixel[2] > pixel[0]) ++glowing;
   }
   EXPECT_GE(glowing, 3);
+}
+
+// Half a degree from the north pole, looking across it toward a sun 20 degrees up: the air's geometry is
+// planet-fixed positions, which meet no seam at the pole.
+TEST_F(AtmosphereRendering, TheSkyOverThePole) {
+  renderAndJudge(0.0, "{lon: 180, lat: 89.5, altitude: 100, heading: 0, tilt: 80, fov: 60}", 20.0);
+}
+
+// The limb from 400 km over the antimeridian, looking east across it toward a sun 45 degrees high there.
+TEST_F(AtmosphereRendering, TheLimbAcrossTheAntimeridian) {
+  renderAndJudge(-135.0, "{lon: 179, lat: 0, altitude: 4.0e5, heading: 90, tilt: 72, fov: 30}");
 }
 
 // The same view in a scene of several bodies (the Moon far out of view): the Earth's frame laid over space shows
