@@ -1,6 +1,5 @@
 #include "air_over_surface.hpp"
 
-#include <strata/atmosphere_tables.hpp>
 #include <strata/gl/shader_program.hpp>
 #include <strata/sun.hpp>
 
@@ -27,13 +26,13 @@ AirOverSurface::AirOverSurface(const NodeSetup& setup) {
     throw Error(setup.atmosphere->where, "the atmosphere is lit by the sun, and the scene places none",
                 "give the scene a date (the Earth's sun follows it) or a fixed sun: {lon, lat}");
   model_.emplace(*setup.atmosphere, setup.body->radius);
+  tables_ = makeAtmosphereTables(*model_);
 }
 
 void AirOverSurface::createResources() {
   if (!model_) return;
-  const AtmosphereTables tables = makeAtmosphereTables(*model_);
-  transmittance_ = uploaded(tables.transmittance);
-  multipleScattering_ = uploaded(tables.multipleScattering);
+  transmittance_ = uploaded(tables_.transmittance);
+  multipleScattering_ = uploaded(tables_.multipleScattering);
 }
 
 void AirOverSurface::bind(ShaderProgram& program, TextureUnits& units, const FrameState& frame) const {

@@ -2,6 +2,7 @@
 #include <optional>
 
 #include <strata/atmosphere.hpp>
+#include <strata/atmosphere_tables.hpp>
 #include <strata/gl/texture.hpp>
 #include <strata/plugin/node.hpp>
 
@@ -14,11 +15,12 @@ namespace strata::image {
 
 // The body's air as output.image draws it (docs/atmosphere.md): the sky where no surface shows, the haze
 // between the eye and distant ground (aerial perspective), and the sun's light reddened on its way down
-// (shaders/strata/atmosphere.glsl). Its tables are computed once, on the CPU in double, when the GL resources are
-// made.
+// (shaders/strata/atmosphere.glsl). Its tables are computed once, on the CPU in double, when the node is made, and
+// uploaded when the GL resources are.
 class AirOverSurface {
  public:
-  // The body's `atmosphere:` over its radius. Throws strata::Error at it where the scene places no sun to light it.
+  // The body's `atmosphere:` over its radius, and its tables. Throws strata::Error at it where the scene places no
+  // sun to light it.
   explicit AirOverSurface(const NodeSetup& setup);
 
   explicit operator bool() const { return model_.has_value(); }
@@ -31,6 +33,7 @@ class AirOverSurface {
 
  private:
   std::optional<AtmosphereModel> model_;
+  AtmosphereTables tables_;
   Texture transmittance_, multipleScattering_;
 };
 

@@ -119,7 +119,11 @@ STRATA_TRANSLUCENT_GLSL
 vec3 lightAt(ivec2 pixel, int s, out float reach) {
   vec4 here = texelFetch(surfaceBuffer, pixel, s);
   reach = 0.0;
-  if (!onSurface(here)) return clamp(throughAir(pixel, translucentOver(pixel, s, background, 0.0), 0.0), 0.0, 1.0);
+  // Laid over other bodies, off this one only its air shows: its translucent surfaces show where it does.
+  if (!onSurface(here)) {
+    vec3 behind = transparentBackground == 1 ? background : translucentOver(pixel, s, background, 0.0);
+    return clamp(throughAir(pixel, behind, 0.0), 0.0, 1.0);
+  }
   SurfacePoint p = surfacePointAt(surfaceBuffer, pixel, s, here);
   reach = max(length(p.lonlatDx), length(p.lonlatDy));
   vec4 accumulated = vec4(0.0), shaded = vec4(0.0);

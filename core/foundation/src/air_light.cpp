@@ -1,7 +1,6 @@
 // The light of the sky along one ray, in double: what shaders/strata/atmosphere.glsl draws, to judge it by.
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
